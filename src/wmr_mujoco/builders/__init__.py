@@ -1,0 +1,1 @@
+"""Parametric MJCF builders (dm_control ``mjcf``), one module per robot."""

@@ -1,0 +1,72 @@
+"""Human-readable description of a robot: parameters, joints, actuators, mass, DoF."""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+import mujoco
+
+from wmr_mujoco.actuation import actuation_mode
+from wmr_mujoco.loading import load
+from wmr_mujoco.registry import get_spec
+
+_JOINT_TYPES = {int(v): k.removeprefix("mjJNT_").lower()
+                for k, v in mujoco.mjtJoint.__members__.items()}
+_TRN_TYPES = {int(v): k.removeprefix("mjTRN_").lower()
+              for k, v in mujoco.mjtTrn.__members__.items()}
+
+
+def flatten_params(params: Any, prefix: str = "") -> dict[str, Any]:
+    """Flatten a nested parameter dataclass into ``{"a.b": value}`` pairs."""
+    out: dict[str, Any] = {}
+    for f in dataclasses.fields(params):
+        value = getattr(params, f.name)
+        if dataclasses.is_dataclass(value):
+            out.update(flatten_params(value, f"{prefix}{f.name}."))
+        else:
+            out[f"{prefix}{f.name}"] = value
+    return out
+
+
+def _name(model: mujoco.MjModel, objtype: mujoco.mjtObj, i: int) -> str:
+    return mujoco.mj_id2name(model, objtype, i) or f"#{i}"
+
+
+def describe(robot: str) -> str:
+    """Return the text printed by ``wmr info ROBOT``."""
+    spec = get_spec(robot)
+    model = load(robot)
+    params = spec.params_type()
+    lines = [f"{spec.name}: {spec.description}", f"  scene file: {spec.scene_path}"]
+    lines.append("parameters (SI units, radians):")
+    lines += [f"  {k:<28} {v}" for k, v in flatten_params(params).items()]
+    robot_bodies = [i for i in range(1, model.nbody)]
+    mass = sum(model.body_mass[i] for i in robot_bodies)
+    lines.append(f"total mass: {mass:.4f} kg    degrees of freedom: {model.nv}    "
+                 f"timestep: {model.opt.timestep:g} s    integrator: "
+                 f"{mujoco.mjtIntegrator(model.opt.integrator).name.removeprefix('mjINT_')}")
+    lines.append("joints:")
+    for j in range(model.njnt):
+        jtype = _JOINT_TYPES[int(model.jnt_type[j])]
+        extra = ""
+        if model.jnt_limited[j]:
+            extra = f"  range [{model.jnt_range[j, 0]:g}, {model.jnt_range[j, 1]:g}]"
+        lines.append(f"  {_name(model, mujoco.mjtObj.mjOBJ_JOINT, j):<22} {jtype:<6}"
+                     f" body {_name(model, mujoco.mjtObj.mjOBJ_BODY, model.jnt_bodyid[j])}"
+                     f"{extra}")
+    if model.nu:
+        lines.append(f"actuators (mode: {actuation_mode(model).value}; "
+                     "switch with wmr_mujoco.set_actuation_mode):")
+    for a in range(model.nu):
+        trn = _TRN_TYPES[int(model.actuator_trntype[a])]
+        objtype = (mujoco.mjtObj.mjOBJ_TENDON if trn == "tendon" else mujoco.mjtObj.mjOBJ_JOINT)
+        target = _name(model, objtype, model.actuator_trnid[a, 0])
+        lo, hi = model.actuator_ctrlrange[a]
+        flo, fhi = model.actuator_forcerange[a]
+        lines.append(f"  {_name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, a):<22} {trn} {target:<18}"
+                     f" ctrl [{lo:g}, {hi:g}]  torque [{flo:g}, {fhi:g}] N·m")
+    if model.nkey:
+        keys = ", ".join(_name(model, mujoco.mjtObj.mjOBJ_KEY, k) for k in range(model.nkey))
+        lines.append(f"keyframes: {keys}")
+    return "\n".join(lines)

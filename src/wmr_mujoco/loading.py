@@ -1,0 +1,63 @@
+"""Loading robots: the checked-in scene files, or a scene built from parameters."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import mujoco
+from dm_control import mjcf
+
+from wmr_mujoco.builders import common
+from wmr_mujoco.builders.scene import add_scene
+from wmr_mujoco.registry import get_spec
+
+
+def build_scene(robot: str, params: Any = None) -> mjcf.RootElement:
+    """Build the robot from ``params`` (its defaults if None) and add floor and light.
+
+    The result compiles to the same model as the checked-in ``scene.xml``, which
+    ``<include>``s the robot file and then declares the same scene elements.
+
+    Raises:
+        ValueError: unknown robot, or ``params`` of the wrong type.
+
+    """
+    spec = get_spec(robot)
+    if params is None:
+        params = spec.params_type()
+    if not isinstance(params, spec.params_type):
+        raise ValueError(
+            f"params for {robot!r} must be a {spec.params_type.__name__}, "
+            f"got {type(params).__name__}"
+        )
+    root = spec.build(params)
+    root.model = f"{root.model} scene"
+    add_scene(root)
+    return root
+
+
+def load(robot: str, params: Any = None) -> mujoco.MjModel:
+    """Return the compiled scene of ``robot``.
+
+    Args:
+        robot: a name from :data:`wmr_mujoco.registry.ROBOTS`.
+        params: None to load the checked-in ``scene.xml``; otherwise an instance of
+            the robot's parameter dataclass, built with dm_control ``mjcf``.
+
+    Raises:
+        ValueError: unknown robot name (the message lists the valid ones) or wrong
+            parameter type.
+        FileNotFoundError: the scene file is missing (the message names the path).
+
+    """
+    spec = get_spec(robot)
+    if params is not None:
+        return mujoco.MjModel.from_xml_string(common.to_xml(build_scene(robot, params)))
+    path = spec.scene_path
+    for needed in (path, spec.robot_path):
+        if not needed.is_file():
+            raise FileNotFoundError(
+                f"model file for {robot!r} not found: {needed} "
+                f"(regenerate with `python -m wmr_mujoco.export`)"
+            )
+    return mujoco.MjModel.from_xml_path(str(path))

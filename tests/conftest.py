@@ -1,0 +1,42 @@
+"""Shared test helpers."""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+import pytest
+
+#: Robots whose scenes have actuators.
+ACTUATED = ("disc", "bicycle", "tricycle")
+
+
+def model_differences(a: mujoco.MjModel, b: mujoco.MjModel, rtol: float = 1e-10) -> list[str]:
+    """Names of the MjModel array fields in which ``a`` and ``b`` differ."""
+    diffs = []
+    for name in dir(a):
+        if name.startswith("_"):
+            continue
+        va = getattr(a, name)
+        if not isinstance(va, np.ndarray):
+            continue
+        vb = getattr(b, name)
+        if va.shape != vb.shape:
+            diffs.append(f"{name}: shape {va.shape} != {vb.shape}")
+        elif va.dtype.kind in "fc":
+            if not np.allclose(va, vb, rtol=rtol, atol=1e-12, equal_nan=True):
+                diffs.append(name)
+        elif not np.array_equal(va, vb):
+            diffs.append(name)
+    return diffs
+
+
+def pose2d(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+    """World ``(x, y, heading)`` of the ``base`` site."""
+    site = model.site("base").id
+    xmat = data.site_xmat[site].reshape(3, 3)
+    return np.array([*data.site_xpos[site][:2], np.arctan2(xmat[1, 0], xmat[0, 0])])
+
+
+@pytest.fixture
+def rng() -> np.random.Generator:
+    return np.random.default_rng(12345)
