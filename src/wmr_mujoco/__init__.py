@@ -1,16 +1,36 @@
-"""wmr-mujoco: wheeled mobile robots in MuJoCo, beside their textbook models."""
+"""wmr-mujoco: wheeled mobile robots in MuJoCo, beside their textbook models.
 
+Importing the package does not import MuJoCo: the public names below load lazily, so
+that :mod:`wmr_mujoco.gl_backend` can still choose the OpenGL backend (EGL, else
+OSMesa) before MuJoCo reads ``MUJOCO_GL``.
+"""
+
+from __future__ import annotations
+
+import importlib
 import os
+from typing import Any
 
-# Offscreen rendering goes through EGL unless the user chose otherwise; MuJoCo and
-# dm_control read this once, when first imported.
+#: ``MUJOCO_GL`` as the user set it before importing this package (None if unset).
+USER_MUJOCO_GL: str | None = os.environ.get("MUJOCO_GL")
+# Offscreen rendering goes through EGL unless the user chose otherwise.
 os.environ.setdefault("MUJOCO_GL", "egl")
 
-
-from wmr_mujoco.actuation import ActuationMode, set_actuation_mode
-from wmr_mujoco.loading import build_scene, load
-from wmr_mujoco.registry import ROBOTS, get_spec
-
-__all__ = ["ROBOTS", "ActuationMode", "build_scene", "get_spec", "load",
-           "set_actuation_mode"]
 __version__ = "0.1.0"
+
+_LAZY = {
+    "ROBOTS": "wmr_mujoco.registry",
+    "get_spec": "wmr_mujoco.registry",
+    "load": "wmr_mujoco.loading",
+    "build_scene": "wmr_mujoco.loading",
+    "ActuationMode": "wmr_mujoco.actuation",
+    "set_actuation_mode": "wmr_mujoco.actuation",
+}
+
+__all__ = sorted(_LAZY)
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'wmr_mujoco' has no attribute {name!r}")

@@ -6,29 +6,18 @@ Run ``python -m wmr_mujoco.export`` after changing a builder or a default parame
 
 from __future__ import annotations
 
-import os
-import tempfile
+import dataclasses
 from pathlib import Path
 
 from dm_control import mjcf
 from lxml import etree
 
+from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.builders import common
 from wmr_mujoco.builders.scene import add_scene
+from wmr_mujoco.info import flatten_params
+from wmr_mujoco.params import WheelParams
 from wmr_mujoco.registry import ROBOTS, RobotSpec
-
-
-def write_atomic(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` through a temporary file and an atomic rename."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as f:
-            f.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def scene_xml(spec: RobotSpec) -> str:
@@ -44,13 +33,45 @@ def scene_xml(spec: RobotSpec) -> str:
     return etree.tostring(tree, encoding="unicode") + "\n"
 
 
+def parameter_table(spec: RobotSpec) -> str:
+    """Markdown table of the robot's default parameters and derived wheel inertias."""
+    params = spec.params_type()
+    rows = ["| parameter | value |", "|---|---|"]
+    rows += [f"| `{k}` | {v} |" for k, v in flatten_params(params).items()]
+    for f in dataclasses.fields(params):
+        value = getattr(params, f.name)
+        if isinstance(value, WheelParams):
+            rows.append(f"| `{f.name}` axial inertia m R²/2 | {value.axial_inertia:.6g} kg·m² |")
+            rows.append(f"| `{f.name}` diametral inertia | {value.diametral_inertia:.6g} kg·m² |")
+    rows.append(f"| total mass | {params.total_mass:.6g} kg |")
+    return "\n".join(rows)
+
+
+def update_readme(spec: RobotSpec) -> Path | None:
+    """Replace the text between the README's table markers with :func:`parameter_table`."""
+    readme = spec.robot_path.parent / "README.md"
+    begin, end = f"<!-- {spec.name} parameters: begin -->", f"<!-- {spec.name} parameters: end -->"
+    if not readme.is_file():
+        return None
+    text = readme.read_text()
+    if begin not in text or end not in text:
+        return None
+    head, rest = text.split(begin, 1)
+    _, tail = rest.split(end, 1)
+    write_text_atomic(readme, f"{head}{begin}\n{parameter_table(spec)}\n{end}{tail}")
+    return readme
+
+
 def export_all() -> list[Path]:
-    """Write every robot's robot file and scene file; return the paths written."""
+    """Write every robot's robot file, scene file and README parameter table."""
     written = []
     for spec in ROBOTS.values():
-        write_atomic(spec.robot_path, common.to_xml(spec.build(spec.params_type())))
-        write_atomic(spec.scene_path, scene_xml(spec))
+        write_text_atomic(spec.robot_path, common.to_xml(spec.build(spec.params_type())))
+        write_text_atomic(spec.scene_path, scene_xml(spec))
         written += [spec.robot_path, spec.scene_path]
+        readme = update_readme(spec)
+        if readme is not None:
+            written.append(readme)
     return written
 
 

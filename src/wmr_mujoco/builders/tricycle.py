@@ -38,7 +38,9 @@ def build(params: TricycleParams = TricycleParams()) -> mjcf.RootElement:
     plate = (wb, tr - p.rear_wheel.width - 0.02, CHASSIS_THICKNESS)
     chassis.add("inertial", pos=(p.chassis_com_x * wb, 0, CHASSIS_COM_HEIGHT),
                 mass=p.chassis_mass, diaginertia=common.box_inertia(p.chassis_mass, plate))
-    common.add_box_body_geoms(chassis, plate, pos=(wb / 2.0, 0, CHASSIS_COM_HEIGHT))
+    # The visual plate stops short of the fork so that the front wheel stays visible.
+    common.add_box_body_geoms(chassis, (0.7 * wb, plate[1], plate[2]),
+                              pos=(0.35 * wb, 0, CHASSIS_COM_HEIGHT))
     chassis.add("geom", dclass="visual", type="capsule", size=(0.012,),
                 fromto=(0, -tr / 2.0, 0, 0, tr / 2.0, 0), rgba=common.BODY_RGBA)
     site = chassis.add("site", name="base", pos=(0, 0, 0))
