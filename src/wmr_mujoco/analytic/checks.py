@@ -1,0 +1,42 @@
+"""Argument checks shared by the analytical modules (clear ``ValueError`` messages)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def as_array(name: str, value: object, shape: tuple[int | None, ...]) -> np.ndarray:
+    """Return ``value`` as a finite float array of ``shape`` (None: any length).
+
+    Raises:
+        ValueError: naming ``name``, the expected and the actual shape, or the
+            non-finite entries.
+    """
+    arr = np.asarray(value, dtype=float)
+    ok = arr.ndim == len(shape) and all(s is None or s == n for s, n in zip(shape, arr.shape,
+                                                                              strict=False))
+    if not ok:
+        dims = ["N" if s is None else str(s) for s in shape]
+        want = f"({dims[0]},)" if len(dims) == 1 else "(" + ", ".join(dims) + ")"
+        raise ValueError(f"{name} must have shape {want}, got {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} contains non-finite values: {arr[~np.isfinite(arr)][:3]}")
+    return arr
+
+
+def positive(name: str, value: float) -> float:
+    """Return ``value`` if it is a finite number > 0, else raise ``ValueError``."""
+    if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value) \
+            or value <= 0:
+        raise ValueError(f"{name} = {value!r}; must be a finite number > 0")
+    return float(value)
+
+
+def non_negative(name: str, value: float) -> float:
+    """Return ``value`` if it is a finite number >= 0, else raise ``ValueError``."""
+    if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value) \
+            or value < 0:
+        raise ValueError(f"{name} = {value!r}; must be a finite number >= 0")
+    return float(value)
