@@ -9,8 +9,8 @@ from typing import Any
 
 from dm_control import mjcf
 
-from wmr_mujoco.builders import bicycle, disc, tricycle
-from wmr_mujoco.params import BicycleParams, DiscParams, TricycleParams
+from wmr_mujoco.builders import bicycle, disc, omni3, tricycle
+from wmr_mujoco.params import BicycleParams, DiscParams, OmniParams, TricycleParams
 from wmr_mujoco.paths import MODELS_DIR
 
 
@@ -64,6 +64,9 @@ ROBOTS: dict[str, RobotSpec] = {
                   "wheel driven, right rear wheel free (or an open differential)",
                   "tricycle", "tricycle.xml", "scene.xml", TricycleParams,
                   tricycle.build),
+        RobotSpec("omni3", "three omni wheels at 120 degrees, each with two staggered rows "
+                  "of passive barrel rollers on free hinges", "omni3", "omni3.xml",
+                  "scene.xml", OmniParams, omni3.build),
     )
 }
 
