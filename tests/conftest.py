@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 #: Robots whose scenes have actuators.
-ACTUATED = ("disc", "bicycle", "tricycle")
+ACTUATED = ("disc", "bicycle", "tricycle", "omni3")
 
 
 def model_differences(a: mujoco.MjModel, b: mujoco.MjModel, rtol: float = 1e-10) -> list[str]:

@@ -4,7 +4,7 @@ from wmr_mujoco.export import parameter_table, scene_xml
 from wmr_mujoco.registry import ROBOTS
 
 
-@pytest.mark.parametrize("robot", ["disc", "bicycle", "tricycle"])
+@pytest.mark.parametrize("robot", ["disc", "bicycle", "tricycle", "omni3"])
 def test_readme_parameter_tables_are_current(robot):
     spec = ROBOTS[robot]
     readme = (spec.robot_path.parent / "README.md").read_text()

@@ -189,16 +189,15 @@ def run_trial(model: mujoco.MjModel, info: OmniModelInfo, trial: OmniTrial) -> T
     dt = model.opt.timestep
     acts = np.asarray(info.wheel_actuators)
     angle_servo = np.asarray(info.angle_servo)
-    dofs = np.asarray([model.jnt_dofadr[j] for j in info.wheel_joints])
     qadr = np.asarray([model.jnt_qposadr[j] for j in info.wheel_joints])
-    for _ in range(int(round(trial.settle / dt))):
+    for _ in range(round(trial.settle / dt)):
         data.ctrl[acts] = np.where(angle_servo, data.qpos[qadr], 0.0)
         mujoco.mj_step(model, data)
     check_healthy(model, data)
     base = info.base_body
     start = np.array([*data.xpos[base][:2], _yaw(data.xmat[base])])
     target_angle = data.qpos[qadr].copy()
-    nstep = int(round(trial.duration / dt))
+    nstep = round(trial.duration / dt)
     twists = np.array([trial.twist_at(k * dt) for k in range(nstep)])
     yaw_rates, roller_errors = [], []
     wall = 0.0

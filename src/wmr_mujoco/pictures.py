@@ -22,11 +22,11 @@ def write_pictures(width: int = 640, height: int = 400) -> list[Path]:
         data = mujoco.MjData(model)
         if model.nkey:
             mujoco.mj_resetDataKeyframe(model, data, model.key("leaning").id)
-        if model.nu:
+        if model.na:
             data.act[:] = 0.35  # steering target: show the steering joint turned
             data.joint("steer").qpos[0] = 0.35
         mujoco.mj_forward(model, data)
-        with Filmer(model, width, height, CameraSettings(distance=1.3, shadows=True)) as f:
+        with Filmer(model, width, height, CameraSettings(shadows=True, elevation=-35)) as f:
             image = f.frame(data)
         written.append(write_media(spec.robot_path.with_suffix(".png"), image))
     return written

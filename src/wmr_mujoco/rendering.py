@@ -33,13 +33,14 @@ class CameraSettings:
     """Tracking camera that follows the robot's base body.
 
     Attributes:
-        distance: camera distance, in multiples of the model's extent (``stat.extent``).
+        distance: camera distance, in multiples of the robot's size (see
+            :func:`robot_size`).
         azimuth: degrees, about the vertical.
         elevation: degrees (negative looks down).
         shadows: render shadows (slower on a CPU).
     """
 
-    distance: float = 1.6
+    distance: float = 3.5
     azimuth: float = 135.0
     elevation: float = -30.0
     shadows: bool = False
@@ -66,12 +67,22 @@ def check_output_path(path: Path, suffixes: Sequence[str]) -> Path:
     return path
 
 
+def robot_size(model: mujoco.MjModel) -> float:
+    """Largest distance from the ``base`` site to the surface of a robot geom, at qpos0."""
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    base = data.site_xpos[model.site("base").id]
+    robot = model.geom_bodyid > 0
+    reach = np.linalg.norm(data.geom_xpos[robot] - base, axis=1) + model.geom_rbound[robot]
+    return float(np.max(reach))
+
+
 def tracking_camera(model: mujoco.MjModel, settings: CameraSettings) -> mujoco.MjvCamera:
     """A camera that tracks the body carrying the ``base`` site."""
     cam = mujoco.MjvCamera()
     cam.type = mujoco.mjtCamera.mjCAMERA_TRACKING
     cam.trackbodyid = int(model.site_bodyid[model.site("base").id])
-    cam.distance = settings.distance * model.stat.extent
+    cam.distance = settings.distance * robot_size(model)
     cam.azimuth = settings.azimuth
     cam.elevation = settings.elevation
     return cam
@@ -124,7 +135,7 @@ class Filmer:
               trails: Sequence[tuple[np.ndarray, Sequence[float]]] = ()) -> np.ndarray:
         """Render ``data`` with polylines ``(points N×3, rgba)`` drawn on top."""
         self.renderer.update_scene(data, camera=self.camera)
-        width = 0.004 * self.model.stat.extent
+        width = 0.01 * robot_size(self.model)
         for points, rgba in trails:
             if len(points) > 1:
                 add_polyline(self.renderer.scene, np.asarray(points), rgba, width)

@@ -43,26 +43,26 @@ def barrel_vertices(params: OmniParams) -> np.ndarray:
     return np.round(np.asarray(verts), 9)
 
 
-def _add_roller_collision(body: mjcf.Element, params: OmniParams, name: str) -> None:
-    """Collision geom of one roller, axis along the roller body's z."""
+def _add_roller_geoms(body: mjcf.Element, params: OmniParams, name: str) -> None:
+    """Collision geom of one roller (axis along the body's z) and its visual twin."""
     r = params.wheel_radius
     b = params.roller_half_width
     d, s_max = roller_profile(params)
     shape = params.roller_shape
     if shape == "barrel":
-        body.add("geom", name=name, dclass="roller", type="mesh", mesh="barrel")
+        kwargs = {"type": "mesh", "mesh": "barrel"}
     elif shape == "ellipsoid":
         # Semi-axis a matched to the barrel's curvature at its middle: a² = b r.
-        body.add("geom", name=name, dclass="roller", type="ellipsoid",
-                 size=(b, b, math.sqrt(b * r)))
+        kwargs = {"type": "ellipsoid", "size": (b, b, math.sqrt(b * r))}
     elif shape == "capsule":
         # End caps of radius ρ_c centred on the sphere of radius r − ρ_c.
         rho_c = 0.8 * b
         half = math.sqrt(max((r - rho_c) ** 2 - d * d, 1e-12))
-        body.add("geom", name=name, dclass="roller", type="capsule",
-                 size=(rho_c, min(half, s_max)))
+        kwargs = {"type": "capsule", "size": (rho_c, min(half, s_max))}
     else:  # sphere
-        body.add("geom", name=name, dclass="roller", type="sphere", size=(b,))
+        kwargs = {"type": "sphere", "size": (b,)}
+    body.add("geom", name=name, dclass="roller", **kwargs)
+    body.add("geom", dclass="visual", rgba=ROLLER_RGBA, **kwargs)
 
 
 def _add_wheel(platform: mjcf.Element, root: mjcf.RootElement, params: OmniParams,
@@ -104,12 +104,10 @@ def _add_wheel(platform: mjcf.Element, root: mjcf.RootElement, params: OmniParam
             roller.add("joint", name=rname, dclass="roller")
             roller.add("inertial", pos=(0, 0, 0), mass=p.roller_mass,
                        diaginertia=(i_perp, i_perp, i_axis))
-            _add_roller_collision(roller, p, f"{rname}_collision")
-            roller.add("geom", dclass="visual", type="ellipsoid" if p.roller_shape == "barrel"
-                       else "sphere", size=(b, b, math.sqrt(b * r)) if p.roller_shape ==
-                       "barrel" else (0.5 * b,), rgba=ROLLER_RGBA)
-            roller.add("geom", dclass="visual", type="box", size=(0.2 * b, 0.2 * b, 0.6 * s_max),
-                       pos=(0.85 * b, 0, 0), rgba=ROLLER_MARK_RGBA)
+            _add_roller_geoms(roller, p, f"{rname}_collision")
+            # A stripe along the roller makes its spin visible.
+            roller.add("geom", dclass="visual", type="box", size=(0.25 * b, 0.25 * b, 0.4 * s_max),
+                       pos=(0.8 * b, 0, 0), rgba=ROLLER_MARK_RGBA)
     common.add_wheel_actuator(root, name, p.drive, joint=joint)
 
 
