@@ -155,7 +155,7 @@ def _yaw(xmat: np.ndarray) -> float:
     return float(np.arctan2(xmat[3], xmat[0]))
 
 
-def _roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelInfo,
+def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelInfo,
                         twist_world_slide: np.ndarray) -> list[float]:
     """Relative errors |ω_r| vs |slide|/ρ for the rollers touching the floor now."""
     errors = []
@@ -212,7 +212,7 @@ def run_trial(model: mujoco.MjModel, info: OmniModelInfo, trial: OmniTrial) -> T
             yaw_rates.append(data.cvel[base][2])
             if k % 10 == 0:
                 slide = ok.roller_slide_speeds(info.layout, twists[k])
-                roller_errors += _roller_rate_errors(model, data, info, slide)
+                roller_errors += roller_rate_errors(model, data, info, slide)
     check_healthy(model, data)
     analytic = integrate(lambda x, nu: ok.body_to_world(x[2], nu), start, twists, dt)
     end = np.array([*data.xpos[base][:2], _yaw(data.xmat[base])])

@@ -77,6 +77,11 @@ class DriveParams:
 
     Attributes:
         wheel_kv: velocity-servo gain of the wheel motors, N·m·s/rad.
+        wheel_armature: reflected rotor inertia ``J_rotor N²`` of each wheel gear motor,
+            added to the driven wheel hinges, kg·m². Keep ``wheel_kv · timestep`` at most
+            a few times the driven wheel's total inertia: ``implicitfast`` integrates the
+            servo damping implicitly but sizes contact forces explicitly, and a much stiffer
+            servo on a light wheel lets the robot run ahead of its wheels while accelerating.
         wheel_torque_limit: wheel motor torque limit, N·m.
         wheel_rate_limit: largest commanded wheel rate, rad/s.
         steer_kp: steering servo stiffness, N·m/rad.
@@ -89,6 +94,7 @@ class DriveParams:
     """
 
     wheel_kv: float = 5.0
+    wheel_armature: float = 0.0
     wheel_torque_limit: float = 20.0
     wheel_rate_limit: float = 40.0
     steer_kp: float = 200.0
@@ -98,7 +104,8 @@ class DriveParams:
     steer_angle_limit: float = 1.0
 
     def __post_init__(self) -> None:
-        _check_positive_fields(self)
+        _check_positive_fields(self, exclude=("wheel_armature",))
+        _check_range(self, "wheel_armature", 0.0, 10.0, low_inclusive=True)
         _check_range(self, "steer_angle_limit", 0.0, math.pi / 2.0 - 0.05)
 
 
@@ -231,7 +238,8 @@ class TricycleParams:
     chassis_com_x: float = 0.4
     fork_mass: float = 0.3
     rear_drive: str = "left"
-    drive: DriveParams = DriveParams(wheel_kv=50.0, wheel_torque_limit=10.0,
+    drive: DriveParams = DriveParams(wheel_kv=10.0, wheel_armature=0.01,
+                                     wheel_torque_limit=10.0,
                                      steer_kp=100.0, steer_kv=0.5)
     sim: SimParams = SimParams()
 
@@ -286,8 +294,6 @@ class OmniParams:
             needed for one roller to always touch, as a fraction (the rows overlap).
         row_offset_ratio: axial offset of each row from the wheel mid-plane, as a fraction
             of the roller half-thickness b.
-        wheel_armature: reflected rotor inertia of each wheel's gear motor, added to the
-            wheel hinge, kg·m² (``J_rotor N²``).
         roller_armature: rotor inertia added to each roller joint, kg·m².
         roller_damping: viscous damping of each roller joint, N·m·s/rad.
         drive: actuator settings (no steering).
@@ -304,22 +310,20 @@ class OmniParams:
     roller_shape: str = "ellipsoid"
     roller_thickness: float = 0.15
     roller_overlap: float = 0.15
-    row_offset_ratio: float = 1.0
-    wheel_armature: float = 0.004
+    row_offset_ratio: float = 0.8
     roller_armature: float = 0.0
     roller_damping: float = 0.0
-    drive: DriveParams = DriveParams(wheel_kv=2.0, wheel_torque_limit=1.0,
-                                     wheel_rate_limit=60.0)
+    drive: DriveParams = DriveParams(wheel_kv=2.0, wheel_armature=0.004,
+                                     wheel_torque_limit=1.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
 
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("roller_armature", "roller_damping",
-                                              "row_offset_ratio", "wheel_armature",
+                                              "row_offset_ratio",
                                               "rollers_per_row"))
         _check_range(self, "roller_armature", 0.0, 1e-3, low_inclusive=True)
-        _check_range(self, "wheel_armature", 0.0, 1.0, low_inclusive=True)
         _check_range(self, "roller_damping", 0.0, 1e-2, low_inclusive=True)
         _check_range(self, "roller_thickness", 0.05, 0.8)
         _check_range(self, "roller_overlap", 0.0, 1.0, low_inclusive=True)

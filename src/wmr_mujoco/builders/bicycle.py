@@ -47,7 +47,8 @@ def build(params: BicycleParams = BicycleParams()) -> mjcf.RootElement:
     frame.add("geom", dclass="visual", type="capsule", fromto=(0, 0, 0, 0.25 * wb, 0, 0.45),
               size=(0.015,), rgba=common.BODY_RGBA)
     site = frame.add("site", name="base", pos=(0, 0, 0))
-    common.add_wheel(frame, "rear_wheel", p.rear_wheel, pos=(0, 0, 0))
+    common.add_wheel(frame, "rear_wheel", p.rear_wheel, pos=(0, 0, 0),
+                     armature=p.drive.wheel_armature)
     fork = frame.add("body", name="fork", pos=(wb, 0, rf - rr))
     steer = fork.add("joint", name="steer", type="hinge", axis=(0, 0, 1),
                      range=(-p.drive.steer_angle_limit, p.drive.steer_angle_limit))

@@ -85,7 +85,7 @@ def add_box_body_geoms(body: mjcf.Element, size: Sequence[float],
 
 
 def add_wheel(parent: mjcf.Element, name: str, wheel: WheelParams,
-              pos: Sequence[float]) -> mjcf.Element:
+              pos: Sequence[float], armature: float = 0.0) -> mjcf.Element:
     """Add a thin-disc wheel body spinning on a hinge about its local +y axis.
 
     The collision geom is an ellipsoid with semi-axes ``(R, w/2, R)``: a thin disc with
@@ -95,12 +95,21 @@ def add_wheel(parent: mjcf.Element, name: str, wheel: WheelParams,
     penetration, a few micrometres). A cylinder would touch at both rim edges and
     scrub in turns, since the two edges would have to roll at different speeds.
 
+    Args:
+        parent: body the wheel hangs from.
+        name: name of the wheel body and of its hinge.
+        wheel: the disc's parameters.
+        pos: wheel centre in the parent frame.
+        armature: reflected motor inertia on the hinge (driven wheels), kg·m².
+
     Returns:
         The wheel body; its hinge joint has the same ``name``.
 
     """
     body = parent.add("body", name=name, pos=list(pos))
-    body.add("joint", name=name, type="hinge", axis=(0, 1, 0))
+    joint = body.add("joint", name=name, type="hinge", axis=(0, 1, 0))
+    if armature:
+        joint.armature = armature
     add_wheel_geoms(body, name, wheel)
     return body
 

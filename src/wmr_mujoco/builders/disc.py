@@ -44,7 +44,8 @@ def build(params: DiscParams = DiscParams()) -> mjcf.RootElement:
                  size=(0.01, 0.005, 0.12 * r), pos=(0, 0, 1.12 * r),
                  rgba=common.BODY_RGBA)
     site = carriage.add("site", name="base", pos=(0, 0, 0))
-    common.add_wheel(carriage, "wheel", p.wheel, pos=(0, 0, 0))
+    common.add_wheel(carriage, "wheel", p.wheel, pos=(0, 0, 0),
+                     armature=p.drive.wheel_armature)
     common.add_wheel_actuator(root, "wheel", p.drive, joint="wheel")
     common.add_steer_actuator(root, "steer", steer, p.drive, STEER_RANGE)
     common.add_joint_sensors(root, ["wheel"], ["steer"])

@@ -75,7 +75,7 @@ def _add_wheel(platform: mjcf.Element, root: mjcf.RootElement, params: OmniParam
     wheel = platform.add("body", name=name, pos=(L * math.cos(alpha), L * math.sin(alpha), 0.0),
                          quat=(math.cos(yaw / 2.0), 0.0, 0.0, math.sin(yaw / 2.0)))
     joint = wheel.add("joint", name=name, type="hinge", axis=(0, 1, 0),
-                      armature=p.wheel_armature)
+                      armature=p.drive.wheel_armature)
     hub_r, hub_w = 0.55 * r, HUB_WIDTH_FACTOR * 2.0 * (p.row_offset + p.roller_half_width)
     wheel.add("inertial", pos=(0, 0, 0), mass=p.hub_mass,
               diaginertia=(p.hub_mass * (hub_r**2 / 4 + hub_w**2 / 12),

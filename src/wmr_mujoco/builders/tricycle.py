@@ -44,8 +44,10 @@ def build(params: TricycleParams = TricycleParams()) -> mjcf.RootElement:
     chassis.add("geom", dclass="visual", type="capsule", size=(0.012,),
                 fromto=(0, -tr / 2.0, 0, 0, tr / 2.0, 0), rgba=common.BODY_RGBA)
     site = chassis.add("site", name="base", pos=(0, 0, 0))
-    common.add_wheel(chassis, "rear_left_wheel", p.rear_wheel, pos=(0, tr / 2.0, 0))
-    common.add_wheel(chassis, "rear_right_wheel", p.rear_wheel, pos=(0, -tr / 2.0, 0))
+    common.add_wheel(chassis, "rear_left_wheel", p.rear_wheel, pos=(0, tr / 2.0, 0),
+                     armature=p.drive.wheel_armature)
+    common.add_wheel(chassis, "rear_right_wheel", p.rear_wheel, pos=(0, -tr / 2.0, 0),
+                     armature=p.drive.wheel_armature if p.rear_drive == "differential" else 0.0)
     fork = chassis.add("body", name="fork", pos=(wb, 0, rf - rr))
     steer = fork.add("joint", name="steer", type="hinge", axis=(0, 0, 1),
                      range=(-p.drive.steer_angle_limit, p.drive.steer_angle_limit))
