@@ -15,7 +15,7 @@ $(STAMP): pyproject.toml scripts/install-system-deps.sh
 	touch $(STAMP)
 
 demo: $(STAMP)
-	$(BIN)/wmr demo
+	$(BIN)/wmr validate
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests scripts

@@ -53,9 +53,20 @@ class Adapter(Protocol):
     wheel_joints: tuple[str, ...]
     lateral_wheels: tuple[str, ...]
 
-    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray: ...
-    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray: ...
-    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray: ...
+    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Actuator controls for input ``u``.
+
+        The analytic state is passed for open-loop schedules that depend on it.
+        """
+        ...
+
+    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Analytic state derivative ``ẋ = f(x, u)``."""
+        ...
+
+    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """The analytic state's quantities, read from the simulation."""
+        ...
 
 
 @dataclass(frozen=True)

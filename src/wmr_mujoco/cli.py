@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Sequence
+from pathlib import Path
 
 from wmr_mujoco.registry import ROBOTS
 from wmr_mujoco.simulation import SimulationDivergedError
@@ -31,6 +32,23 @@ def _cmd_demo(_: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_validate(args: argparse.Namespace) -> int:
+    from wmr_mujoco.report import text_table, write_report
+    from wmr_mujoco.scenarios import scenarios_for
+    from wmr_mujoco.validation import run_all
+
+    scenarios = scenarios_for(args.robots or None)
+    results = run_all(scenarios, progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+    print(text_table(results, judged_only=not args.all_metrics))
+    path = write_report(results, args.out)
+    failed = [r.scenario.key for r in results if not r.passed]
+    print(f"\n{len(results) - len(failed)} of {len(results)} scenarios pass; report: {path}")
+    if failed:
+        print(f"failed: {', '.join(failed)}", file=sys.stderr)
+        return 1
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``wmr``."""
     parser = argparse.ArgumentParser(
@@ -42,6 +60,14 @@ def build_parser() -> argparse.ArgumentParser:
     info.set_defaults(func=_cmd_info)
     sub.add_parser("demo", help="simulate a short manoeuvre of each robot").set_defaults(
         func=_cmd_demo)
+    val = sub.add_parser("validate", help="compare MuJoCo with the analytic models; "
+                         "exit 1 if a target is missed")
+    val.add_argument("robots", nargs="*", help="robots to validate (default: all)")
+    val.add_argument("--out", type=Path, default=Path("reports"),
+                     help="report folder (default: reports)")
+    val.add_argument("--all-metrics", action="store_true",
+                     help="print informative metrics too, not only judged ones")
+    val.set_defaults(func=_cmd_validate)
     return parser
 
 

@@ -98,8 +98,9 @@ SCENARIOS: tuple[Scenario, ...] = (
     # that the midpoint's acceleration v_L/(1 − k) stays below the traction limit.
     *(Scenario("tricycle", f"steady turn {phi:g} rad", (const(1.0, 1.0), _steer_to(phi, 1.0)))
       for phi in (0.2, 0.4, 0.6)),
+    # Steer to +0.5 rad, one full circle (about 4.5 s), steer through to −0.5, a second.
     Scenario("tricycle", "figure eight", (const(1.0, 1.0), pulses(
-        (1.0, 1.5, 1.0), (5.5, 6.5, -1.0))), duration=11.0),
+        (1.0, 1.5, 1.0), (5.7, 6.7, -1.0))), duration=12.0),
     # Omni: inputs (u, v, r) in the body frame, or world rates.
     *(Scenario("omni3", f"translate {deg}°", _omni_translation(deg))
       for deg in range(0, 360, 45)),

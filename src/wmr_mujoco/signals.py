@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -18,7 +19,7 @@ class Piecewise:
 
     def __post_init__(self) -> None:
         times = [k[0] for k in self.knots]
-        if not self.knots or any(b < a for a, b in zip(times, times[1:], strict=False)):
+        if not self.knots or any(b < a for a, b in itertools.pairwise(times)):
             raise ValueError(f"knots = {self.knots!r}; need at least one, in time order")
 
     def __call__(self, t: float) -> float:
@@ -26,7 +27,7 @@ class Piecewise:
         knots = self.knots
         if t <= knots[0][0]:
             return float(knots[0][1])
-        for (t0, u0), (t1, u1) in zip(knots, knots[1:], strict=False):
+        for (t0, u0), (t1, u1) in itertools.pairwise(knots):
             if t < t1:
                 return float(u0 + (u1 - u0) * (t - t0) / (t1 - t0)) if t1 > t0 else float(u1)
         return float(knots[-1][1])

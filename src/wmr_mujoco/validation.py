@@ -30,8 +30,8 @@ import numpy as np
 from wmr_mujoco import adapters as ad
 from wmr_mujoco import scenarios as sc
 from wmr_mujoco.actuation import set_actuation_mode
-from wmr_mujoco.analytic.omni_kinematics import roller_slide_speeds
 from wmr_mujoco.analytic.integrate import rk4_step
+from wmr_mujoco.analytic.omni_kinematics import roller_slide_speeds
 from wmr_mujoco.loading import load
 from wmr_mujoco.omni_trials import layout_from_model, roller_rate_errors
 from wmr_mujoco.params import OmniParams, TricycleParams
@@ -177,7 +177,7 @@ def run_scenario(s: sc.Scenario, progress: Callable[[str], None] | None = None
         return ScenarioResult(s, rows, trace)
     except SimulationDivergedError as err:
         reason = f"diverged: {err}"
-    except Exception as err:  # noqa: BLE001 - a failed scenario becomes a failed row
+    except Exception as err:  # a failed scenario becomes a failed row
         reason = f"{type(err).__name__}: {err}"
         if progress:
             progress(traceback.format_exc())
