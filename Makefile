@@ -5,7 +5,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test lint models sysdeps clean
+.PHONY: demo test lint models pictures renders study bench sysdeps clean
 
 $(STAMP): pyproject.toml scripts/install-system-deps.sh
 	bash scripts/install-system-deps.sh
@@ -27,6 +27,24 @@ lint: $(STAMP)
 # Regenerate the checked-in MJCF files from the builders' defaults.
 models: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.export
+
+# The pictures in models/*/README.md.
+pictures: $(STAMP)
+	$(BIN)/python -m wmr_mujoco.pictures
+
+# The clips in renders/ shown in the README.
+renders: $(STAMP)
+	$(BIN)/wmr render disc --scenario "sinusoidal steering" --out renders/disc.gif --width 256 --height 192 --fps 12 --duration 5
+	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 256 --height 192 --fps 12 --duration 5
+	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 256 --height 192 --fps 12 --duration 12
+	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 256 --height 192 --fps 12 --duration 10
+
+# The roller design study and peer comparison in models/omni3/README.md.
+study: $(STAMP)
+	$(BIN)/python -m wmr_mujoco.omni_study
+
+bench: $(STAMP)
+	$(BIN)/wmr bench
 
 sysdeps:
 	bash scripts/install-system-deps.sh

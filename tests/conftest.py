@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import os
+
+# Offscreen rendering in tests goes through EGL; MuJoCo reads this when first imported.
+os.environ.setdefault("MUJOCO_GL", "egl")
+
 import mujoco
 import numpy as np
 import pytest

@@ -1,17 +1,24 @@
-"""The ``wmr`` command line."""
+"""The ``wmr`` command line.
+
+MuJoCo is imported only inside the commands, after :func:`gl_backend.select_backend`
+for the commands that render, so that EGL can fall back to OSMesa.
+"""
 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from wmr_mujoco.registry import ROBOTS
-from wmr_mujoco.simulation import SimulationDivergedError
+#: Commands that need an OpenGL context.
+RENDERING_COMMANDS = ("render", "bench")
 
 
 def _cmd_list(_: argparse.Namespace) -> int:
+    from wmr_mujoco.registry import ROBOTS
+
     width = max(map(len, ROBOTS))
     for spec in ROBOTS.values():
         print(f"{spec.name:<{width}}  {spec.description}")
@@ -49,6 +56,35 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_render(args: argparse.Namespace) -> int:
+    from wmr_mujoco.video import render_to_file
+
+    path = render_to_file(args.robot, args.out, args.scenario, args.width, args.height,
+                          args.fps, args.camera, args.duration)
+    print(f"wrote {path} ({os.environ.get('MUJOCO_GL')} backend)")
+    return 0
+
+
+def _cmd_view(args: argparse.Namespace) -> int:
+    if sys.platform.startswith("linux") and not (os.environ.get("DISPLAY")
+                                                 or os.environ.get("WAYLAND_DISPLAY")):
+        print("wmr view: no display here (DISPLAY and WAYLAND_DISPLAY are unset), so the "
+              "interactive viewer cannot open. Use `wmr render ROBOT --out clip.mp4` "
+              "for an offscreen video instead.", file=sys.stderr)
+        return 2
+    os.environ["MUJOCO_GL"] = "glfw"
+    from wmr_mujoco.viewer import view
+
+    view(args.robot, args.scenario)
+    return 0
+
+
+def _cmd_bench(args: argparse.Namespace) -> int:
+    from wmr_mujoco.bench import main as bench_main
+
+    return bench_main(args)
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``wmr``."""
     parser = argparse.ArgumentParser(
@@ -56,7 +92,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
     sub.add_parser("list", help="list the robots").set_defaults(func=_cmd_list)
     info = sub.add_parser("info", help="parameters, joints, actuators, mass, DoF, timestep")
-    info.add_argument("robot", help=f"one of: {', '.join(ROBOTS)}")
+    info.add_argument("robot", help="a robot name (see `wmr list`)")
     info.set_defaults(func=_cmd_info)
     sub.add_parser("demo", help="simulate a short manoeuvre of each robot").set_defaults(
         func=_cmd_demo)
@@ -68,6 +104,26 @@ def build_parser() -> argparse.ArgumentParser:
     val.add_argument("--all-metrics", action="store_true",
                      help="print informative metrics too, not only judged ones")
     val.set_defaults(func=_cmd_validate)
+    ren = sub.add_parser("render", help="offscreen video of a scenario (EGL, else OSMesa)")
+    ren.add_argument("robot", help="a robot name (see `wmr list`)")
+    ren.add_argument("--scenario", help="scenario name (default: the robot's first)")
+    ren.add_argument("--out", type=Path, required=True, help="output .mp4 or .gif")
+    ren.add_argument("--width", type=int, default=640)
+    ren.add_argument("--height", type=int, default=480)
+    ren.add_argument("--fps", type=int, default=30)
+    ren.add_argument("--camera", default="track",
+                     help="'track' (follows the robot) or a camera name in the model")
+    ren.add_argument("--duration", type=float, help="seconds to render (default: all)")
+    ren.set_defaults(func=_cmd_render)
+    view = sub.add_parser("view", help="MuJoCo's interactive viewer (needs a display)")
+    view.add_argument("robot")
+    view.add_argument("--scenario")
+    view.set_defaults(func=_cmd_view)
+    bench = sub.add_parser("bench", help="speed, accuracy per compute, peer model, render fps")
+    bench.add_argument("--out", type=Path, default=Path("reports"))
+    bench.add_argument("--repeats", type=int, default=5, help="repeats for medians")
+    bench.add_argument("--quick", action="store_true", help="fewer repeats and cases")
+    bench.set_defaults(func=_cmd_bench)
     return parser
 
 
@@ -75,13 +131,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Entry point; returns the process exit code (2 for a user error)."""
     args = build_parser().parse_args(argv)
     try:
+        if args.command in RENDERING_COMMANDS:
+            from wmr_mujoco.gl_backend import select_backend
+
+            select_backend()
         return args.func(args)
     except (ValueError, FileNotFoundError) as err:
         print(f"wmr: error: {err}", file=sys.stderr)
         return 2
-    except SimulationDivergedError as err:
-        print(f"wmr: simulation diverged: {err}", file=sys.stderr)
-        return 1
+    except Exception as err:
+        from wmr_mujoco.gl_backend import RenderingUnavailableError
+        from wmr_mujoco.simulation import SimulationDivergedError
+
+        if isinstance(err, SimulationDivergedError):
+            print(f"wmr: simulation diverged: {err}", file=sys.stderr)
+            return 1
+        if isinstance(err, RenderingUnavailableError):
+            print(f"wmr: rendering unavailable: {err}", file=sys.stderr)
+            return 3
+        raise
 
 
 if __name__ == "__main__":

@@ -135,7 +135,7 @@ class Filmer:
               trails: Sequence[tuple[np.ndarray, Sequence[float]]] = ()) -> np.ndarray:
         """Render ``data`` with polylines ``(points N×3, rgba)`` drawn on top."""
         self.renderer.update_scene(data, camera=self.camera)
-        width = 0.01 * robot_size(self.model)
+        width = 0.02 * robot_size(self.model)
         for points, rgba in trails:
             if len(points) > 1:
                 add_polyline(self.renderer.scene, np.asarray(points), rgba, width)

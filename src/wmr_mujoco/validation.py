@@ -164,16 +164,20 @@ def _kinematic_rows(s: sc.Scenario, tr: dict[str, np.ndarray], adapter: ad.Adapt
     return rows
 
 
-def run_scenario(s: sc.Scenario, progress: Callable[[str], None] | None = None
-                 ) -> ScenarioResult:
+#: Called after every step with ``(model, data, analytic_state, adapter)``.
+Observer = Callable[[mujoco.MjModel, mujoco.MjData, np.ndarray, "ad.Adapter"], None]
+
+
+def run_scenario(s: sc.Scenario, progress: Callable[[str], None] | None = None,
+                 observer: Observer | None = None) -> ScenarioResult:
     """Run one scenario through MuJoCo and the analytic model; never raises.
 
     A diverging or failing run comes back as a result with ``error`` set and a failed
-    row carrying the reason.
+    row carrying the reason. ``observer`` (e.g. a video recorder) sees every step.
     """
     trace = Trace()
     try:
-        rows = _run(s, trace)
+        rows = _run(s, trace, observer)
         return ScenarioResult(s, rows, trace)
     except SimulationDivergedError as err:
         reason = f"diverged: {err}"
@@ -185,7 +189,7 @@ def run_scenario(s: sc.Scenario, progress: Callable[[str], None] | None = None
     return ScenarioResult(s, [row], trace, error=reason)
 
 
-def _run(s: sc.Scenario, trace: Trace) -> list[Row]:
+def _run(s: sc.Scenario, trace: Trace, observer: Observer | None = None) -> list[Row]:
     model = load(s.robot)
     adapter = make_adapter(s, model)
     set_actuation_mode(model, adapter.mode)
@@ -206,6 +210,8 @@ def _run(s: sc.Scenario, trace: Trace) -> list[Row]:
         data.ctrl[:] = ctrl
         mujoco.mj_step(model, data)
         x = rk4_step(adapter.rhs, x, u, dt)
+        if observer is not None:
+            observer(model, data, x, adapter)
         if k % 5 == 4 or k == nstep - 1:
             check_healthy(model, data)
             trace.time.append(data.time - s.settle)

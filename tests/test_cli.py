@@ -1,0 +1,50 @@
+import pytest
+
+from wmr_mujoco.cli import main
+
+
+def test_list(capsys):
+    assert main(["list"]) == 0
+    out = capsys.readouterr().out
+    for robot in ("disc", "bicycle", "tricycle", "omni3"):
+        assert robot in out
+
+
+def test_info(capsys):
+    assert main(["info", "bicycle"]) == 0
+    out = capsys.readouterr().out
+    assert "total mass: 14.4000 kg" in out and "rear_wheel" in out and "timestep: 0.002" in out
+
+
+def test_unknown_robot_is_exit_2(capsys):
+    assert main(["info", "segway"]) == 2
+    assert "valid robots are" in capsys.readouterr().err
+
+
+def test_demo(capsys):
+    assert main(["demo"]) == 0
+    assert "tricycle" in capsys.readouterr().out
+
+
+def test_validate_one_robot_writes_report(tmp_path, capsys):
+    assert main(["validate", "disc", "--out", str(tmp_path)]) == 0
+    assert (tmp_path / "validation.md").is_file() and (tmp_path / "validation.json").is_file()
+    assert "4 of 4 scenarios pass" in capsys.readouterr().out
+
+
+def test_view_without_display(monkeypatch, capsys):
+    monkeypatch.delenv("DISPLAY", raising=False)
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    assert main(["view", "disc"]) == 2
+    assert "no display" in capsys.readouterr().err
+
+
+def test_render_bad_size(tmp_path, capsys):
+    assert main(["render", "disc", "--out", str(tmp_path / "a.mp4"), "--width", "3"]) == 2
+    assert "width = 3" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_parser_rejects_missing_out():
+    with pytest.raises(SystemExit):
+        main(["render", "disc"])
