@@ -34,10 +34,10 @@ pictures: $(STAMP)
 
 # The clips in renders/ shown in the README.
 renders: $(STAMP)
-	$(BIN)/wmr render disc --scenario "sinusoidal steering" --out renders/disc.gif --width 256 --height 192 --fps 12 --duration 5
-	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 256 --height 192 --fps 12 --duration 5
-	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 256 --height 192 --fps 12 --duration 12
-	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 256 --height 192 --fps 12 --duration 10
+	$(BIN)/wmr render disc --scenario "sinusoidal steering" --out renders/disc.gif --width 200 --height 150 --fps 8 --duration 5
+	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 200 --height 150 --fps 8 --duration 5
+	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
+	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
 
 # The roller design study and peer comparison in models/omni3/README.md.
 study: $(STAMP)
