@@ -26,7 +26,8 @@ def write_pictures(width: int = 640, height: int = 400) -> list[Path]:
             data.act[:] = 0.35  # steering target: show the steering joint turned
             data.joint("steer").qpos[0] = 0.35
         mujoco.mj_forward(model, data)
-        with Filmer(model, width, height, CameraSettings(shadows=True, elevation=-35)) as f:
+        with Filmer(model, width, height, CameraSettings(shadows=True, reflections=True,
+                                                          elevation=-35)) as f:
             image = f.frame(data)
         written.append(write_media(spec.robot_path.with_suffix(".png"), image))
     return written

@@ -23,6 +23,7 @@ import math
 import traceback
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -34,7 +35,7 @@ from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.analytic.omni_kinematics import roller_slide_speeds
 from wmr_mujoco.loading import load
 from wmr_mujoco.omni_trials import layout_from_model, roller_rate_errors
-from wmr_mujoco.params import OmniParams, TricycleParams
+from wmr_mujoco.params import OmniParams
 from wmr_mujoco.registry import get_spec
 from wmr_mujoco.simulation import SimulationDivergedError, check_healthy
 
@@ -90,9 +91,10 @@ class ScenarioResult:
         return self.error is None and all(r.passed is not False for r in self.rows)
 
 
-def make_adapter(scenario: sc.Scenario, model: mujoco.MjModel) -> ad.Adapter:
-    """The adapter of a scenario's robot and kind."""
-    params = get_spec(scenario.robot).params_type()
+def make_adapter(scenario: sc.Scenario, model: mujoco.MjModel, params: Any = None
+                 ) -> ad.Adapter:
+    """The adapter of a scenario's robot and kind (default parameters if None)."""
+    params = params if params is not None else get_spec(scenario.robot).params_type()
     if scenario.kind == "dynamic":
         if scenario.robot == "disc":
             return ad.DiscDynamics(params)
@@ -169,15 +171,16 @@ Observer = Callable[[mujoco.MjModel, mujoco.MjData, np.ndarray, "ad.Adapter"], N
 
 
 def run_scenario(s: sc.Scenario, progress: Callable[[str], None] | None = None,
-                 observer: Observer | None = None) -> ScenarioResult:
+                 observer: Observer | None = None, params: Any = None) -> ScenarioResult:
     """Run one scenario through MuJoCo and the analytic model; never raises.
 
     A diverging or failing run comes back as a result with ``error`` set and a failed
-    row carrying the reason. ``observer`` (e.g. a video recorder) sees every step.
+    row carrying the reason. ``observer`` (e.g. a video recorder) sees every step;
+    ``params`` builds the robot from parameters instead of the checked-in model.
     """
     trace = Trace()
     try:
-        rows = _run(s, trace, observer)
+        rows = _run(s, trace, observer, params)
         return ScenarioResult(s, rows, trace)
     except SimulationDivergedError as err:
         reason = f"diverged: {err}"
@@ -189,9 +192,10 @@ def run_scenario(s: sc.Scenario, progress: Callable[[str], None] | None = None,
     return ScenarioResult(s, [row], trace, error=reason)
 
 
-def _run(s: sc.Scenario, trace: Trace, observer: Observer | None = None) -> list[Row]:
-    model = load(s.robot)
-    adapter = make_adapter(s, model)
+def _run(s: sc.Scenario, trace: Trace, observer: Observer | None = None,
+         params: Any = None) -> list[Row]:
+    model = load(s.robot, params)
+    adapter = make_adapter(s, model, params)
     set_actuation_mode(model, adapter.mode)
     data = mujoco.MjData(model)
     dt = model.opt.timestep
@@ -221,7 +225,7 @@ def _run(s: sc.Scenario, trace: Trace, observer: Observer | None = None) -> list
             rates = data.qvel[wheel_dofs]
             steady = t > 1.0
             if s.robot == "tricycle" and steady and abs(rates[0]) > 1.0:
-                p = TricycleParams()
+                p = adapter.params
                 k_icr = p.track / (2 * p.wheelbase) * math.tan(data.joint("steer").qpos[0])
                 predicted = rates[0] * (1 + k_icr) / (1 - k_icr)
                 free_wheel.append((rates[1] - predicted) / predicted)
