@@ -29,9 +29,9 @@ def test_diverging_scenario_is_a_failed_row_and_the_rest_still_run(monkeypatch):
     import wmr_mujoco.validation as validation
     from wmr_mujoco import load
 
-    def unstable_load(robot):
+    def unstable_load(robot, params=None):
         """Negative damping and a 0.2 s step: the simulation must blow up."""
-        model = load(robot)
+        model = load(robot, params)
         if robot == "bicycle":
             model.opt.timestep = 0.2
             model.dof_damping[:] = -1e6

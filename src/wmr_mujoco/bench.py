@@ -124,8 +124,10 @@ def accuracy_vs_timestep(robot: str, repeats: int) -> list[dict[str, float]]:
 
 
 def render_fps(repeats: int, frames: int = 60) -> dict[str, float]:
-    """Frames/s at 640×480 of the omni robot (the heaviest scene): ``wmr render``'s
-    default (no shadows, no reflections) and with shadows and reflections."""
+    """Frames/s at 640×480 of the omni robot, the scene with the most geoms.
+
+    Measured as ``wmr render`` draws (no shadows, no reflections) and with both.
+    """
     from wmr_mujoco.rendering import CameraSettings, Filmer
 
     model = load("omni3")
