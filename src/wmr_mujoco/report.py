@@ -58,6 +58,24 @@ def markdown_table(results: Sequence[ScenarioResult]) -> str:
     return "\n".join(lines)
 
 
+def summary_table(results: Sequence[ScenarioResult]) -> str:
+    """One row per scenario: its headline judged metric, heading, worst slip, verdict."""
+    lines = ["| robot | scenario | headline metric | heading error | worst lateral slip RMS | "
+             "pass |", "|---|---|---|---|---|---|"]
+    for res in results:
+        judged = [r for r in res.rows if r.target is not None]
+        head = judged[0] if judged else (res.rows[0] if res.rows else None)
+        headline = f"{head.metric}: {_fmt(head.value)} {head.unit}" if head else ""
+        heading = next((f"{_fmt(r.value)}°" for r in res.rows
+                        if r.metric == "final heading error"), "")
+        slips = [r.value for r in res.rows if r.metric.startswith("lateral slip")]
+        slip = f"{1000 * max(slips):.3f} mm/s" if slips else ""
+        verdict = "pass" if res.passed else f"FAIL{': ' + res.error if res.error else ''}"
+        lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {headline} | {heading} | "
+                     f"{slip} | {verdict} |")
+    return "\n".join(lines)
+
+
 def slug(text: str) -> str:
     """File-name-safe version of a label."""
     return re.sub(r"[^a-z0-9]+", "-", text.lower().replace("°", "deg")).strip("-")
@@ -139,11 +157,13 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) 
              f"**{len(results) - len(failed)} of {len(results)} scenarios pass.**", ""]
     if failed:
         lines += ["Failed: " + ", ".join(f"`{r.scenario.key}`" for r in failed), ""]
-    lines += [markdown_table(results), "", "## Plots", ""]
+    lines += ["## Summary", "", summary_table(results), "", "## Every metric", "",
+              markdown_table(results), "", "## Plots", ""]
     for r in results:
         png = plot_scenario(r, plots / f"{slug(r.scenario.key)}.png")
         if png is not None:
             lines += [f"### {r.scenario.key}", "", f"![{r.scenario.key}](validation/{png.name})",
                       ""]
     write_text_atomic(folder / "validation.json", to_json(results))
+    write_text_atomic(folder / "summary.md", summary_table(results) + "\n")
     return write_text_atomic(folder / "validation.md", "\n".join(lines) + "\n")
