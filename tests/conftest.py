@@ -35,13 +35,6 @@ def model_differences(a: mujoco.MjModel, b: mujoco.MjModel, rtol: float = 1e-10)
     return diffs
 
 
-def pose2d(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-    """World ``(x, y, heading)`` of the ``base`` site."""
-    site = model.site("base").id
-    xmat = data.site_xmat[site].reshape(3, 3)
-    return np.array([*data.site_xpos[site][:2], np.arctan2(xmat[1, 0], xmat[0, 0])])
-
-
 @pytest.fixture
 def rng() -> np.random.Generator:
     return np.random.default_rng(12345)

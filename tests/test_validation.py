@@ -6,7 +6,6 @@ heading ≤ 1°, roller rates within 5 %; omni body velocities within 3 % of the
 model after 2 s of torques; single-wheel acceleration within 1 % of τR/(J + mR²).
 """
 
-import numpy as np
 import pytest
 
 from wmr_mujoco.scenarios import SCENARIOS, Scenario
@@ -67,8 +66,6 @@ def test_lateral_slip_measures_a_sideways_push():
     data = mujoco.MjData(model)
     for _ in range(50):
         mujoco.mj_step(model, data)
-    data.qvel[1] = 0.05  # sideways (the disc faces +x)
+    data.qvel[1] = 0.05  # along +y: the wheel's axle (the disc faces +x)
     mujoco.mj_forward(model, data)
-    assert lateral_slip(model, data, ["wheel"])[0] == pytest.approx(-0.05, rel=1e-6) or \
-        lateral_slip(model, data, ["wheel"])[0] == pytest.approx(0.05, rel=1e-6)
-    assert np.isfinite(lateral_slip(model, data, ["wheel"])).all()
+    assert lateral_slip(model, data, ["wheel"])[0] == pytest.approx(0.05, rel=1e-6)

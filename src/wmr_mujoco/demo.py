@@ -8,6 +8,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
+from wmr_mujoco.adapters import base_pose
 from wmr_mujoco.loading import load
 from wmr_mujoco.simulation import rollout
 
@@ -50,14 +51,6 @@ MANOEUVRES = (
 )
 
 
-def _pose(model: mujoco.MjModel, data: mujoco.MjData) -> tuple[float, float, float]:
-    """World ``(x, y, heading)`` of the robot's ``base`` site."""
-    site = model.site("base").id
-    xmat = data.site_xmat[site].reshape(3, 3)
-    x, y = data.site_xpos[site][:2]
-    return float(x), float(y), math.atan2(xmat[1, 0], xmat[0, 0])
-
-
 def run_demo() -> str:
     """Simulate every manoeuvre and return a text summary."""
     lines = [f"{'robot':<9} {'manoeuvre':<55} {'path m':>7} {'end x, y (m)':>16} "
@@ -67,7 +60,7 @@ def run_demo() -> str:
         data = mujoco.MjData(model)
         mujoco.mj_forward(model, data)
         traj = rollout(model, data, man.duration, man.control, record_every=10,
-                       recorder=lambda m, d: np.array(_pose(m, d)))
+                       recorder=base_pose)
         path = float(np.sum(np.hypot(*np.diff(traj[:, :2], axis=0).T)))
         x, y, heading = traj[-1]
         lines.append(f"{man.robot:<9} {man.description:<55} {path:7.3f} "
