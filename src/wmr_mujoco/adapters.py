@@ -16,6 +16,7 @@ Inputs (lecture symbols):
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -154,11 +155,16 @@ class OmniKinematics:
     wheel_joints: tuple[str, ...] = ("wheel1", "wheel2", "wheel3")
     lateral_wheels: tuple[str, ...] = ()
 
-    @property
+    @functools.cached_property
     def layout(self) -> omni_kinematics.WheelLayout:
         """Ideal wheel layout."""
         return omni_kinematics.symmetric_layout(self.params.wheel_radius,
                                                 self.params.wheel_distance)
+
+    @functools.cached_property
+    def jacobian(self) -> np.ndarray:
+        """``H`` with ``θ̇ = H ν``."""
+        return omni_kinematics.wheel_jacobian(self.layout)
 
     def twist(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
         """Body twist commanded by input ``u``."""
@@ -167,7 +173,7 @@ class OmniKinematics:
         return np.asarray(u, float)
 
     def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
-        return omni_kinematics.wheel_rates(self.layout, self.twist(u, analytic_state))
+        return self.jacobian @ self.twist(u, analytic_state)
 
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
         return omni_kinematics.body_to_world(x[2], self.twist(u, x))

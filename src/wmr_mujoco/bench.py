@@ -152,6 +152,18 @@ def validate_wall_time() -> float:
         return time.perf_counter() - t0
 
 
+def validation_engines() -> dict[str, float]:
+    """Wall time of all validation scenarios (no report) with each stepping engine."""
+    from wmr_mujoco.validation import ENGINES, run_all
+
+    out = {}
+    for engine in ENGINES:
+        t0 = time.perf_counter()
+        run_all(scenarios_for(), engine=engine)
+        out[engine] = time.perf_counter() - t0
+    return out
+
+
 def peer_side_by_side(trials: list[OmniTrial]) -> list[dict[str, float]]:
     """Our omni robot and the peer on the same trials, same run."""
     ours = measure_omni(get_spec("omni3").params_type(), trials, "omni3 (default)")
@@ -187,6 +199,7 @@ def main(args: argparse.Namespace) -> int:
     results["render"] = render_fps(repeats)
     print("wmr validate ...", file=sys.stderr, flush=True)
     results["validate_wall_s"] = validate_wall_time()
+    results["validation_engines_s"] = validation_engines()
 
     sp = _md_table(["robot", "timestep", "mj_step loop steps/s", "real-time ×",
                     "rollout 1 thread steps/s", f"rollout {next(iter(speed.values()))['threads']} "

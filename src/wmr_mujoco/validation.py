@@ -20,6 +20,7 @@ Metrics (one :class:`Row` each; ``target`` None means reported, not judged):
 from __future__ import annotations
 
 import math
+import os
 import traceback
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -114,15 +115,17 @@ def lateral_slip(model: mujoco.MjModel, data: mujoco.MjData,
                  wheels: Sequence[str]) -> np.ndarray:
     """Speed of each wheel's contact point along its axle (0 without contact), m/s."""
     out = np.zeros(len(wheels))
+    if not wheels or data.ncon == 0:
+        return out
     jacp = np.zeros((3, model.nv))
+    contact_bodies = model.geom_bodyid[data.contact.geom[:data.ncon]]
+    positions = data.contact.pos[:data.ncon]
     for i, name in enumerate(wheels):
-        joint = model.joint(name)
-        body = int(joint.bodyid[0])
-        axle = data.xaxis[joint.id]
-        for c in data.contact[:data.ncon]:
-            if body in (model.geom_bodyid[c.geom1], model.geom_bodyid[c.geom2]):
-                mujoco.mj_jac(model, data, jacp, None, c.pos, body)
-                out[i] = float(axle @ (jacp @ data.qvel))
+        jid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, name)
+        body = int(model.jnt_bodyid[jid])
+        for c in np.flatnonzero((contact_bodies == body).any(axis=1)):
+            mujoco.mj_jac(model, data, jacp, None, positions[c], body)
+            out[i] = float(data.xaxis[jid] @ (jacp @ data.qvel))
     return out
 
 
@@ -171,16 +174,18 @@ Observer = Callable[[mujoco.MjModel, mujoco.MjData, np.ndarray, "ad.Adapter"], N
 
 
 def run_scenario(s: sc.Scenario, progress: Callable[[str], None] | None = None,
-                 observer: Observer | None = None, params: Any = None) -> ScenarioResult:
+                 observer: Observer | None = None, params: Any = None,
+                 engine: str = "rollout") -> ScenarioResult:
     """Run one scenario through MuJoCo and the analytic model; never raises.
 
     A diverging or failing run comes back as a result with ``error`` set and a failed
     row carrying the reason. ``observer`` (e.g. a video recorder) sees every step;
-    ``params`` builds the robot from parameters instead of the checked-in model.
+    ``params`` builds the robot from parameters instead of the checked-in model;
+    ``engine`` picks :func:`simulate`'s stepping (an observer forces the Python loop).
     """
     trace = Trace()
     try:
-        rows = _run(s, trace, observer, params)
+        rows = _run(s, trace, observer, params, engine)
         return ScenarioResult(s, rows, trace)
     except SimulationDivergedError as err:
         reason = f"diverged: {err}"
@@ -192,8 +197,94 @@ def run_scenario(s: sc.Scenario, progress: Callable[[str], None] | None = None,
     return ScenarioResult(s, [row], trace, error=reason)
 
 
-def _run(s: sc.Scenario, trace: Trace, observer: Observer | None = None,
-         params: Any = None) -> list[Row]:
+#: Metrics are recorded every this many steps.
+RECORD_EVERY = 5
+#: MuJoCo state recorded after every step (what ``mujoco.rollout`` returns).
+STATE_SPEC = mujoco.mjtState.mjSTATE_FULLPHYSICS
+#: How the simulation is stepped: a Python ``mj_step`` loop or ``mujoco.rollout``.
+ENGINES = ("rollout", "loop")
+
+
+def schedule(s: sc.Scenario, adapter: ad.Adapter, x0: np.ndarray, dt: float, nstep: int
+             ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Inputs, actuator controls and analytic states on the simulation grid.
+
+    The analytic model does not depend on the simulation, so the whole open-loop schedule
+    is known before MuJoCo runs: ``u_k = u(k Δt)``, ``ctrl_k = controls(u_k, x_k)`` and
+    ``x_{k+1} = RK4(x_k, u_k)``.
+
+    Returns:
+        ``(inputs (N, m), controls (N, nu), analytic (N + 1, n))``.
+    """
+    x = np.asarray(x0, float)
+    inputs, controls, states = [], [], [x]
+    for k in range(nstep):
+        u = s.input_at(k * dt)
+        inputs.append(u)
+        controls.append(adapter.controls(u, x))
+        x = rk4_step(adapter.rhs, x, u, dt)
+        states.append(x)
+    return np.asarray(inputs), np.asarray(controls), np.asarray(states)
+
+
+def simulate(model: mujoco.MjModel, data: mujoco.MjData, controls: np.ndarray,
+             engine: str = "rollout", on_step: Callable[[int], None] | None = None
+             ) -> np.ndarray:
+    """Apply ``controls`` from the state in ``data``; return the state after every step.
+
+    ``engine="loop"`` steps in Python (and calls ``on_step(k)`` after step k, with
+    ``data`` live); ``"rollout"`` hands the whole open-loop sequence to
+    ``mujoco.rollout`` in C, starting from the same state and solver warm start, so the
+    two give bit-identical states. Returns an (N + 1, nstate) array of
+    ``mjSTATE_FULLPHYSICS`` states, the initial one first.
+
+    Raises:
+        ValueError: unknown engine.
+        SimulationDivergedError: NaN or MuJoCo warnings.
+    """
+    if engine not in ENGINES:
+        raise ValueError(f"engine = {engine!r}; valid engines are {', '.join(ENGINES)}")
+    size = mujoco.mj_stateSize(model, STATE_SPEC)
+    states = np.empty((len(controls) + 1, size))
+    mujoco.mj_getState(model, data, states[0], STATE_SPEC)
+    if engine == "rollout" and on_step is None:
+        from mujoco import rollout
+
+        rolled, _ = rollout.rollout(model, data, states[0], controls[None],
+                                    initial_warmstart=data.qacc_warmstart.copy()[None])
+        states[1:] = rolled[0]
+        check_healthy(model, data)
+        if not np.all(np.isfinite(states)):
+            raise SimulationDivergedError(f"rollout of {len(controls)} steps produced "
+                                          f"non-finite states")
+        return states
+    for k, ctrl in enumerate(controls):
+        data.ctrl[:] = ctrl
+        mujoco.mj_step(model, data)
+        mujoco.mj_getState(model, data, states[k + 1], STATE_SPEC)
+        if on_step is not None:
+            on_step(k)
+        if k % RECORD_EVERY == RECORD_EVERY - 1:
+            check_healthy(model, data)
+    check_healthy(model, data)
+    return states
+
+
+@dataclass
+class Prepared:
+    """A scenario ready to simulate: settled model and data, and its open-loop schedule."""
+
+    scenario: sc.Scenario
+    model: mujoco.MjModel
+    data: mujoco.MjData
+    adapter: ad.Adapter
+    inputs: np.ndarray
+    controls: np.ndarray
+    analytic: np.ndarray
+
+
+def prepare(s: sc.Scenario, params: Any = None) -> Prepared:
+    """Load, settle at rest for ``s.settle`` seconds, and compute the schedule."""
     model = load(s.robot, params)
     adapter = make_adapter(s, model, params)
     set_actuation_mode(model, adapter.mode)
@@ -202,39 +293,64 @@ def _run(s: sc.Scenario, trace: Trace, observer: Observer | None = None,
     for _ in range(round(s.settle / dt)):
         mujoco.mj_step(model, data)
     check_healthy(model, data)
-    x = adapter.sim_state(model, data).astype(float)
     nstep = round(s.duration / dt)
+    inputs, controls, analytic = schedule(s, adapter, adapter.sim_state(model, data), dt, nstep)
+    return Prepared(s, model, data, adapter, inputs, controls, analytic)
+
+
+def _run(s: sc.Scenario, trace: Trace, observer: Observer | None = None,
+         params: Any = None, engine: str = "rollout") -> list[Row]:
+    prep = prepare(s, params)
+    on_step = None
+    if observer is not None:
+        def on_step(k: int) -> None:
+            observer(prep.model, prep.data, prep.analytic[k + 1], prep.adapter)
+    states = simulate(prep.model, prep.data, prep.controls, engine, on_step)
+    return measure(prep, states, trace)
+
+
+def measure(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Row]:
+    """Metrics of a simulated scenario from its states (see :func:`simulate`)."""
+    s, model, data, adapter = prep.scenario, prep.model, prep.data, prep.adapter
+    inputs, controls, analytic = prep.inputs, prep.controls, prep.analytic
+    dt = model.opt.timestep
+    nstep = len(controls)
     wheel_dofs = [model.jnt_dofadr[model.joint(j).id] for j in adapter.wheel_joints]
     info = layout_from_model(model, adapter.wheel_joints) if s.robot == "omni3" else None
     free_wheel, wheel_rate_err, roller_err = [], [], []
-    for k in range(nstep):
-        t = k * dt
-        u = s.input_at(t)
-        ctrl = adapter.controls(u, x)
-        data.ctrl[:] = ctrl
+    recorded = [k for k in range(nstep) if k % RECORD_EVERY == RECORD_EVERY - 1
+                or k == nstep - 1]
+    for k in recorded:
+        # Redo step k from its stored start: the contacts and frames then belong to the
+        # configuration whose constraints produced the new velocities, as in the loop.
+        # The warm start is not part of the stored state: start the solver from zero so
+        # that the measurement does not depend on how the states were produced.
+        mujoco.mj_setState(model, data, states[k], STATE_SPEC)
+        data.qacc_warmstart[:] = 0.0
+        data.ctrl[:] = controls[k]
         mujoco.mj_step(model, data)
-        x = rk4_step(adapter.rhs, x, u, dt)
-        if observer is not None:
-            observer(model, data, x, adapter)
-        if k % 5 == 4 or k == nstep - 1:
-            check_healthy(model, data)
-            trace.time.append(data.time - s.settle)
-            trace.sim.append(adapter.sim_state(model, data))
-            trace.analytic.append(x.copy())
-            trace.slip.append(lateral_slip(model, data, adapter.lateral_wheels))
-            rates = data.qvel[wheel_dofs]
-            steady = t > 1.0
-            if s.robot == "tricycle" and steady and abs(rates[0]) > 1.0:
-                p = adapter.params
-                k_icr = p.track / (2 * p.wheelbase) * math.tan(data.joint("steer").qpos[0])
-                predicted = rates[0] * (1 + k_icr) / (1 - k_icr)
-                free_wheel.append((rates[1] - predicted) / predicted)
-            if info is not None and adapter.mode == "rate" and steady:
-                if np.linalg.norm(ctrl) > 0.5:
-                    wheel_rate_err.append(np.linalg.norm(rates - ctrl) / np.linalg.norm(ctrl))
-                twist = adapter.twist(u, x)
-                roller_err += roller_rate_errors(model, data, info,
-                                                 roller_slide_speeds(adapter.layout, twist))
+        check_healthy(model, data)
+        u, ctrl, x = inputs[k], controls[k], analytic[k + 1]
+        trace.slip.append(lateral_slip(model, data, adapter.lateral_wheels))
+        rates = data.qvel[wheel_dofs].copy()
+        steady = k * dt > 1.0
+        if s.robot == "tricycle" and steady and abs(rates[0]) > 1.0:
+            p = adapter.params
+            k_icr = p.track / (2 * p.wheelbase) * math.tan(data.joint("steer").qpos[0])
+            predicted = rates[0] * (1 + k_icr) / (1 - k_icr)
+            free_wheel.append((rates[1] - predicted) / predicted)
+        if info is not None and adapter.mode == "rate" and steady:
+            if np.linalg.norm(ctrl) > 0.5:
+                wheel_rate_err.append(np.linalg.norm(rates - ctrl) / np.linalg.norm(ctrl))
+            twist = adapter.twist(u, analytic[k])
+            roller_err += roller_rate_errors(model, data, info,
+                                             roller_slide_speeds(adapter.layout, twist))
+        # Pose at the end of the step, beside the analytic state at the same time.
+        mujoco.mj_setState(model, data, states[k + 1], STATE_SPEC)
+        mujoco.mj_forward(model, data)
+        trace.time.append(data.time - s.settle)
+        trace.sim.append(adapter.sim_state(model, data))
+        trace.analytic.append(x)
     tr = trace.arrays()
     if s.kind == "dynamic":
         return _dynamic_rows(s, tr, adapter)
@@ -283,12 +399,82 @@ def _dynamic_rows(s: sc.Scenario, tr: dict[str, np.ndarray], adapter: ad.Adapter
     return rows
 
 
+def simulate_batch(prepared: Sequence[Prepared], nthread: int | None = None
+                   ) -> list[np.ndarray]:
+    """Simulate scenarios of one robot and actuation mode in one threaded rollout.
+
+    All start from the same settled state (same model, same settle), so they share one
+    model; shorter schedules are padded with their last control and cut afterwards. Each
+    trajectory is what :func:`simulate` gives alone, bit for bit.
+
+    Raises:
+        SimulationDivergedError: a trajectory has non-finite states (the caller reruns
+            the group one by one to say which).
+    """
+    from mujoco import rollout
+
+    first = prepared[0]
+    model = first.model
+    nstep = max(len(p.controls) for p in prepared)
+    controls = np.stack([np.concatenate([p.controls, np.repeat(p.controls[-1:], nstep
+                                                                - len(p.controls), axis=0)])
+                         for p in prepared])
+    size = mujoco.mj_stateSize(model, STATE_SPEC)
+    initial = np.zeros(size)
+    mujoco.mj_getState(model, first.data, initial, STATE_SPEC)
+    nthread = max(1, min(nthread or os.cpu_count() or 1, len(prepared)))
+    datas = [mujoco.MjData(model) for _ in range(nthread)]
+    rolled, _ = rollout.rollout(model, datas if nthread > 1 else datas[0],
+                                np.tile(initial, (len(prepared), 1)), controls,
+                                initial_warmstart=np.tile(first.data.qacc_warmstart,
+                                                          (len(prepared), 1)))
+    for d in datas:
+        check_healthy(model, d)
+    out = []
+    for p, traj in zip(prepared, rolled, strict=True):
+        states = np.concatenate([initial[None], traj[:len(p.controls)]])
+        if not np.all(np.isfinite(states)):
+            raise SimulationDivergedError(f"{p.scenario.key}: non-finite states")
+        out.append(states)
+    return out
+
+
 def run_all(scenarios: Sequence[sc.Scenario],
-            progress: Callable[[str], None] | None = None) -> list[ScenarioResult]:
-    """Run every scenario (a failure does not stop the others)."""
-    results = []
-    for i, s in enumerate(scenarios, 1):
-        if progress:
-            progress(f"[{i}/{len(scenarios)}] {s.key}")
-        results.append(run_scenario(s, progress))
-    return results
+            progress: Callable[[str], None] | None = None,
+            engine: str = "rollout") -> list[ScenarioResult]:
+    """Run every scenario; a failure does not stop the others.
+
+    With ``engine="rollout"``, scenarios of the same robot and actuation mode are
+    simulated together in one multi-threaded ``mujoco.rollout`` (they share the settled
+    start state); a group that fails is rerun one scenario at a time so that each failure
+    is attributed. ``"loop"`` steps each scenario in Python.
+    """
+    results: dict[int, ScenarioResult] = {}
+    groups: dict[tuple[str, str], list[tuple[int, Prepared]]] = {}
+    for i, s in enumerate(scenarios):
+        if engine != "rollout":
+            continue
+        try:
+            prep = prepare(s)
+        except Exception:  # reported by the one-at-a-time rerun below
+            continue
+        groups.setdefault((s.robot, prep.adapter.mode), []).append((i, prep))
+    for members in groups.values():
+        try:
+            batch = simulate_batch([p for _, p in members])
+        except Exception:
+            continue
+        for (i, prep), states in zip(members, batch, strict=True):
+            if progress:
+                progress(f"[{i + 1}/{len(scenarios)}] {prep.scenario.key}")
+            trace = Trace()
+            try:
+                results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace), trace)
+            except Exception:
+                continue
+    for i, s in enumerate(scenarios):
+        if i not in results:
+            if progress:
+                progress(f"[{i + 1}/{len(scenarios)}] {s.key}")
+            results[i] = run_scenario(s, progress, engine=engine)
+    return [results[i] for i in range(len(scenarios))]
