@@ -41,8 +41,7 @@ def describe(robot: str) -> str:
     lines = [f"{spec.name}: {spec.description}", f"  scene file: {spec.scene_path}"]
     lines.append("parameters (SI units, radians):")
     lines += [f"  {k:<28} {v}" for k, v in flatten_params(params).items()]
-    robot_bodies = [i for i in range(1, model.nbody)]
-    mass = sum(model.body_mass[i] for i in robot_bodies)
+    mass = float(model.body_mass[1:].sum())  # every body but the world
     lines.append(f"total mass: {mass:.4f} kg    degrees of freedom: {model.nv}    "
                  f"timestep: {model.opt.timestep:g} s    integrator: "
                  f"{mujoco.mjtIntegrator(model.opt.integrator).name.removeprefix('mjINT_')}")

@@ -95,7 +95,6 @@ def layout_from_model(model: mujoco.MjModel, wheel_joints: Sequence[str]) -> Omn
     base_rot = data.xmat[base].reshape(3, 3)
     pos, beta, radii, acts, angle = [], [], [], [], []
     for j in joint_ids:
-        body = model.jnt_bodyid[j]
         axis = data.xaxis[j]
         centre = data.xanchor[j]
         drive = np.cross(axis, [0.0, 0.0, 1.0])
@@ -112,7 +111,6 @@ def layout_from_model(model: mujoco.MjModel, wheel_joints: Sequence[str]) -> Omn
         acts.append(act[0])
         angle.append(bool(model.actuator_biasprm[act[0], 1] != 0.0
                           and model.actuator_dyntype[act[0]] == mujoco.mjtDyn.mjDYN_NONE))
-        del body
     layout = ok.WheelLayout(np.asarray(pos), np.asarray(beta), np.zeros(len(pos)),
                             np.asarray(radii))
     return OmniModelInfo(layout, tuple(joint_ids), tuple(acts), tuple(angle), base)

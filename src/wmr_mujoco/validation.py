@@ -427,7 +427,8 @@ def simulate_batch(prepared: Sequence[Prepared], nthread: int | None = None
     rolled, _ = rollout.rollout(model, datas if nthread > 1 else datas[0],
                                 np.tile(initial, (len(prepared), 1)), controls,
                                 initial_warmstart=np.tile(first.data.qacc_warmstart,
-                                                          (len(prepared), 1)))
+                                                          (len(prepared), 1)),
+                                persistent_pool=nthread > 1)
     for d in datas:
         check_healthy(model, d)
     out = []
