@@ -47,6 +47,27 @@ def median_time(fn: Callable[[], None], repeats: int) -> float:
     return float(np.median(times))
 
 
+def paired_speedup(slow: Callable[[], None], fast: Callable[[], None], repeats: int
+                   ) -> tuple[float, float, float]:
+    """Median times of ``slow`` and ``fast``, and the median of their per-pair ratios.
+
+    The two run alternately, which cancels the machine's slow drifts in load.
+    """
+    slow()
+    fast()
+    ts, tf, ratios = [], [], []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        slow()
+        t1 = time.perf_counter()
+        fast()
+        t2 = time.perf_counter()
+        ts.append(t1 - t0)
+        tf.append(t2 - t1)
+        ratios.append((t1 - t0) / (t2 - t1))
+    return float(np.median(ts)), float(np.median(tf)), float(np.median(ratios))
+
+
 def _driving_controls(model: mujoco.MjModel, robot: str) -> np.ndarray:
     """Steady controls of the robot's first validation scenario (its cruising inputs)."""
     from wmr_mujoco.validation import make_adapter
@@ -85,8 +106,7 @@ def step_speed(robot: str, repeats: int, nstep: int = 2000) -> dict[str, float]:
                                        controls, persistent_pool=nthread > 1)
 
     t_loop = median_time(loop, repeats)
-    t_r1 = median_time(batched(1), repeats)
-    t_rn = median_time(batched(threads), repeats)
+    t_r1, t_rn, speedup = paired_speedup(batched(1), batched(threads), max(repeats, 9))
     dt = model.opt.timestep
     batch_steps = nbatch * controls.shape[1]
     return {"timestep": dt, "loop_steps_per_s": nstep / t_loop,
@@ -94,7 +114,7 @@ def step_speed(robot: str, repeats: int, nstep: int = 2000) -> dict[str, float]:
             "rollout1_steps_per_s": batch_steps / t_r1,
             "rollout1_rtf": batch_steps * dt / t_r1,
             "rolloutN_steps_per_s": batch_steps / t_rn, "threads": threads,
-            "rollout_speedup": t_r1 / t_rn}
+            "rollout_speedup": speedup}
 
 
 def accuracy_vs_timestep(robot: str, repeats: int) -> list[dict[str, float]]:
