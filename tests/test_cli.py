@@ -23,7 +23,9 @@ def test_unknown_robot_is_exit_2(capsys):
 
 def test_demo(capsys):
     assert main(["demo"]) == 0
-    assert "tricycle" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert all(robot in out for robot in ("disc", "bicycle", "tricycle", "omni3"))
+    assert "failed" not in out
 
 
 def test_validate_one_robot_writes_report(tmp_path, capsys):

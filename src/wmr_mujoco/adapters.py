@@ -256,6 +256,7 @@ class OmniDynamicsAdapter:
     """Omni robot under wheel torques: ``x = (X, Y, ψ, u, v, r)``, reduced Lagrange EOM."""
 
     dynamics: OmniDynamics
+    friction: float = 1.0
     robot: str = "omni3"
     mode: str = "torque"
     state_names: tuple[str, ...] = ("x", "y", "heading", "u", "v", "r")

@@ -1,68 +1,37 @@
-"""A short manoeuvre per robot, simulated and summarised (``wmr demo``)."""
+"""One validation scenario per robot, simulated and summarised (``wmr demo``).
+
+A quick look at each robot: it reuses the validation scenarios and runner, and prints the
+path driven, where the robot ended and how far it ended from the analytic model.
+"""
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
-import mujoco
 import numpy as np
 
-from wmr_mujoco.adapters import base_pose
-from wmr_mujoco.loading import load
-from wmr_mujoco.simulation import rollout
+from wmr_mujoco.scenarios import SCENARIOS
+from wmr_mujoco.validation import run_scenario
 
-
-@dataclass(frozen=True)
-class Manoeuvre:
-    """Piecewise-constant inputs: ``(duration s, wheel ground speed m/s, steering rate rad/s)``.
-
-    The wheel speed is the driven wheel's ``v = R θ̇``; the control sent to the wheel
-    servo is ``θ̇ = v / R``.
-    """
-
-    robot: str
-    description: str
-    wheel_radius: float
-    segments: tuple[tuple[float, float, float], ...]
-
-    @property
-    def duration(self) -> float:
-        """Total duration, s."""
-        return sum(s[0] for s in self.segments)
-
-    def control(self, t: float) -> np.ndarray:
-        """Actuator controls ``[θ̇, ω]`` at time ``t``."""
-        end = 0.0
-        for duration, speed, steer_rate in self.segments:
-            end += duration
-            if t < end:
-                return np.array([speed / self.wheel_radius, steer_rate])
-        return np.zeros(2)
-
-
-MANOEUVRES = (
-    Manoeuvre("disc", "roll 1 m/s, steer 0.5 rad/s for 2 s, roll on", 0.15,
-              ((1.0, 1.0, 0.0), (2.0, 1.0, 0.5), (1.0, 1.0, 0.0))),
-    Manoeuvre("bicycle", "rear wheel 2 m/s, steer to 0.3 rad, hold, steer back", 0.34,
-              ((1.0, 2.0, 0.0), (0.5, 2.0, 0.6), (2.0, 2.0, 0.0), (0.5, 2.0, -0.6))),
-    Manoeuvre("tricycle", "left rear wheel 1 m/s, steer to 0.4 rad and hold", 0.1,
-              ((1.0, 1.0, 0.0), (0.4, 1.0, 1.0), (2.6, 1.0, 0.0))),
-)
+#: The scenario shown for each robot.
+DEMO_SCENARIOS = {"disc": "constant steering", "bicycle": "lane change",
+                  "tricycle": "figure eight", "omni3": "square with rotation"}
 
 
 def run_demo() -> str:
-    """Simulate every manoeuvre and return a text summary."""
-    lines = [f"{'robot':<9} {'manoeuvre':<55} {'path m':>7} {'end x, y (m)':>16} "
-             f"{'heading':>8}"]
-    for man in MANOEUVRES:
-        model = load(man.robot)
-        data = mujoco.MjData(model)
-        mujoco.mj_forward(model, data)
-        traj = rollout(model, data, man.duration, man.control, record_every=10,
-                       recorder=base_pose)
-        path = float(np.sum(np.hypot(*np.diff(traj[:, :2], axis=0).T)))
-        x, y, heading = traj[-1]
-        lines.append(f"{man.robot:<9} {man.description:<55} {path:7.3f} "
-                     f"{x:7.3f}, {y:7.3f} {math.degrees(heading):7.1f}°")
+    """Run each robot's demo scenario and return a text summary."""
+    lines = [f"{'robot':<9} {'scenario':<22} {'path m':>7} {'end x, y (m)':>16} "
+             f"{'heading':>8} {'off the model':>14}"]
+    for robot, name in DEMO_SCENARIOS.items():
+        scenario = next(s for s in SCENARIOS if s.robot == robot and s.name == name)
+        result = run_scenario(scenario)
+        if result.error:
+            lines.append(f"{robot:<9} {name:<22} failed: {result.error}")
+            continue
+        sim = result.trace.arrays()["sim"]
+        path = float(np.sum(np.linalg.norm(np.diff(sim[:, :2], axis=0), axis=1)))
+        x, y, heading = sim[-1, :3]
+        off = next(r.value for r in result.rows if r.unit == "% of path")
+        lines.append(f"{robot:<9} {name:<22} {path:7.3f} {x:7.3f}, {y:7.3f} "
+                     f"{math.degrees(heading):7.1f}° {off:12.3f} %")
     return "\n".join(lines)

@@ -100,7 +100,8 @@ def make_adapter(scenario: sc.Scenario, model: mujoco.MjModel, params: Any = Non
         if scenario.robot == "disc":
             return ad.DiscDynamics(params)
         if scenario.robot == "omni3":
-            return ad.OmniDynamicsAdapter(ad.omni_dynamics_from_model(model, params))
+            return ad.OmniDynamicsAdapter(ad.omni_dynamics_from_model(model, params),
+                                          friction=params.sim.friction)
     elif scenario.kind == "kinematic":
         if scenario.robot == "omni3":
             return ad.OmniKinematics(params, world_frame=scenario.world_frame)
@@ -393,7 +394,7 @@ def _dynamic_rows(s: sc.Scenario, tr: dict[str, np.ndarray], adapter: ad.Adapter
                                nu_sim[i] / nu_ana[i] if abs(nu_ana[i]) > 1e-9 else float("nan"),
                                "ratio", None))
     forces = adapter.dynamics.traction_forces(nu_ana, s.input_at(s.duration))
-    limit = OmniParams().sim.friction * adapter.dynamics.mass * 9.81 / 3.0
+    limit = adapter.friction * adapter.dynamics.mass * 9.81 / 3.0
     rows.append(Row.judged(s.robot, s.name, "largest traction / μN", float(
         np.max(np.abs(forces)) / limit), "", 1.0))
     return rows
