@@ -24,8 +24,10 @@ def test_falls_back_to_osmesa(monkeypatch):
     monkeypatch.setattr(gl_backend.sys, "modules", {})
     monkeypatch.setattr(gl_backend, "probe", lambda b: None if b == "osmesa" else "no EGL")
     monkeypatch.setenv("MUJOCO_GL", "egl")
+    monkeypatch.delenv("PYOPENGL_PLATFORM", raising=False)  # restored after the test
     assert gl_backend.select_backend() == "osmesa"
     assert gl_backend.os.environ["MUJOCO_GL"] == "osmesa"
+    assert gl_backend.os.environ["PYOPENGL_PLATFORM"] == "osmesa"
 
 
 def test_user_choice_is_respected(monkeypatch):

@@ -123,3 +123,32 @@ def test_batched_run_all_matches_the_step_loop():
     looped = run_all(scenarios, engine="loop")
     for a, b in zip(batched, looped, strict=True):
         assert [(r.metric, r.value) for r in a.rows] == [(r.metric, r.value) for r in b.rows]
+
+
+def test_batches_split_by_robot_kind_and_settle():
+    """Only scenarios with one model and one settled start may share a rollout."""
+    from wmr_mujoco.validation import batch_key
+
+    a = Scenario("disc", "a", (const(1.0), const(0.0)))
+    assert batch_key(a) == batch_key(Scenario("disc", "b", (const(0.5), const(0.1))))
+    assert batch_key(a) != batch_key(Scenario("disc", "c", a.inputs, settle=0.2))
+    assert batch_key(a) != batch_key(Scenario("disc", "d", a.inputs, kind="dynamic"))
+    assert batch_key(a) != batch_key(Scenario("bicycle", "a", a.inputs))
+
+
+def test_run_all_unknown_engine():
+    with pytest.raises(ValueError, match="engine = 'gpu'; valid engines are rollout, loop"):
+        run_all([], engine="gpu")
+
+
+def test_pipelined_batches_with_different_settles_match_the_loop():
+    """Two batches of one robot (different settles) go through the pipeline; each keeps
+    its own start state, so the metrics equal the step loop's."""
+    scenarios = [Scenario("disc", "settle 0.5", (const(1.0, 0.5), const(0.3)), duration=1.0),
+                 Scenario("disc", "settle 0.2", (const(1.0, 0.5), const(0.3)), duration=1.0,
+                          settle=0.2)]
+    batched = run_all(scenarios, engine="rollout")
+    looped = run_all(scenarios, engine="loop")
+    for a, b in zip(batched, looped, strict=True):
+        assert a.error is None
+        assert [(r.metric, r.value) for r in a.rows] == [(r.metric, r.value) for r in b.rows]

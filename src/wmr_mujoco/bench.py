@@ -20,7 +20,6 @@ from pathlib import Path
 
 import mujoco
 import numpy as np
-from mujoco import rollout
 
 from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.loading import load
@@ -28,7 +27,14 @@ from wmr_mujoco.omni_study import measure_omni, measure_peer
 from wmr_mujoco.omni_trials import OmniTrial, standard_trials
 from wmr_mujoco.registry import ROBOTS, get_spec
 from wmr_mujoco.scenarios import scenarios_for
-from wmr_mujoco.validation import run_scenario
+from wmr_mujoco.thread_scaling import (
+    TARGET_S,
+    driving_controls,
+    paired_ratio,
+    process_ceiling,
+    thread_speedup,
+)
+from wmr_mujoco.validation import Prepared, run_scenario
 
 #: Timesteps of the accuracy-against-cost study, s.
 TIMESTEPS = (0.0005, 0.001, 0.002, 0.004)
@@ -47,44 +53,16 @@ def median_time(fn: Callable[[], None], repeats: int) -> float:
     return float(np.median(times))
 
 
-def paired_speedup(slow: Callable[[], None], fast: Callable[[], None], repeats: int
-                   ) -> tuple[float, float, float]:
-    """Median times of ``slow`` and ``fast``, and the median of their per-pair ratios.
+def step_speed(robot: str, repeats: int, pairs: int, nstep: int = 2000,
+               target_s: float = TARGET_S) -> dict[str, float]:
+    """Steps/s and real-time factor: Python ``mj_step`` loop, rollout 1 thread, all cores.
 
-    The two run alternately, which cancels the machine's slow drifts in load.
+    The rollout speedup is the median of ``pairs`` alternating one-thread/all-core runs
+    (:mod:`wmr_mujoco.thread_scaling`), beside the machine's ceiling measured the same
+    way with processes.
     """
-    slow()
-    fast()
-    ts, tf, ratios = [], [], []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        slow()
-        t1 = time.perf_counter()
-        fast()
-        t2 = time.perf_counter()
-        ts.append(t1 - t0)
-        tf.append(t2 - t1)
-        ratios.append((t1 - t0) / (t2 - t1))
-    return float(np.median(ts)), float(np.median(tf)), float(np.median(ratios))
-
-
-def _driving_controls(model: mujoco.MjModel, robot: str) -> np.ndarray:
-    """Steady controls of the robot's first validation scenario (its cruising inputs)."""
-    from wmr_mujoco.validation import make_adapter
-
-    scenario = scenarios_for([robot])[0]
-    adapter = make_adapter(scenario, model)
-    x0 = np.zeros(len(adapter.state_names))
-    return np.asarray(adapter.controls(scenario.input_at(scenario.duration), x0))
-
-
-def step_speed(robot: str, repeats: int, nstep: int = 2000) -> dict[str, float]:
-    """Steps/s and real-time factor: Python ``mj_step`` loop, rollout 1 thread, all cores."""
     model = load(robot)
-    data = mujoco.MjData(model)
-    ctrl = _driving_controls(model, robot)
-    for _ in range(200):  # settle
-        mujoco.mj_step(model, data)
+    ctrl = driving_controls(model, robot)
 
     def loop() -> None:
         d = mujoco.MjData(model)
@@ -92,29 +70,12 @@ def step_speed(robot: str, repeats: int, nstep: int = 2000) -> dict[str, float]:
         for _ in range(nstep):
             mujoco.mj_step(model, d)
 
-    spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
-    state0 = np.zeros(mujoco.mj_stateSize(model, spec))
-    mujoco.mj_getState(model, data, state0, spec)
-    nbatch = 16
-    controls = np.tile(ctrl, (nbatch, nstep // 2, 1))
-    init = np.tile(state0, (nbatch, 1))
-    threads = os.cpu_count() or 1
-
-    def batched(nthread: int) -> Callable[[], None]:
-        datas = [mujoco.MjData(model) for _ in range(nthread)]
-        return lambda: rollout.rollout(model, datas if nthread > 1 else datas[0], init,
-                                       controls, persistent_pool=nthread > 1)
-
     t_loop = median_time(loop, repeats)
-    t_r1, t_rn, speedup = paired_speedup(batched(1), batched(threads), max(repeats, 9))
     dt = model.opt.timestep
-    batch_steps = nbatch * controls.shape[1]
+    threads = thread_speedup(robot, pairs, target_s=target_s)
+    ceiling = process_ceiling(robot, threads["nbatch"], pairs)
     return {"timestep": dt, "loop_steps_per_s": nstep / t_loop,
-            "loop_rtf": nstep * dt / t_loop,
-            "rollout1_steps_per_s": batch_steps / t_r1,
-            "rollout1_rtf": batch_steps * dt / t_r1,
-            "rolloutN_steps_per_s": batch_steps / t_rn, "threads": threads,
-            "rollout_speedup": speedup}
+            "loop_rtf": nstep * dt / t_loop, **threads, "process_ceiling": ceiling}
 
 
 def accuracy_vs_timestep(robot: str, repeats: int) -> list[dict[str, float]]:
@@ -129,7 +90,7 @@ def accuracy_vs_timestep(robot: str, repeats: int) -> list[dict[str, float]]:
         err = next((r.value for r in result.rows if r.metric == "final position error"
                     and r.unit == "% of path"), float("nan"))
         model = load(robot, params)
-        ctrl = _driving_controls(model, robot)
+        ctrl = driving_controls(model, robot)
 
         def loop(model: mujoco.MjModel = model, ctrl: np.ndarray = ctrl) -> None:
             d = mujoco.MjData(model)
@@ -172,16 +133,37 @@ def validate_wall_time() -> float:
         return time.perf_counter() - t0
 
 
-def validation_engines() -> dict[str, float]:
-    """Wall time of all validation scenarios (no report) with each stepping engine."""
-    from wmr_mujoco.validation import ENGINES, run_all
+def validation_engines(repeats: int) -> dict[str, float]:
+    """Wall time of all validation scenarios (no report) through each engine.
 
-    out = {}
-    for engine in ENGINES:
-        t0 = time.perf_counter()
-        run_all(scenarios_for(), engine=engine)
-        out[engine] = time.perf_counter() - t0
-    return out
+    Also times the simulation stage alone (scenarios prepared beforehand): every
+    scenario through the Python ``mj_step`` loop, against one threaded rollout per batch.
+    Medians of ``repeats`` alternating runs.
+    """
+    from wmr_mujoco.validation import batch_key, prepare, run_all, simulate, simulate_batch
+
+    scenarios = scenarios_for()
+    t_loop, t_rollout, ratio = paired_ratio(lambda: run_all(scenarios, engine="loop"),
+                                            lambda: run_all(scenarios, engine="rollout"),
+                                            repeats, warmup=False)
+    prepared = [prepare(s) for s in scenarios]
+    groups: dict[tuple[str, str, float], list[Prepared]] = {}
+    for p in prepared:
+        groups.setdefault(batch_key(p.scenario), []).append(p)
+
+    def loop_stage() -> None:
+        for p in prepared:
+            data = mujoco.MjData(p.model)
+            mujoco.mj_copyData(data, p.model, p.data)
+            simulate(p.model, data, p.controls, engine="loop")
+
+    def rollout_stage() -> None:
+        for members in groups.values():
+            simulate_batch(members)
+
+    s_loop, s_rollout, s_ratio = paired_ratio(loop_stage, rollout_stage, repeats)
+    return {"loop": t_loop, "rollout": t_rollout, "speedup": ratio,
+            "sim_loop": s_loop, "sim_rollout": s_rollout, "sim_speedup": s_ratio}
 
 
 def peer_side_by_side(trials: list[OmniTrial]) -> list[dict[str, float]]:
@@ -205,7 +187,8 @@ def main(args: argparse.Namespace) -> int:
     results: dict[str, object] = {"machine": {"cpus": os.cpu_count(),
                                               "mujoco": mujoco.__version__}}
     print("stepping speed ...", file=sys.stderr, flush=True)
-    speed = {r: step_speed(r, repeats) for r in ROBOTS if r != "disc_free"}
+    pairs = 3 if args.quick else max(15, repeats)
+    speed = {r: step_speed(r, repeats, pairs) for r in ROBOTS if r != "disc_free"}
     results["speed"] = speed
     print("accuracy against timestep ...", file=sys.stderr, flush=True)
     accuracy = {r: accuracy_vs_timestep(r, repeats) for r in ACCURACY_SCENARIOS}
@@ -219,14 +202,16 @@ def main(args: argparse.Namespace) -> int:
     results["render"] = render_fps(repeats)
     print("wmr validate ...", file=sys.stderr, flush=True)
     results["validate_wall_s"] = validate_wall_time()
-    results["validation_engines_s"] = validation_engines()
+    engines = validation_engines(1 if args.quick else 3)
+    results["validation_engines_s"] = engines
 
     sp = _md_table(["robot", "timestep", "mj_step loop steps/s", "real-time ×",
                     "rollout 1 thread steps/s", f"rollout {next(iter(speed.values()))['threads']} "
-                    "threads steps/s", "thread speedup"],
+                    "threads steps/s", "thread speedup", "machine ceiling (processes)"],
                    [[r, f"{v['timestep'] * 1e3:g} ms", f"{v['loop_steps_per_s']:,.0f}",
                      f"{v['loop_rtf']:.0f}×", f"{v['rollout1_steps_per_s']:,.0f}",
-                     f"{v['rolloutN_steps_per_s']:,.0f}", f"{v['rollout_speedup']:.2f}×"]
+                     f"{v['rolloutN_steps_per_s']:,.0f}", f"{v['rollout_speedup']:.2f}×",
+                     f"{v['process_ceiling']:.2f}×"]
                     for r, v in speed.items()])
     acc = _md_table(["robot", "scenario", "timestep", "final position error % of path",
                      "real-time ×"],
@@ -243,16 +228,25 @@ def main(args: argparse.Namespace) -> int:
     text = "\n\n".join([
         "# Benchmarks", f"`wmr bench` on {os.cpu_count()} cores, MuJoCo {mujoco.__version__}; "
         f"medians of {repeats} repeats.", "## Stepping speed (default settings)", sp,
+        f"Rollout columns: a batch of identical rollouts sized to about "
+        f"{TARGET_S:g} s on one thread; the speedup is the median of {pairs} alternating "
+        "one-thread/all-core pairs. The machine ceiling is the same batch run by as many "
+        "processes as cores at once against one alone: what the hardware gives to "
+        "perfectly independent work.",
         "## Accuracy against cost", acc, f"## Omni robot and the peer model ({len(trials)} "
         "open-loop trials, same run)", peer, "## Rendering, 640×480",
         f"{ren['no_shadows']:.1f} frames/s as `wmr render` draws (no shadows or "
         f"reflections), {ren['shadows']:.1f} with shadows and reflections "
         f"({ren['backend']} backend; omni3, the scene with the most geoms).", "## Validation",
         f"Whole `wmr validate`: {results['validate_wall_s']:.1f} s wall time. All "
-        f"scenarios without the report: {results['validation_engines_s']['rollout']:.1f} s "
-        "through batched `mujoco.rollout` (one threaded rollout per robot and actuation "
-        f"mode), {results['validation_engines_s']['loop']:.1f} s through a Python `mj_step` "
-        "loop, with identical metrics (tested)."]) + "\n"
+        f"scenarios without the report: {engines['rollout']:.1f} s through batched, "
+        "threaded `mujoco.rollout` (one batch per robot and actuation mode, simulated "
+        "while Python schedules and measures the others), "
+        f"{engines['loop']:.1f} s through a Python `mj_step` loop "
+        f"({engines['speedup']:.2f}× faster, median of paired runs), with identical "
+        "metrics (tested). The simulation stage alone: "
+        f"{engines['sim_rollout']:.2f} s batched, {engines['sim_loop']:.2f} s looped "
+        f"({engines['sim_speedup']:.1f}×)."]) + "\n"
     print(text)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)

@@ -23,6 +23,7 @@ import math
 import os
 import traceback
 from collections.abc import Callable, Sequence
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -441,42 +442,67 @@ def simulate_batch(prepared: Sequence[Prepared], nthread: int | None = None
     return out
 
 
+def batch_key(s: sc.Scenario) -> tuple[str, str, float]:
+    """Scenarios with equal keys share one model and settled start: one rollout batch."""
+    return s.robot, s.kind, s.settle
+
+
 def run_all(scenarios: Sequence[sc.Scenario],
             progress: Callable[[str], None] | None = None,
             engine: str = "rollout") -> list[ScenarioResult]:
     """Run every scenario; a failure does not stop the others.
 
-    With ``engine="rollout"``, scenarios of the same robot and actuation mode are
-    simulated together in one multi-threaded ``mujoco.rollout`` (they share the settled
-    start state); a group that fails is rerun one scenario at a time so that each failure
-    is attributed. ``"loop"`` steps each scenario in Python.
+    With ``engine="rollout"``, scenarios with the same :func:`batch_key` are simulated
+    together in one multi-threaded ``mujoco.rollout``, and the batches are pipelined:
+    while MuJoCo's threads (which release the GIL) simulate one batch, Python computes the
+    next batch's analytic schedule, then measures the finished ones. A batch that fails is
+    rerun one scenario at a time so that each failure is attributed. ``"loop"`` steps each
+    scenario in Python, one after the other.
     """
-    results: dict[int, ScenarioResult] = {}
-    groups: dict[tuple[str, str], list[tuple[int, Prepared]]] = {}
-    for i, s in enumerate(scenarios):
-        if engine != "rollout":
-            continue
-        try:
-            prep = prepare(s)
-        except Exception:  # reported by the one-at-a-time rerun below
-            continue
-        groups.setdefault((s.robot, prep.adapter.mode), []).append((i, prep))
-    for members in groups.values():
-        try:
-            batch = simulate_batch([p for _, p in members])
-        except Exception:
-            continue
-        for (i, prep), states in zip(members, batch, strict=True):
-            if progress:
-                progress(f"[{i + 1}/{len(scenarios)}] {prep.scenario.key}")
-            trace = Trace()
-            try:
-                results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace), trace)
-            except Exception:
-                continue
+    if engine not in ENGINES:
+        raise ValueError(f"engine = {engine!r}; valid engines are {', '.join(ENGINES)}")
+    results = _run_batched(scenarios, progress) if engine == "rollout" else {}
     for i, s in enumerate(scenarios):
         if i not in results:
             if progress:
                 progress(f"[{i + 1}/{len(scenarios)}] {s.key}")
             results[i] = run_scenario(s, progress, engine=engine)
     return [results[i] for i in range(len(scenarios))]
+
+
+def _run_batched(scenarios: Sequence[sc.Scenario], progress: Callable[[str], None] | None
+                 ) -> dict[int, ScenarioResult]:
+    """The scenarios that ran cleanly in batches, by index; failures are left out."""
+    groups: dict[tuple[str, str, float], list[int]] = {}
+    for i, s in enumerate(scenarios):
+        groups.setdefault(batch_key(s), []).append(i)
+    # One core stays with the Python thread that schedules and measures.
+    nthread = max(1, (os.cpu_count() or 1) - 1)
+    results: dict[int, ScenarioResult] = {}
+    pending: list[tuple[list[tuple[int, Prepared]], Future[list[np.ndarray]]]] = []
+    with ThreadPoolExecutor(max_workers=1, thread_name_prefix="wmr-rollout") as pool:
+        for members in groups.values():
+            prepared = []
+            for i in members:
+                try:
+                    prepared.append((i, prepare(scenarios[i])))
+                except Exception:  # reported by the one-at-a-time rerun
+                    continue
+            if prepared:
+                pending.append((prepared, pool.submit(simulate_batch,
+                                                      [p for _, p in prepared], nthread)))
+        for prepared, future in pending:
+            try:
+                batch = future.result()
+            except Exception:
+                continue
+            for (i, prep), states in zip(prepared, batch, strict=True):
+                if progress:
+                    progress(f"[{i + 1}/{len(scenarios)}] {prep.scenario.key}")
+                trace = Trace()
+                try:
+                    results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace),
+                                                trace)
+                except Exception:
+                    continue
+    return results

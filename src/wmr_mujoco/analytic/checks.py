@@ -14,8 +14,9 @@ def as_array(name: str, value: object, shape: tuple[int | None, ...]) -> np.ndar
         ValueError: naming ``name``, the expected and the actual shape, or the
             non-finite entries.
     """
-    if type(value) is np.ndarray and value.dtype == np.float64 and value.ndim == len(shape) \
-            and all(s is None or s == n for s, n in zip(shape, value.shape, strict=True)):
+    if type(value) is np.ndarray and value.dtype == np.float64 and (
+            value.shape == shape or (value.ndim == len(shape) and all(
+                s is None or s == n for s, n in zip(shape, value.shape, strict=True)))):
         # Fast path for the arrays the integrators pass around.
         if not np.isfinite(value).all():
             raise ValueError(f"{name} contains non-finite values: "
