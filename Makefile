@@ -5,7 +5,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test lint models pictures renders study bench sysdeps clean
+.PHONY: demo test lint models pictures renders study bench readme sysdeps clean
 
 $(STAMP): pyproject.toml scripts/install-system-deps.sh
 	bash scripts/install-system-deps.sh
@@ -45,6 +45,10 @@ study: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/wmr bench
+
+# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into README.md.
+readme: $(STAMP)
+	$(BIN)/python -m wmr_mujoco.readme_sync
 
 sysdeps:
 	bash scripts/install-system-deps.sh

@@ -231,8 +231,8 @@ def main(args: argparse.Namespace) -> int:
         f"Rollout columns: a batch of identical rollouts sized to about "
         f"{TARGET_S:g} s on one thread; the speedup is the median of {pairs} alternating "
         "one-thread/all-core pairs. The machine ceiling is the same batch run by as many "
-        "processes as cores at once against one alone: what the hardware gives to "
-        "perfectly independent work.",
+        "processes as cores at once against one alone: what the hardware gives to fully "
+        "independent work in the same run, and as noisy as the speedup.",
         "## Accuracy against cost", acc, f"## Omni robot and the peer model ({len(trials)} "
         "open-loop trials, same run)", peer, "## Rendering, 640×480",
         f"{ren['no_shadows']:.1f} frames/s as `wmr render` draws (no shadows or "

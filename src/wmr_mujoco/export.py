@@ -16,6 +16,7 @@ from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.builders import common
 from wmr_mujoco.builders.scene import add_scene
 from wmr_mujoco.info import flatten_params
+from wmr_mujoco.markers import has_markers, replace_between
 from wmr_mujoco.params import WheelParams
 from wmr_mujoco.registry import ROBOTS, RobotSpec
 
@@ -50,15 +51,10 @@ def parameter_table(spec: RobotSpec) -> str:
 def update_readme(spec: RobotSpec) -> Path | None:
     """Replace the text between the README's table markers with :func:`parameter_table`."""
     readme = spec.robot_path.parent / "README.md"
-    begin, end = f"<!-- {spec.name} parameters: begin -->", f"<!-- {spec.name} parameters: end -->"
-    if not readme.is_file():
+    key = f"{spec.name} parameters"
+    if not has_markers(readme, key):
         return None
-    text = readme.read_text()
-    if begin not in text or end not in text:
-        return None
-    head, rest = text.split(begin, 1)
-    _, tail = rest.split(end, 1)
-    write_text_atomic(readme, f"{head}{begin}\n{parameter_table(spec)}\n{end}{tail}")
+    replace_between(readme, key, parameter_table(spec))
     return readme
 
 

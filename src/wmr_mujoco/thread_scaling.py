@@ -9,9 +9,11 @@ be timed too).
 
 The machine's own ceiling is measured the same way with processes instead of threads:
 one process runs the single-thread batch alone, then ``N`` processes run it at once
-(started together at a barrier); the ceiling is ``N t_alone / max(t_together)``. No
-threading code can beat it; on a virtual machine it is often well below ``N`` (shared
-caches, memory bandwidth, clock boost, neighbours).
+(started together at a barrier); the ceiling is ``N t_alone / max(t_together)``. Threads
+sharing one process should do no better than processes sharing nothing, so it is the
+reference for the thread speedup, measured in the same run and as noisy as it; on a
+virtual machine it is often well below ``N`` (shared caches, memory bandwidth, clock
+boost, the hypervisor's other guests).
 """
 
 from __future__ import annotations

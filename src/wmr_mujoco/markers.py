@@ -1,0 +1,41 @@
+"""Generated text in Markdown files, between ``<!-- key: begin -->`` and ``<!-- key: end -->``.
+
+READMEs keep their prose by hand and their figures from code: the text between a pair of
+markers is replaced wholesale by what a generator produced.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from wmr_mujoco.atomic import write_text_atomic
+
+
+def markers(key: str) -> tuple[str, str]:
+    """The begin and end marker lines for ``key``."""
+    return f"<!-- {key}: begin -->", f"<!-- {key}: end -->"
+
+
+def has_markers(path: Path, key: str) -> bool:
+    """Whether ``path`` exists and holds both markers of ``key``."""
+    if not path.is_file():
+        return False
+    text = path.read_text()
+    return all(m in text for m in markers(key))
+
+
+def replace_between(path: Path, key: str, body: str) -> None:
+    """Replace the text between the markers of ``key`` in ``path`` with ``body`` (atomic).
+
+    Raises:
+        FileNotFoundError: ``path`` does not exist.
+        ValueError: the markers are missing, repeated or out of order; the message names
+            them and the file.
+    """
+    begin, end = markers(key)
+    text = Path(path).read_text()
+    if text.count(begin) != 1 or text.count(end) != 1 or text.index(begin) > text.index(end):
+        raise ValueError(f"{path} must hold {begin!r} once, then {end!r} once")
+    head, rest = text.split(begin, 1)
+    _, tail = rest.split(end, 1)
+    write_text_atomic(Path(path), f"{head}{begin}\n{body.strip()}\n{end}{tail}")
