@@ -14,3 +14,16 @@ def test_median_time_calls_fn():
     calls = []
     assert median_time(lambda: calls.append(1), repeats=3) >= 0
     assert len(calls) == 4  # one warm-up
+
+
+def test_failed_validate_run_is_an_error_not_a_time(monkeypatch):
+    import subprocess
+
+    import pytest
+
+    from wmr_mujoco import bench
+
+    monkeypatch.setattr(bench.subprocess, "run", lambda *a, **k: subprocess.CompletedProcess(
+        a, 1, "24 of 25 scenarios pass", "failed: omni3/torque"))
+    with pytest.raises(RuntimeError, match="exited with 1: .*failed: omni3/torque"):
+        bench.validate_wall_time(1)
