@@ -3,7 +3,12 @@
 import numpy as np
 import pytest
 
-from wmr_mujoco.thread_scaling import make_batch, paired_ratio, process_ceiling, sized_batch
+from wmr_mujoco.thread_scaling import (
+    make_batch,
+    paired_rounds,
+    process_ceilings,
+    sized_batch,
+)
 
 
 @pytest.mark.parametrize("robot", ["bicycle", "omni3"])
@@ -34,26 +39,31 @@ def test_sized_batch_is_a_multiple_of_threads():
     assert batch.controls.shape[0] % 3 == 0 and batch.controls.shape[0] >= 6
 
 
-def test_paired_ratio_calls_both_alternately():
+def test_paired_rounds_interleave_the_keys():
     calls = []
-    paired_ratio(lambda: calls.append("s"), lambda: calls.append("f"), 2, warmup=False)
-    assert calls == ["s", "f", "s", "f"]
+    pairs = {k: (lambda k=k: calls.append(f"{k}1"), lambda k=k: calls.append(f"{k}2"))
+             for k in "ab"}
+    out = paired_rounds(pairs, 2, warmup=False)
+    assert calls == ["a1", "a2", "b1", "b2"] * 2
+    assert set(out) == {"a", "b"}
 
 
 @pytest.mark.parametrize(("call", "match"), [
     (lambda: make_batch("disc", 0), "nbatch = 0"),
     (lambda: make_batch("disc", 1).runner(0), "nthread = 0"),
-    (lambda: paired_ratio(print, print, 0), "repeats = 0"),
-    (lambda: process_ceiling("tank", 2, 1), "tank"),
-    (lambda: process_ceiling("disc", 2, 0), "repeats = 0"),
+    (lambda: paired_rounds({}, 0), "rounds = 0"),
+    (lambda: process_ceilings({"tank": 2}, 1), "tank"),
+    (lambda: process_ceilings({"disc": 0}, 1), r"nbatch\['disc'\] = 0"),
+    (lambda: process_ceilings({"disc": 2}, 0), "rounds = 0"),
 ])
 def test_bad_sizes_are_refused(call, match):
     with pytest.raises(ValueError, match=match):
         call()
 
 
-def test_process_ceiling_runs():
-    ceiling = process_ceiling("disc", 2, 1, processes=2)
+def test_process_ceilings_run():
+    ceilings = process_ceilings({"disc": 2, "bicycle": 2}, 1, processes=2)
+    assert set(ceilings) == {"disc", "bicycle"}
     # N t_alone / max(t_together) is at most N = 2 for work that cannot share anything;
     # a single round can overshoot by the machine's noise (tens of %), not by 50 %.
-    assert 0 < ceiling < 2 * 1.5
+    assert all(0 < c < 2 * 1.5 for c in ceilings.values())

@@ -15,7 +15,7 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 import mujoco
@@ -31,8 +31,8 @@ from wmr_mujoco.thread_scaling import (
     TARGET_S,
     driving_controls,
     paired_ratio,
-    process_ceiling,
-    thread_speedup,
+    process_ceilings,
+    thread_speedups,
 )
 from wmr_mujoco.validation import Prepared, run_scenario
 
@@ -53,29 +53,34 @@ def median_time(fn: Callable[[], None], repeats: int) -> float:
     return float(np.median(times))
 
 
-def step_speed(robot: str, repeats: int, pairs: int, nstep: int = 2000,
-               target_s: float = TARGET_S) -> dict[str, float]:
-    """Steps/s and real-time factor: Python ``mj_step`` loop, rollout 1 thread, all cores.
+def step_speed(robots: Sequence[str], repeats: int, rounds: int, nstep: int = 2000,
+               target_s: float = TARGET_S) -> dict[str, dict[str, float]]:
+    """Per robot, steps/s and real-time factor: ``mj_step`` loop, rollout 1 thread, all cores.
 
-    The rollout speedup is the median of ``pairs`` alternating one-thread/all-core runs
-    (:mod:`wmr_mujoco.thread_scaling`), beside the machine's ceiling measured the same
-    way with processes.
+    The rollout speedup is the median of ``rounds`` one-thread/all-core pairs, interleaved
+    across the robots (:mod:`wmr_mujoco.thread_scaling`), beside the machine's ceiling
+    measured the same way with processes.
     """
-    model = load(robot)
-    ctrl = driving_controls(model, robot)
+    out = {}
+    for robot in robots:
+        model = load(robot)
+        ctrl = driving_controls(model, robot)
 
-    def loop() -> None:
-        d = mujoco.MjData(model)
-        d.ctrl[:] = ctrl
-        for _ in range(nstep):
-            mujoco.mj_step(model, d)
+        def loop(model: mujoco.MjModel = model, ctrl: np.ndarray = ctrl) -> None:
+            d = mujoco.MjData(model)
+            d.ctrl[:] = ctrl
+            for _ in range(nstep):
+                mujoco.mj_step(model, d)
 
-    t_loop = median_time(loop, repeats)
-    dt = model.opt.timestep
-    threads = thread_speedup(robot, pairs, target_s=target_s)
-    ceiling = process_ceiling(robot, threads["nbatch"], pairs)
-    return {"timestep": dt, "loop_steps_per_s": nstep / t_loop,
-            "loop_rtf": nstep * dt / t_loop, **threads, "process_ceiling": ceiling}
+        t_loop = median_time(loop, repeats)
+        dt = model.opt.timestep
+        out[robot] = {"timestep": dt, "loop_steps_per_s": nstep / t_loop,
+                      "loop_rtf": nstep * dt / t_loop}
+    threads = thread_speedups(robots, rounds, target_s=target_s)
+    ceilings = process_ceilings({r: t["nbatch"] for r, t in threads.items()}, rounds)
+    for robot in robots:
+        out[robot].update(threads[robot], process_ceiling=ceilings[robot])
+    return out
 
 
 def accuracy_vs_timestep(robot: str, repeats: int) -> list[dict[str, float]]:
@@ -200,7 +205,7 @@ def main(args: argparse.Namespace) -> int:
                                               "mujoco": mujoco.__version__}}
     print("stepping speed ...", file=sys.stderr, flush=True)
     pairs = 3 if args.quick else max(15, repeats)
-    speed = {r: step_speed(r, repeats, pairs) for r in ROBOTS if r != "disc_free"}
+    speed = step_speed([r for r in ROBOTS if r != "disc_free"], repeats, pairs)
     results["speed"] = speed
     print("accuracy against timestep ...", file=sys.stderr, flush=True)
     accuracy = {r: accuracy_vs_timestep(r, repeats) for r in ACCURACY_SCENARIOS}
@@ -241,10 +246,11 @@ def main(args: argparse.Namespace) -> int:
         "# Benchmarks", f"`wmr bench` on {os.cpu_count()} cores, MuJoCo {mujoco.__version__}; "
         f"medians of {repeats} repeats.", "## Stepping speed (default settings)", sp,
         f"Rollout columns: a batch of identical rollouts sized to about "
-        f"{TARGET_S:g} s on one thread; the speedup is the median of {pairs} alternating "
-        "one-thread/all-core pairs. The machine ceiling is the same batch run by as many "
+        f"{TARGET_S:g} s on one thread; the speedup is the median of {pairs} "
+        "one-thread/all-core pairs, the robots taking turns so that the machine's drifts "
+        "in load fall on all alike. The machine ceiling is the same batch run by as many "
         "processes as cores at once against one alone: what the hardware gives to fully "
-        "independent work in the same run, and as noisy as the speedup.",
+        "independent work, measured just after, and as noisy as the speedup.",
         "## Accuracy against cost", acc, f"## Omni robot and the peer model ({len(trials)} "
         "open-loop trials, same run)", peer, "## Rendering, 640×480",
         f"{ren['no_shadows']:.1f} frames/s as `wmr render` draws (no shadows or "

@@ -22,7 +22,7 @@ import multiprocessing as mp
 import os
 import queue
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import mujoco
@@ -107,80 +107,106 @@ def sized_batch(robot: str, threads: int, target_s: float = TARGET_S) -> Batch:
     return make_batch(robot, nbatch)
 
 
-def paired_ratio(slow: Callable[[], None], fast: Callable[[], None], repeats: int,
-                 warmup: bool = True) -> tuple[float, float, float]:
-    """Median times of ``slow`` and ``fast``, and the median of their per-pair ratios.
+def _timed(fn: Callable[[], None]) -> float:
+    t0 = time.perf_counter()
+    fn()
+    return time.perf_counter() - t0
 
-    The two run alternately (after one warm-up each unless ``warmup`` is False), which
-    cancels the machine's slow drifts in load.
+
+def paired_rounds(pairs: dict[str, tuple[Callable[[], None], Callable[[], None]]],
+                  rounds: int, warmup: bool = True) -> dict[str, tuple[float, float, float]]:
+    """Per key, median times of ``slow`` and ``fast`` and the median of per-pair ratios.
+
+    Each round runs every key's ``slow`` then ``fast``, so the machine's drifts in load
+    fall on both alike and on every key alike (after one warm-up of each, unless
+    ``warmup`` is False).
     """
-    if repeats < 1:
-        raise ValueError(f"repeats = {repeats!r}; must be >= 1")
+    if rounds < 1:
+        raise ValueError(f"rounds = {rounds!r}; must be >= 1")
     if warmup:
-        slow()
-        fast()
-    ts, tf, ratios = [], [], []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        slow()
-        t1 = time.perf_counter()
-        fast()
-        t2 = time.perf_counter()
-        ts.append(t1 - t0)
-        tf.append(t2 - t1)
-        ratios.append((t1 - t0) / (t2 - t1))
-    return float(np.median(ts)), float(np.median(tf)), float(np.median(ratios))
+        for slow, fast in pairs.values():
+            slow()
+            fast()
+    times: dict[str, tuple[list[float], list[float]]] = {k: ([], []) for k in pairs}
+    for _ in range(rounds):
+        for key, (slow, fast) in pairs.items():
+            times[key][0].append(_timed(slow))
+            times[key][1].append(_timed(fast))
+    return {k: (float(np.median(ts)), float(np.median(tf)),
+                float(np.median(np.divide(ts, tf)))) for k, (ts, tf) in times.items()}
 
 
-def thread_speedup(robot: str, repeats: int, threads: int | None = None,
-                   target_s: float = TARGET_S) -> dict[str, float]:
-    """Rollout steps/s on one thread and on ``threads`` (all cores), and the speedup."""
+def paired_ratio(slow: Callable[[], None], fast: Callable[[], None], rounds: int,
+                 warmup: bool = True) -> tuple[float, float, float]:
+    """:func:`paired_rounds` for one pair."""
+    return paired_rounds({"": (slow, fast)}, rounds, warmup)[""]
+
+
+def thread_speedups(robots: Sequence[str], rounds: int, threads: int | None = None,
+                    target_s: float = TARGET_S) -> dict[str, dict[str, float]]:
+    """Per robot, rollout steps/s on one thread and on ``threads``, and the speedup.
+
+    ``threads`` defaults to all cores; the speedup is the median of ``rounds`` pairs,
+    interleaved across the robots (:func:`paired_rounds`).
+    """
     threads = threads or os.cpu_count() or 1
-    batch = sized_batch(robot, threads, target_s)
-    t1, tn, speedup = paired_ratio(batch.runner(1), batch.runner(threads), repeats)
-    dt = batch.model.opt.timestep
-    return {"nbatch": batch.controls.shape[0], "threads": threads,
-            "rollout1_steps_per_s": batch.steps / t1, "rollout1_rtf": batch.steps * dt / t1,
-            "rolloutN_steps_per_s": batch.steps / tn, "rollout_speedup": speedup}
+    batches = {r: sized_batch(r, threads, target_s) for r in robots}
+    timed = paired_rounds({r: (b.runner(1), b.runner(threads)) for r, b in batches.items()},
+                          rounds)
+    out = {}
+    for robot, (t1, tn, speedup) in timed.items():
+        b = batches[robot]
+        dt = b.model.opt.timestep
+        out[robot] = {"nbatch": b.controls.shape[0], "threads": threads,
+                      "rollout1_steps_per_s": b.steps / t1,
+                      "rollout1_rtf": b.steps * dt / t1,
+                      "rolloutN_steps_per_s": b.steps / tn, "rollout_speedup": speedup}
+    return out
 
 
-def _ceiling_worker(rank: int, robot: str, nbatch: int, repeats: int,
+def _ceiling_worker(rank: int, nbatch: dict[str, int], rounds: int,
                     barrier: mp.synchronize.Barrier, results: mp.Queue) -> None:
-    run = make_batch(robot, nbatch).runner(1)
-    run()
-    alone, together = [], []
-    for _ in range(repeats):
-        barrier.wait()
-        if rank == 0:
-            t0 = time.perf_counter()
-            run()
-            alone.append(time.perf_counter() - t0)
-        barrier.wait()
-        t0 = time.perf_counter()
+    runs = {robot: make_batch(robot, n).runner(1) for robot, n in nbatch.items()}
+    for run in runs.values():
         run()
-        together.append(time.perf_counter() - t0)
+    alone: dict[str, list[float]] = {r: [] for r in runs}
+    together: dict[str, list[float]] = {r: [] for r in runs}
+    for _ in range(rounds):
+        for robot, run in runs.items():
+            barrier.wait()
+            if rank == 0:
+                alone[robot].append(_timed(run))
+            barrier.wait()
+            together[robot].append(_timed(run))
     results.put((rank, alone, together))
 
 
-def process_ceiling(robot: str, nbatch: int, repeats: int, processes: int | None = None
-                    ) -> float:
-    """Median of ``N t_alone / max(t_together)`` over ``repeats`` alternating rounds.
+def process_ceilings(nbatch: dict[str, int], rounds: int, processes: int | None = None
+                     ) -> dict[str, float]:
+    """Per robot, the median of ``N t_alone / max(t_together)`` over ``rounds`` rounds.
+
+    ``nbatch`` maps each robot to its batch size. Rounds interleave the robots, as in
+    :func:`thread_speedups`.
 
     Raises:
+        ValueError: an unknown robot, or sizes below 1.
         RuntimeError: a worker process failed (its exit code is named).
     """
-    get_spec(robot)  # a bad name fails here, not in the workers
-    if nbatch < 1 or repeats < 1:
-        raise ValueError(f"nbatch = {nbatch!r}, repeats = {repeats!r}; both must be >= 1")
+    for robot, n in nbatch.items():
+        get_spec(robot)  # a bad name fails here, not in the workers
+        if n < 1:
+            raise ValueError(f"nbatch[{robot!r}] = {n!r}; must be >= 1")
+    if rounds < 1:
+        raise ValueError(f"rounds = {rounds!r}; must be >= 1")
     processes = processes or os.cpu_count() or 1
     ctx = mp.get_context("spawn")  # no fork of a process that may hold rollout threads
     barrier, results = ctx.Barrier(processes), ctx.Queue()
     workers = [ctx.Process(target=_ceiling_worker,
-                           args=(rank, robot, nbatch, repeats, barrier, results))
+                           args=(rank, dict(nbatch), rounds, barrier, results))
                for rank in range(processes)]
     for w in workers:
         w.start()
-    got: dict[int, tuple[list[float], list[float]]] = {}
+    got: dict[int, tuple[dict[str, list[float]], dict[str, list[float]]]] = {}
     try:
         while len(got) < processes:
             try:
@@ -196,6 +222,9 @@ def process_ceiling(robot: str, nbatch: int, repeats: int, processes: int | None
             w.join(timeout=10)
             if w.is_alive():
                 w.terminate()
-    alone = np.asarray(got[0][0])
-    together = np.max([got[r][1] for r in range(processes)], axis=0)
-    return float(np.median(processes * alone / together))
+    out = {}
+    for robot in nbatch:
+        alone = np.asarray(got[0][0][robot])
+        together = np.max([got[r][1][robot] for r in range(processes)], axis=0)
+        out[robot] = float(np.median(processes * alone / together))
+    return out
