@@ -29,3 +29,8 @@ def test_failed_validate_run_is_an_error_not_a_time(monkeypatch):
         a, 1, "24 of 25 scenarios pass", "failed: omni3/torque"))
     with pytest.raises(RuntimeError, match="exited with 1: .*failed: omni3/torque"):
         bench.validate_wall_time(1)
+
+
+def test_missing_peer_is_left_out_not_fatal(tmp_path):
+    assert bench.peer_side_by_side([], tmp_path / "scene.xml") is None
+    assert "Left out: the peer model was not found" in bench._peer_section(None)

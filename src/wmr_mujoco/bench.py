@@ -23,7 +23,7 @@ import numpy as np
 
 from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.loading import load
-from wmr_mujoco.omni_study import measure_omni, measure_peer
+from wmr_mujoco.omni_study import PEER_SCENE, measure_omni, measure_peer
 from wmr_mujoco.omni_trials import OmniTrial, standard_trials
 from wmr_mujoco.registry import ROBOTS, get_spec
 from wmr_mujoco.scenarios import scenarios_for
@@ -183,11 +183,24 @@ def validation_engines(repeats: int) -> dict[str, float]:
             "sim_loop": s_loop, "sim_rollout": s_rollout, "sim_speedup": s_ratio}
 
 
-def peer_side_by_side(trials: list[OmniTrial]) -> list[dict[str, float]]:
-    """Our omni robot and the peer on the same trials, same run."""
+def peer_side_by_side(trials: list[OmniTrial], scene: Path = PEER_SCENE
+                      ) -> list[dict[str, float]] | None:
+    """Our omni robot and the peer on the same trials, same run; None without the peer."""
+    if not scene.is_file():
+        return None
     ours = measure_omni(get_spec("omni3").params_type(), trials, "omni3 (default)")
-    peer = measure_peer(trials)
+    peer = measure_peer(trials, scene)
     return [dataclasses.asdict(s) for s in (ours, peer)]
+
+
+def _peer_section(rows: list[dict[str, float]] | None) -> str:
+    if rows is None:
+        return f"Left out: the peer model was not found at `{PEER_SCENE}`."
+    return _md_table(["model", "worst position error % of path", "worst heading error °",
+                      "real-time ×"],
+                     [[p["label"], f"{p['worst_position_pct']:.3f}",
+                       f"{p['worst_heading_deg']:.2f}", f"{p['real_time_factor']:.0f}×"]
+                      for p in rows])
 
 
 def _md_table(header: list[str], rows: list[list[str]]) -> str:
@@ -215,6 +228,9 @@ def main(args: argparse.Namespace) -> int:
     if args.quick:
         trials = [t for t in trials if t.name in ("translate   0°", "rotate", "translate+rotate")]
     results["peer"] = peer_side_by_side(trials)
+    if results["peer"] is None:
+        print(f"warning: peer model not found: {PEER_SCENE} (set WMR_PEER_SCENE to "
+              "robot_soccer_kit's scene.xml); its comparison is left out", file=sys.stderr)
     print("rendering ...", file=sys.stderr, flush=True)
     results["render"] = render_fps(repeats)
     print("wmr validate ...", file=sys.stderr, flush=True)
@@ -236,11 +252,7 @@ def main(args: argparse.Namespace) -> int:
                       f"{row['timestep'] * 1e3:g} ms" + (" (default)" if row["default"] else ""),
                       f"{row['position_error_pct']:.3f}", f"{row['rtf']:.0f}×"]
                      for r, rows in accuracy.items() for row in rows])
-    peer = _md_table(["model", "worst position error % of path", "worst heading error °",
-                      "real-time ×"],
-                     [[p["label"], f"{p['worst_position_pct']:.3f}",
-                       f"{p['worst_heading_deg']:.2f}", f"{p['real_time_factor']:.0f}×"]
-                      for p in results["peer"]])
+    peer = _peer_section(results["peer"])
     ren = results["render"]
     text = "\n\n".join([
         "# Benchmarks", f"`wmr bench` on {os.cpu_count()} cores, MuJoCo {mujoco.__version__}; "

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import os
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -31,8 +32,11 @@ from wmr_mujoco.omni_trials import (
 from wmr_mujoco.params import OmniParams
 from wmr_mujoco.paths import MODELS_DIR
 
-#: The peer model (MuJoCo Menagerie robot_soccer_kit), measured only as a file.
-PEER_SCENE = MODELS_DIR.parent.parent / "shared" / "anchors" / "robot_soccer_kit" / "scene.xml"
+#: The peer model (MuJoCo Menagerie robot_soccer_kit), measured only as a file, never
+#: copied: ``../shared/anchors`` beside the checkout, or the ``WMR_PEER_SCENE`` variable.
+PEER_SCENE = Path(os.environ.get(
+    "WMR_PEER_SCENE",
+    MODELS_DIR.parent.parent / "shared" / "anchors" / "robot_soccer_kit" / "scene.xml"))
 PEER_WHEELS = ("wheel1_speed", "wheel2_speed", "wheel3_speed")
 OMNI_WHEELS = ("wheel1", "wheel2", "wheel3")
 README = MODELS_DIR / "omni3" / "README.md"
@@ -78,7 +82,8 @@ def measure_omni(params: OmniParams, trials: Sequence[OmniTrial], label: str) ->
 def measure_peer(trials: Sequence[OmniTrial], scene: Path = PEER_SCENE) -> Summary:
     """The peer model on the same trials (its ripple is not measured: cylinder rollers)."""
     if not scene.is_file():
-        raise FileNotFoundError(f"peer model not found: {scene}")
+        raise FileNotFoundError(f"peer model not found: {scene} (set WMR_PEER_SCENE to "
+                                "robot_soccer_kit's scene.xml)")
     model = mujoco.MjModel.from_xml_path(str(scene))
     info = layout_from_model(model, PEER_WHEELS)
     return summarise("robot_soccer_kit (peer, as published)",
