@@ -3,12 +3,7 @@
 import numpy as np
 import pytest
 
-from wmr_mujoco.thread_scaling import (
-    make_batch,
-    paired_rounds,
-    process_ceilings,
-    sized_batch,
-)
+from wmr_mujoco.thread_scaling import batch_size, make_batch, paired_ratio, scaling
 
 
 @pytest.mark.parametrize("robot", ["bicycle", "omni3"])
@@ -34,36 +29,34 @@ def test_batch_moves_the_robot():
     assert np.linalg.norm(end - start) > 0.1
 
 
-def test_sized_batch_is_a_multiple_of_threads():
-    batch = sized_batch("disc", threads=3, target_s=0.01)
-    assert batch.controls.shape[0] % 3 == 0 and batch.controls.shape[0] >= 6
+def test_batch_size_is_a_multiple_of_threads():
+    n = batch_size("disc", threads=3, target_s=0.01)
+    assert n % 3 == 0 and n >= 6
 
 
-def test_paired_rounds_interleave_the_keys():
+def test_paired_ratio_alternates():
     calls = []
-    pairs = {k: (lambda k=k: calls.append(f"{k}1"), lambda k=k: calls.append(f"{k}2"))
-             for k in "ab"}
-    out = paired_rounds(pairs, 2, warmup=False)
-    assert calls == ["a1", "a2", "b1", "b2"] * 2
-    assert set(out) == {"a", "b"}
+    paired_ratio(lambda: calls.append("slow"), lambda: calls.append("fast"), 2, warmup=False)
+    assert calls == ["slow", "fast", "slow", "fast"]
 
 
 @pytest.mark.parametrize(("call", "match"), [
     (lambda: make_batch("disc", 0), "nbatch = 0"),
     (lambda: make_batch("disc", 1).runner(0), "nthread = 0"),
-    (lambda: paired_rounds({}, 0), "rounds = 0"),
-    (lambda: process_ceilings({"tank": 2}, 1), "tank"),
-    (lambda: process_ceilings({"disc": 0}, 1), r"nbatch\['disc'\] = 0"),
-    (lambda: process_ceilings({"disc": 2}, 0), "rounds = 0"),
+    (lambda: paired_ratio(print, print, 0), "rounds = 0"),
+    (lambda: scaling(["tank"], 1), "tank"),
+    (lambda: scaling(["disc"], 0), "rounds = 0"),
 ])
 def test_bad_sizes_are_refused(call, match):
     with pytest.raises(ValueError, match=match):
         call()
 
 
-def test_process_ceilings_run():
-    ceilings = process_ceilings({"disc": 2, "bicycle": 2}, 1, processes=2)
-    assert set(ceilings) == {"disc", "bicycle"}
-    # N t_alone / max(t_together) is at most N = 2 for work that cannot share anything;
-    # a single round can overshoot by the machine's noise (tens of %), not by 50 %.
-    assert all(0 < c < 2 * 1.5 for c in ceilings.values())
+def test_scaling_reports_threads_beside_processes():
+    res = scaling(["disc", "bicycle"], 1, workers=2, target_s=0.02)
+    assert set(res) == {"disc", "bicycle"}
+    for figures in res.values():
+        assert figures["threads"] == 2 and figures["nbatch"] % 2 == 0
+        # Both ratios are at most N = 2 for work that shares nothing; a single round can
+        # overshoot by the machine's noise (tens of %), not by 50 %.
+        assert 0 < figures["rollout_speedup"] < 3 and 0 < figures["process_ceiling"] < 3

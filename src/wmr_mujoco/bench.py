@@ -31,8 +31,7 @@ from wmr_mujoco.thread_scaling import (
     TARGET_S,
     driving_controls,
     paired_ratio,
-    process_ceilings,
-    thread_speedups,
+    scaling,
 )
 from wmr_mujoco.validation import Prepared, run_scenario
 
@@ -57,9 +56,9 @@ def step_speed(robots: Sequence[str], repeats: int, rounds: int, nstep: int = 20
                target_s: float = TARGET_S) -> dict[str, dict[str, float]]:
     """Per robot, steps/s and real-time factor: ``mj_step`` loop, rollout 1 thread, all cores.
 
-    The rollout speedup is the median of ``rounds`` one-thread/all-core pairs, interleaved
-    across the robots (:mod:`wmr_mujoco.thread_scaling`), beside the machine's ceiling
-    measured the same way with processes.
+    The rollout speedup is the median of ``rounds`` one-thread/all-core pairs, beside the
+    machine's ceiling measured in the same rounds with processes
+    (:func:`wmr_mujoco.thread_scaling.scaling`).
     """
     out = {}
     for robot in robots:
@@ -76,10 +75,8 @@ def step_speed(robots: Sequence[str], repeats: int, rounds: int, nstep: int = 20
         dt = model.opt.timestep
         out[robot] = {"timestep": dt, "loop_steps_per_s": nstep / t_loop,
                       "loop_rtf": nstep * dt / t_loop}
-    threads = thread_speedups(robots, rounds, target_s=target_s)
-    ceilings = process_ceilings({r: t["nbatch"] for r, t in threads.items()}, rounds)
-    for robot in robots:
-        out[robot].update(threads[robot], process_ceiling=ceilings[robot])
+    for robot, figures in scaling(robots, rounds, target_s=target_s).items():
+        out[robot].update(figures)
     return out
 
 
@@ -258,11 +255,11 @@ def main(args: argparse.Namespace) -> int:
         "# Benchmarks", f"`wmr bench` on {os.cpu_count()} cores, MuJoCo {mujoco.__version__}; "
         f"medians of {repeats} repeats.", "## Stepping speed (default settings)", sp,
         f"Rollout columns: a batch of identical rollouts sized to about "
-        f"{TARGET_S:g} s on one thread; the speedup is the median of {pairs} "
-        "one-thread/all-core pairs, the robots taking turns so that the machine's drifts "
-        "in load fall on all alike. The machine ceiling is the same batch run by as many "
-        "processes as cores at once against one alone: what the hardware gives to fully "
-        "independent work, measured just after, and as noisy as the speedup.",
+        f"{TARGET_S:g} s on one thread, timed in fresh processes; the speedup is the "
+        f"median of {pairs} one-thread/all-core pairs, the robots taking turns. The "
+        "machine ceiling is the same batch run by as many processes as cores at once, "
+        "in the same rounds, against one thread alone: what the hardware gives to fully "
+        "independent work, as noisy as the speedup.",
         "## Accuracy against cost", acc, f"## Omni robot and the peer model ({len(trials)} "
         "open-loop trials, same run)", peer, "## Rendering, 640×480",
         f"{ren['no_shadows']:.1f} frames/s as `wmr render` draws (no shadows or "

@@ -2,18 +2,17 @@
 
 A batch of identical open-loop rollouts (the robot cruising on its first validation
 scenario's inputs) is timed on one thread and on all cores, alternately, and the speedup
-is the median of the per-pair ratios ``t₁ / t_N``. Each rollout is sized to take about
+is the median of the per-pair ratios ``t₁ / t_N``. Each batch is sized to take about
 ``target_s`` seconds on one thread, so thread start-up and scheduling jitter are small
 against the work, and its output arrays are allocated once (page faults would otherwise
 be timed too).
 
-The machine's own ceiling is measured the same way with processes instead of threads:
-one process runs the single-thread batch alone, then ``N`` processes run it at once
-(started together at a barrier); the ceiling is ``N t_alone / max(t_together)``. Threads
-sharing one process should do no better than processes sharing nothing, so it is the
-reference for the thread speedup, measured in the same run and as noisy as it; on a
-virtual machine it is often well below ``N`` (shared caches, memory bandwidth, clock
-boost, the hypervisor's other guests).
+The machine's own ceiling is measured in the same rounds with processes instead of
+threads: ``N`` processes run the single-thread batch at once (started together at a
+barrier), and the ceiling is ``N t₁ / max(t_together)``. Threads sharing one process
+should do no better than processes sharing nothing, so it is the reference for the
+thread speedup; on a virtual machine it is often well below ``N`` (shared caches, memory
+bandwidth, clock boost, the hypervisor's other guests). See :func:`scaling`.
 """
 
 from __future__ import annotations
@@ -95,136 +94,125 @@ def make_batch(robot: str, nbatch: int, nstep: int = NSTEP) -> Batch:
                  np.empty((nbatch, nstep, model.nsensordata)))
 
 
-def sized_batch(robot: str, threads: int, target_s: float = TARGET_S) -> Batch:
-    """A batch that takes about ``target_s`` on one thread, a multiple of ``threads`` long."""
-    probe = make_batch(robot, 2)
-    run = probe.runner(1)
-    run()
-    t0 = time.perf_counter()
-    run()
-    per_rollout = (time.perf_counter() - t0) / 2
-    nbatch = max(2, round(target_s / per_rollout / threads)) * threads
-    return make_batch(robot, nbatch)
-
-
 def _timed(fn: Callable[[], None]) -> float:
     t0 = time.perf_counter()
     fn()
     return time.perf_counter() - t0
 
 
-def paired_rounds(pairs: dict[str, tuple[Callable[[], None], Callable[[], None]]],
-                  rounds: int, warmup: bool = True) -> dict[str, tuple[float, float, float]]:
-    """Per key, median times of ``slow`` and ``fast`` and the median of per-pair ratios.
+def batch_size(robot: str, threads: int, target_s: float = TARGET_S) -> int:
+    """Rollouts in a batch that takes about ``target_s`` on one thread.
 
-    Each round runs every key's ``slow`` then ``fast``, so the machine's drifts in load
-    fall on both alike and on every key alike (after one warm-up of each, unless
-    ``warmup`` is False).
+    A multiple of ``threads``, at least two per thread.
     """
-    if rounds < 1:
-        raise ValueError(f"rounds = {rounds!r}; must be >= 1")
-    if warmup:
-        for slow, fast in pairs.values():
-            slow()
-            fast()
-    times: dict[str, tuple[list[float], list[float]]] = {k: ([], []) for k in pairs}
-    for _ in range(rounds):
-        for key, (slow, fast) in pairs.items():
-            times[key][0].append(_timed(slow))
-            times[key][1].append(_timed(fast))
-    return {k: (float(np.median(ts)), float(np.median(tf)),
-                float(np.median(np.divide(ts, tf)))) for k, (ts, tf) in times.items()}
+    probe = make_batch(robot, 2)
+    run = probe.runner(1)
+    run()
+    per_rollout = _timed(run) / 2
+    return max(2, round(target_s / per_rollout / threads)) * threads
 
 
 def paired_ratio(slow: Callable[[], None], fast: Callable[[], None], rounds: int,
                  warmup: bool = True) -> tuple[float, float, float]:
-    """:func:`paired_rounds` for one pair."""
-    return paired_rounds({"": (slow, fast)}, rounds, warmup)[""]
+    """Median times of ``slow`` and ``fast``, and the median of their per-pair ratios.
 
-
-def thread_speedups(robots: Sequence[str], rounds: int, threads: int | None = None,
-                    target_s: float = TARGET_S) -> dict[str, dict[str, float]]:
-    """Per robot, rollout steps/s on one thread and on ``threads``, and the speedup.
-
-    ``threads`` defaults to all cores; the speedup is the median of ``rounds`` pairs,
-    interleaved across the robots (:func:`paired_rounds`).
+    The two run alternately (after one warm-up each unless ``warmup`` is False), so the
+    machine's drifts in load fall on both alike.
     """
-    threads = threads or os.cpu_count() or 1
-    batches = {r: sized_batch(r, threads, target_s) for r in robots}
-    timed = paired_rounds({r: (b.runner(1), b.runner(threads)) for r, b in batches.items()},
-                          rounds)
-    out = {}
-    for robot, (t1, tn, speedup) in timed.items():
-        b = batches[robot]
-        dt = b.model.opt.timestep
-        out[robot] = {"nbatch": b.controls.shape[0], "threads": threads,
-                      "rollout1_steps_per_s": b.steps / t1,
-                      "rollout1_rtf": b.steps * dt / t1,
-                      "rolloutN_steps_per_s": b.steps / tn, "rollout_speedup": speedup}
-    return out
-
-
-def _ceiling_worker(rank: int, nbatch: dict[str, int], rounds: int,
-                    barrier: mp.synchronize.Barrier, results: mp.Queue) -> None:
-    runs = {robot: make_batch(robot, n).runner(1) for robot, n in nbatch.items()}
-    for run in runs.values():
-        run()
-    alone: dict[str, list[float]] = {r: [] for r in runs}
-    together: dict[str, list[float]] = {r: [] for r in runs}
-    for _ in range(rounds):
-        for robot, run in runs.items():
-            barrier.wait()
-            if rank == 0:
-                alone[robot].append(_timed(run))
-            barrier.wait()
-            together[robot].append(_timed(run))
-    results.put((rank, alone, together))
-
-
-def process_ceilings(nbatch: dict[str, int], rounds: int, processes: int | None = None
-                     ) -> dict[str, float]:
-    """Per robot, the median of ``N t_alone / max(t_together)`` over ``rounds`` rounds.
-
-    ``nbatch`` maps each robot to its batch size. Rounds interleave the robots, as in
-    :func:`thread_speedups`.
-
-    Raises:
-        ValueError: an unknown robot, or sizes below 1.
-        RuntimeError: a worker process failed (its exit code is named).
-    """
-    for robot, n in nbatch.items():
-        get_spec(robot)  # a bad name fails here, not in the workers
-        if n < 1:
-            raise ValueError(f"nbatch[{robot!r}] = {n!r}; must be >= 1")
     if rounds < 1:
         raise ValueError(f"rounds = {rounds!r}; must be >= 1")
-    processes = processes or os.cpu_count() or 1
+    if warmup:
+        slow()
+        fast()
+    ts, tf = [], []
+    for _ in range(rounds):
+        ts.append(_timed(slow))
+        tf.append(_timed(fast))
+    return float(np.median(ts)), float(np.median(tf)), float(np.median(np.divide(ts, tf)))
+
+
+def _scaling_worker(rank: int, nbatch: dict[str, int], rounds: int, nthread: int,
+                    barrier: mp.synchronize.Barrier, results: mp.Queue) -> None:
+    batches = {robot: make_batch(robot, n) for robot, n in nbatch.items()}
+    one = {robot: b.runner(1) for robot, b in batches.items()}
+    many = {robot: b.runner(nthread) for robot, b in batches.items()} if rank == 0 else {}
+    for fn in [*one.values(), *many.values()]:
+        fn()  # warm-up
+    times = {robot: {"alone": [], "threads": [], "together": []} for robot in batches}
+    for _ in range(rounds):
+        for robot in batches:
+            barrier.wait()
+            if rank == 0:
+                times[robot]["alone"].append(_timed(one[robot]))
+                times[robot]["threads"].append(_timed(many[robot]))
+            barrier.wait()
+            times[robot]["together"].append(_timed(one[robot]))
+    results.put((rank, times))
+
+
+def scaling(robots: Sequence[str], rounds: int, workers: int | None = None,
+            target_s: float = TARGET_S) -> dict[str, dict[str, float]]:
+    """Rollout thread speedup and the machine's process ceiling, measured side by side.
+
+    ``workers`` (default: all cores) fresh processes each build every robot's batch
+    (:func:`batch_size`). In every round, for each robot in turn: process 0 runs the batch
+    on one thread (``t₁``) and then on ``workers`` threads (``t_N``) while the others wait;
+    then all processes run it on one thread at once (``t_k``). Per robot::
+
+        thread speedup = median(t₁ / t_N)
+        process ceiling = median(N t₁ / max_k t_k)
+
+    Measuring in fresh processes keeps the harness's own state out of the figures, and
+    measuring both in the same rounds lets them share the machine's drifts in load.
+
+    Returns:
+        Per robot: ``nbatch``, ``threads``, ``rollout1_steps_per_s``, ``rollout1_rtf``,
+        ``rolloutN_steps_per_s``, ``rollout_speedup``, ``process_ceiling``.
+
+    Raises:
+        ValueError: an unknown robot, or ``rounds``/``workers`` below 1.
+        RuntimeError: a worker process failed (its exit code is named).
+    """
+    for robot in robots:
+        get_spec(robot)  # a bad name fails here, not in the workers
+    workers = workers or os.cpu_count() or 1
+    if rounds < 1 or workers < 1:
+        raise ValueError(f"rounds = {rounds!r}, workers = {workers!r}; both must be >= 1")
+    nbatch = {robot: batch_size(robot, workers, target_s) for robot in robots}
     ctx = mp.get_context("spawn")  # no fork of a process that may hold rollout threads
-    barrier, results = ctx.Barrier(processes), ctx.Queue()
-    workers = [ctx.Process(target=_ceiling_worker,
-                           args=(rank, dict(nbatch), rounds, barrier, results))
-               for rank in range(processes)]
-    for w in workers:
-        w.start()
-    got: dict[int, tuple[dict[str, list[float]], dict[str, list[float]]]] = {}
+    barrier, results = ctx.Barrier(workers), ctx.Queue()
+    procs = [ctx.Process(target=_scaling_worker,
+                         args=(rank, nbatch, rounds, workers, barrier, results))
+             for rank in range(workers)]
+    for p in procs:
+        p.start()
+    got: dict[int, dict[str, dict[str, list[float]]]] = {}
     try:
-        while len(got) < processes:
+        while len(got) < workers:
             try:
-                rank, alone, together = results.get(timeout=1.0)
-                got[rank] = (alone, together)
+                rank, times = results.get(timeout=1.0)
+                got[rank] = times
             except queue.Empty:
-                failed = [w.exitcode for w in workers if w.exitcode not in (None, 0)]
+                failed = [p.exitcode for p in procs if p.exitcode not in (None, 0)]
                 if failed:
-                    raise RuntimeError(f"ceiling worker processes exited with codes "
+                    raise RuntimeError(f"scaling worker processes exited with codes "
                                        f"{failed}") from None
     finally:
-        for w in workers:
-            w.join(timeout=10)
-            if w.is_alive():
-                w.terminate()
+        for p in procs:
+            p.join(timeout=10)
+            if p.is_alive():
+                p.terminate()
     out = {}
-    for robot in nbatch:
-        alone = np.asarray(got[0][0][robot])
-        together = np.max([got[r][1][robot] for r in range(processes)], axis=0)
-        out[robot] = float(np.median(processes * alone / together))
+    for robot in robots:
+        t1 = np.asarray(got[0][robot]["alone"])
+        tn = np.asarray(got[0][robot]["threads"])
+        together = np.max([got[r][robot]["together"] for r in range(workers)], axis=0)
+        steps = nbatch[robot] * NSTEP
+        dt = load(robot).opt.timestep
+        out[robot] = {"nbatch": nbatch[robot], "threads": workers,
+                      "rollout1_steps_per_s": steps / float(np.median(t1)),
+                      "rollout1_rtf": steps * dt / float(np.median(t1)),
+                      "rolloutN_steps_per_s": steps / float(np.median(tn)),
+                      "rollout_speedup": float(np.median(t1 / tn)),
+                      "process_ceiling": float(np.median(workers * t1 / together))}
     return out
