@@ -9,7 +9,7 @@ from wmr_mujoco.bench import median_time, step_speed
 
 
 def test_step_speed_reports_every_path():
-    res = step_speed(["disc", "bicycle"], repeats=1, rounds=1, nstep=200, target_s=0.02)
+    res = step_speed(["disc", "bicycle"], rounds=1, nstep=200, target_s=0.02)
     assert set(res) == {"disc", "bicycle"}
     for figures in res.values():
         assert set(figures) >= {"loop_steps_per_s", "rollout1_steps_per_s",

@@ -52,12 +52,13 @@ def median_time(fn: Callable[[], None], repeats: int) -> float:
     return float(np.median(times))
 
 
-def step_speed(robots: Sequence[str], repeats: int, rounds: int, nstep: int = 2000,
+def step_speed(robots: Sequence[str], rounds: int, nstep: int = 2000,
                target_s: float = TARGET_S) -> dict[str, dict[str, float]]:
     """Per robot, steps/s and real-time factor: ``mj_step`` loop, rollout 1 thread, all cores.
 
-    The rollout speedup is the median of ``rounds`` one-thread/all-core pairs, beside the
-    machine's ceiling measured in the same rounds with processes
+    The loop time is the median of ``rounds`` runs of ``nstep`` steps. The rollout speedup
+    is the median of ``rounds`` one-thread/all-core pairs, beside the machine's ceiling
+    measured in the same rounds with processes
     (:func:`wmr_mujoco.thread_scaling.scaling`).
     """
     out = {}
@@ -71,7 +72,7 @@ def step_speed(robots: Sequence[str], repeats: int, rounds: int, nstep: int = 20
             for _ in range(nstep):
                 mujoco.mj_step(model, d)
 
-        t_loop = median_time(loop, repeats)
+        t_loop = median_time(loop, rounds)
         dt = model.opt.timestep
         out[robot] = {"timestep": dt, "loop_steps_per_s": nstep / t_loop,
                       "loop_rtf": nstep * dt / t_loop}
@@ -215,7 +216,7 @@ def main(args: argparse.Namespace) -> int:
                                               "mujoco": mujoco.__version__}}
     print("stepping speed ...", file=sys.stderr, flush=True)
     pairs = 3 if args.quick else max(15, repeats)
-    speed = step_speed([r for r in ROBOTS if r != "disc_free"], repeats, pairs)
+    speed = step_speed([r for r in ROBOTS if r != "disc_free"], pairs)
     results["speed"] = speed
     print("accuracy against timestep ...", file=sys.stderr, flush=True)
     accuracy = {r: accuracy_vs_timestep(r, repeats) for r in ACCURACY_SCENARIOS}
@@ -253,7 +254,8 @@ def main(args: argparse.Namespace) -> int:
     ren = results["render"]
     text = "\n\n".join([
         "# Benchmarks", f"`wmr bench` on {os.cpu_count()} cores, MuJoCo {mujoco.__version__}; "
-        f"medians of {repeats} repeats.", "## Stepping speed (default settings)", sp,
+        f"medians of {repeats} repeats unless said.", "## Stepping speed (default settings)",
+        sp, f"The loop column is the median of {pairs} runs of 2000 steps.",
         f"Rollout columns: a batch of identical rollouts sized to about "
         f"{TARGET_S:g} s on one thread, timed in fresh processes; the speedup is the "
         f"median of {pairs} one-thread/all-core pairs, the robots taking turns. The "
