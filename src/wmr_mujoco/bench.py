@@ -41,9 +41,10 @@ TIMESTEPS = (0.0005, 0.001, 0.002, 0.004)
 ACCURACY_SCENARIOS = {"bicycle": "steady turn 0.3 rad", "omni3": "translate+rotate"}
 
 
-def median_time(fn: Callable[[], None], repeats: int) -> float:
-    """Median wall time of ``fn()`` over ``repeats`` runs (after one warm-up)."""
-    fn()
+def median_time(fn: Callable[[], None], repeats: int, warmup: bool = True) -> float:
+    """Median wall time of ``fn()`` over ``repeats`` runs (after one warm-up if ``warmup``)."""
+    if warmup:
+        fn()
     times = []
     for _ in range(repeats):
         t0 = time.perf_counter()
@@ -140,12 +141,7 @@ def validate_wall_time(repeats: int) -> float:
         if proc.returncode != 0:
             raise RuntimeError(f"wmr validate exited with {proc.returncode}: "
                                f"{(proc.stdout + proc.stderr)[-500:]}")
-    times = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        run()
-        times.append(time.perf_counter() - t0)
-    return float(np.median(times))
+    return median_time(run, repeats, warmup=False)
 
 
 def validation_engines(repeats: int) -> dict[str, float]:
