@@ -19,6 +19,7 @@ import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.integrate import integrate
+from wmr_mujoco.scenarios import OMNI_DIRECTIONS_DEG, OMNI_SPEED, OMNI_YAW_RATE
 from wmr_mujoco.simulation import check_healthy
 
 
@@ -45,11 +46,16 @@ class OmniTrial:
         return np.asarray(self.twist, float) * float(np.clip(t / self.ramp, 0.0, 1.0))
 
 
-def standard_trials(speed: float = 0.3, yaw_rate: float = 1.0) -> list[OmniTrial]:
-    """Translations in 8 directions, pure rotation, and two translation+rotation trials."""
+def standard_trials(speed: float = OMNI_SPEED, yaw_rate: float = OMNI_YAW_RATE
+                    ) -> list[OmniTrial]:
+    """Translations in 8 directions, pure rotation, and two translation+rotation trials.
+
+    The manoeuvres of the omni validation scenarios (:mod:`wmr_mujoco.scenarios`), held
+    for 5 s instead of 10, plus a diagonal translation with rotation.
+    """
     trials = [OmniTrial(f"translate {deg:>3d}°", (speed * np.cos(np.radians(deg)),
                                                   speed * np.sin(np.radians(deg)), 0.0))
-              for deg in range(0, 360, 45)]
+              for deg in OMNI_DIRECTIONS_DEG]
     trials.append(OmniTrial("rotate", (0.0, 0.0, yaw_rate)))
     trials.append(OmniTrial("translate+rotate", (speed, 0.0, 0.5 * yaw_rate)))
     trials.append(OmniTrial("diagonal+rotate", (-0.6 * speed, 0.6 * speed, -yaw_rate)))

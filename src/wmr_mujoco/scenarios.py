@@ -23,6 +23,12 @@ ROLLER_RATE_PCT = 5.0
 OMNI_VELOCITY_PCT = 3.0
 WHEEL_ACCEL_PCT = 1.0
 
+#: Omni open-loop manoeuvres, shared with :mod:`wmr_mujoco.omni_trials`: translation
+#: directions (degrees in the body frame), speed (m/s) and yaw rate (rad/s).
+OMNI_DIRECTIONS_DEG = tuple(range(0, 360, 45))
+OMNI_SPEED = 0.3
+OMNI_YAW_RATE = 1.0
+
 
 @dataclass(frozen=True)
 class Scenario:
@@ -76,7 +82,7 @@ def _square_with_rotation(side: float = 0.6, speed: float = 0.24, yaw_rate: floa
     return (Piecewise(tuple(xs)), Piecewise(tuple(ys)), const(yaw_rate, 0.5))
 
 
-def _omni_translation(deg: int, speed: float = 0.3) -> tuple[Signal, ...]:
+def _omni_translation(deg: int, speed: float = OMNI_SPEED) -> tuple[Signal, ...]:
     a = math.radians(deg)
     return (const(speed * math.cos(a), 0.5), const(speed * math.sin(a), 0.5), const(0.0))
 
@@ -103,9 +109,10 @@ SCENARIOS: tuple[Scenario, ...] = (
         (1.0, 1.5, 1.0), (5.7, 6.7, -1.0))), duration=12.0),
     # Omni: inputs (u, v, r) in the body frame, or world rates.
     *(Scenario("omni3", f"translate {deg}°", _omni_translation(deg))
-      for deg in range(0, 360, 45)),
-    Scenario("omni3", "rotate", (const(0.0), const(0.0), const(1.0, 0.5))),
-    Scenario("omni3", "translate+rotate", (const(0.3, 0.5), const(0.0), const(0.5, 0.5))),
+      for deg in OMNI_DIRECTIONS_DEG),
+    Scenario("omni3", "rotate", (const(0.0), const(0.0), const(OMNI_YAW_RATE, 0.5))),
+    Scenario("omni3", "translate+rotate", (const(OMNI_SPEED, 0.5), const(0.0),
+                                           const(0.5 * OMNI_YAW_RATE, 0.5))),
     Scenario("omni3", "square with rotation", _square_with_rotation(), world_frame=True),
     Scenario("omni3", "torque", (const(0.04), const(-0.03), const(0.01)), duration=2.0,
              kind="dynamic"),
