@@ -1,0 +1,320 @@
+"""The Whipple bicycle's eigenvalues and self-stability measured from the MuJoCo physics.
+
+Method (linearisation of the simulator's own step map):
+
+1. Steady rolling: the model starts upright at speed ``v`` with wheel rates ``v / r`` and
+   rolls for ``settle_time`` so that the soft contacts reach their equilibrium
+   penetration. By the bicycle's mirror symmetry the lateral states stay zero (to
+   round-off); they are set to exactly zero.
+2. ``mujoco.mjd_transitionFD`` (centred differences, ``eps``) gives the one-step map
+   ``δx⁺ = A δx`` in MuJoCo's tangent space ``x = (δq, δq̇)`` (free-joint rotation as a
+   body-frame rotation vector, linear velocity in the world frame).
+3. Mirror symmetry splits ``A`` into a symmetric (pitch, bounce, forward speed, wheel spin)
+   and an antisymmetric (lateral) block. The lateral block is expressed with the
+   BODY-frame lateral velocity ``u = v_y - v ψ`` (ψ the yaw); in those coordinates the
+   lateral position ``y`` and the yaw ψ are cyclic (the physics is invariant under
+   translation and rotation about the vertical), so their columns hold nothing but the
+   identity and they are dropped. What remains, ``x_r = (φ, δ, u, ω_x, ω_z, δ̇)``, has six
+   eigenvalues ``μ``; ``s = log(μ) / Δt``.
+4. Of the six, two are the soft contacts' lateral slip ("tyre") modes, absent from the
+   knife-edge benchmark. They are told apart by their eigenvectors: in a benchmark mode
+   the wheels roll without slipping, so the lateral velocity of each contact point is
+   small beside that of its wheel centre; in a tyre mode slipping is the motion. The four
+   modes of least slip fraction are the benchmark's; among them a complex pair is weave,
+   the more negative real one castering and the other capsize
+   (:func:`wmr_mujoco.analytic.whipple.classify`).
+
+The nonlinear check pushes the rolling bicycle sideways (a lean-rate impulse) and follows
+its lean for ``duration`` seconds without any control.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+
+import mujoco
+import numpy as np
+from scipy.optimize import brentq
+
+from wmr_mujoco.analytic import whipple as analytic
+from wmr_mujoco.builders import whipple as builder
+from wmr_mujoco.builders.common import to_xml
+from wmr_mujoco.builders.scene import add_scene
+from wmr_mujoco.whipple_params import WhippleParams
+
+#: Rolling time before linearising: many contact time constants, s.
+SETTLE_TIME = 0.3
+#: Finite-difference step of ``mjd_transitionFD``.
+FD_EPS = 1e-6
+#: Tangent indices (nv = 9): free joint (v_x, v_y, v_z, ω_x, ω_y, ω_z), then
+#: rear wheel, steer, front wheel.
+_Y, _ROLL, _YAW, _STEER = 1, 3, 5, 7
+_NV = 9
+
+
+def compile_model(params: WhippleParams = WhippleParams()) -> mujoco.MjModel:
+    """The bicycle on the project's floor, compiled."""
+    root = builder.build(params)
+    add_scene(root)
+    return mujoco.MjModel.from_xml_string(to_xml(root))
+
+
+def steady_rolling(model: mujoco.MjModel, params: WhippleParams, speed: float,
+                   settle_time: float = SETTLE_TIME) -> mujoco.MjData:
+    """Upright straight rolling at ``speed`` after the contacts have settled.
+
+    Raises:
+        ValueError: ``speed`` is negative or above 30 m/s.
+        RuntimeError: the run diverged while settling.
+    """
+    if not (math.isfinite(speed) and 0.0 <= speed <= 30.0):
+        raise ValueError(f"speed = {speed!r} m/s; valid range is [0, 30]")
+    data = mujoco.MjData(model)
+    data.qpos[:], data.qvel[:] = builder.rolling_state(params, speed)
+    for _ in range(int(round(settle_time / model.opt.timestep))):
+        mujoco.mj_step(model, data)
+    if not np.all(np.isfinite(data.qpos)) or not np.all(np.isfinite(data.qvel)):
+        raise RuntimeError(f"whipple model diverged while settling at {speed} m/s")
+    # Remove the round-off in the lateral states (mirror symmetry keeps them zero).
+    w, x, y, z = data.qpos[3:7]
+    pitch = 2.0 * math.atan2(y, w)
+    data.qpos[3:7] = (math.cos(pitch / 2), 0.0, math.sin(pitch / 2), 0.0)
+    data.qpos[1] = 0.0
+    data.qpos[8] = 0.0
+    data.qvel[[_Y, _ROLL, _YAW, _STEER]] = 0.0
+    mujoco.mj_forward(model, data)
+    return data
+
+
+def step_map(model: mujoco.MjModel, data: mujoco.MjData, eps: float = FD_EPS
+             ) -> np.ndarray:
+    """``A`` of ``δx⁺ = A δx`` by centred finite differences (``mjd_transitionFD``)."""
+    n = 2 * model.nv + model.na
+    a = np.zeros((n, n))
+    mujoco.mjd_transitionFD(model, data, eps, True, a, None, None, None)
+    return a
+
+
+def continuous_eigenvalues(a: np.ndarray, dt: float) -> np.ndarray:
+    """``s = log(μ) / Δt`` for the eigenvalues ``μ`` of a one-step map."""
+    return np.log(np.linalg.eigvals(a).astype(complex)) / dt
+
+
+def lateral_block(a: np.ndarray, speed: float) -> tuple[np.ndarray, np.ndarray]:
+    """The reduced lateral map ``A_r`` on ``(φ, δ, u, ω_x, ω_z, δ̇)``, and the part of
+    the full map that couples the dropped cyclic coordinates (y, ψ) into it (ideally 0).
+
+    With ``u = v_y - v ψ`` (body-frame lateral velocity at yaw ψ), the change of
+    coordinates ``T`` is the identity except ``T[u, ψ] = -v``; ``A' = T A T⁻¹``.
+    """
+    n = a.shape[0]
+    t = np.eye(n)
+    t[_NV + _Y, _YAW] = -speed
+    a2 = t @ a @ np.linalg.inv(t)
+    keep = [_ROLL, _STEER, _NV + _Y, _NV + _ROLL, _NV + _YAW, _NV + _STEER]
+    cyclic = [_Y, _YAW]
+    return a2[np.ix_(keep, keep)], a2[np.ix_(keep, cyclic)]
+
+
+def _lateral_velocities(model: mujoco.MjModel, data: mujoco.MjData,
+                        x_r: np.ndarray, eps: float) -> np.ndarray:
+    """Lateral velocities ``(slip_R, slip_F, centre_R, centre_F)`` per unit of the reduced
+    perturbation ``x_r = (φ, δ, u, ω_x, ω_z, δ̇)`` (real), by a finite difference.
+
+    Slip: velocity of the wheel's material point at the contact along the wheel's
+    horizontal axle direction (zero when rolling without slip); centre: the same
+    component of the wheel centre's velocity.
+    """
+    def sample(scale: float) -> np.ndarray:
+        d = mujoco.MjData(model)
+        d.qpos[:] = data.qpos
+        d.qvel[:] = data.qvel
+        dq = np.zeros(model.nv)
+        dq[_ROLL], dq[_STEER] = scale * x_r[0], scale * x_r[1]
+        mujoco.mj_integratePos(model, d.qpos, dq, 1.0)
+        d.qvel[[_Y, _ROLL, _YAW, _STEER]] += scale * x_r[2:]
+        mujoco.mj_forward(model, d)
+        out = []
+        jac = np.zeros((3, model.nv))
+        for which in ("contact", "centre"):
+            for name in ("rear_wheel", "front_wheel"):
+                body = model.body(name).id
+                geom = model.geom(f"{name}_collision").id
+                if which == "contact":
+                    hits = [c.pos for c in d.contact[:d.ncon] if geom in (c.geom1, c.geom2)]
+                    if not hits:
+                        raise RuntimeError(f"{name} is not touching the floor")
+                    point = hits[0]
+                else:
+                    point = d.xpos[body]
+                mujoco.mj_jac(model, d, jac, None, point, body)
+                axle = d.xmat[body].reshape(3, 3)[:, 1].copy()
+                axle[2] = 0.0
+                axle /= np.linalg.norm(axle)
+                out.append(float(axle @ (jac @ d.qvel)))
+        return np.array(out)
+
+    return (sample(eps) - sample(-eps)) / (2.0 * eps)
+
+
+def _slip_fractions(model: mujoco.MjModel, data: mujoco.MjData,
+                    vectors: np.ndarray, eps: float = 1e-6) -> np.ndarray:
+    """Per eigenvector: ``Σ|slip| / (Σ|slip| + Σ|centre|)`` over both wheels (0: rolling
+    without slip, → 1: slipping only); complex vectors combine real and imaginary parts."""
+    frac = np.zeros(vectors.shape[1])
+    for k in range(vectors.shape[1]):
+        vec = vectors[:, k] / np.abs(vectors[:, k]).max()
+        parts = [_lateral_velocities(model, data, part, eps)
+                 for part in (vec.real, vec.imag) if np.abs(part).max() > 0.0]
+        mags = np.sqrt(sum(part**2 for part in parts))
+        slip, centre = mags[:2].sum(), mags[2:].sum()
+        frac[k] = slip / (slip + centre)
+    return frac
+
+
+@dataclass(frozen=True)
+class MeasuredModes:
+    """Eigenvalues measured at one speed.
+
+    Attributes:
+        speed: forward speed of the rear axle after settling, m/s.
+        all_eigenvalues: the six lateral eigenvalues ``s``, s⁻¹.
+        slip_fractions: slip fraction of each (same order).
+        benchmark: the four picked as the benchmark's, sorted by real part.
+        modes: their names (weave, capsize, castering).
+        cyclic_coupling: largest entry coupling y, ψ into the kept states (ideally 0).
+    """
+
+    speed: float
+    all_eigenvalues: np.ndarray
+    slip_fractions: np.ndarray
+    benchmark: np.ndarray
+    modes: analytic.Modes
+    cyclic_coupling: float
+
+
+def measure_modes(params: WhippleParams, speed: float,
+                  model: mujoco.MjModel | None = None) -> MeasuredModes:
+    """The bicycle's lateral eigenvalues at ``speed`` from the simulator's step map."""
+    model = compile_model(params) if model is None else model
+    data = steady_rolling(model, params, speed)
+    v = float(data.qvel[0])
+    a_r, coupling = lateral_block(step_map(model, data), v)
+    mu, vec = np.linalg.eig(a_r)
+    s = np.log(mu.astype(complex)) / model.opt.timestep
+    frac = _slip_fractions(model, data, vec)
+    pick = np.argsort(frac)[:4]
+    bench = s[pick]
+    bench = bench[np.lexsort((bench.imag, bench.real))]
+    return MeasuredModes(speed=v, all_eigenvalues=s, slip_fractions=frac, benchmark=bench,
+                         modes=analytic.classify(bench, imag_tol=1e-6),
+                         cyclic_coupling=float(np.abs(coupling).max()))
+
+
+def weave_speed(params: WhippleParams, bracket: tuple[float, float] = (3.8, 4.8),
+                xtol: float = 1e-5) -> float:
+    """Speed where the measured weave pair's real part crosses zero (brentq), m/s."""
+    model = compile_model(params)
+    return brentq(lambda v: measure_modes(params, v, model).modes.weave.real, *bracket,
+                  xtol=xtol)
+
+
+def capsize_speed(params: WhippleParams, bracket: tuple[float, float] = (5.5, 6.6),
+                  xtol: float = 1e-5) -> float:
+    """Speed where the measured capsize eigenvalue crosses zero (brentq), m/s."""
+    model = compile_model(params)
+    return brentq(lambda v: measure_modes(params, v, model).modes.capsize, *bracket,
+                  xtol=xtol)
+
+
+def lean_angle(quat: np.ndarray) -> float:
+    """Lean φ (positive to the right) of the rear frame: ``asin`` of the body y axis's
+    downward... z component, ``φ = asin(R[2, 1])`` with R the body-to-world rotation."""
+    mat = np.zeros(9)
+    mujoco.mju_quat2Mat(mat, quat)
+    return math.asin(max(-1.0, min(1.0, mat[7])))
+
+
+@dataclass(frozen=True)
+class PushResponse:
+    """Lean after a sideways push.
+
+    Attributes:
+        speed: forward speed before the push, m/s.
+        time: sample times after the push, s.
+        lean: lean angle φ, rad.
+        peak: largest |φ| over the run, rad.
+        final_ratio: largest |φ| over the last ``window`` seconds over the peak.
+        wall_time: wall-clock time of the run, s.
+    """
+
+    speed: float
+    time: np.ndarray
+    lean: np.ndarray
+    peak: float
+    final_ratio: float
+    wall_time: float
+
+
+def push_response(params: WhippleParams, speed: float, lean_rate: float = 0.5,
+                  duration: float = 10.0, window: float = 2.0,
+                  model: mujoco.MjModel | None = None) -> PushResponse:
+    """Roll at ``speed``, add ``lean_rate`` (rad/s) to the roll rate, and follow the lean.
+
+    The run stops early if the bicycle falls (|φ| > 1.2 rad); a non-finite state raises.
+    """
+    if not (math.isfinite(lean_rate) and 0.0 < abs(lean_rate) <= 5.0):
+        raise ValueError(f"lean_rate = {lean_rate!r} rad/s; valid range is (0, 5] in size")
+    model = compile_model(params) if model is None else model
+    data = steady_rolling(model, params, speed)
+    data.qvel[_ROLL] += lean_rate
+    dt = model.opt.timestep
+    n = int(round(duration / dt))
+    every = max(1, int(round(0.01 / dt)))
+    times, leans = [], []
+    t0 = time.perf_counter()
+    for k in range(n + 1):
+        if k % every == 0:
+            times.append(k * dt)
+            leans.append(lean_angle(data.qpos[3:7]))
+            if abs(leans[-1]) > 1.2:
+                break
+        mujoco.mj_step(model, data)
+    wall = time.perf_counter() - t0
+    if not np.all(np.isfinite(data.qpos)):
+        raise RuntimeError(f"whipple push run diverged at {speed} m/s")
+    t = np.array(times)
+    lean = np.array(leans)
+    peak = float(np.abs(lean).max())
+    late = np.abs(lean[t >= t[-1] - window]).max()
+    return PushResponse(speed=speed, time=t, lean=lean, peak=peak,
+                        final_ratio=float(late / peak), wall_time=wall)
+
+
+def real_time_factor(params: WhippleParams, duration: float = 5.0) -> float:
+    """Simulated over wall-clock time of steady rolling at 5 m/s (one thread)."""
+    model = compile_model(params)
+    data = mujoco.MjData(model)
+    data.qpos[:], data.qvel[:] = builder.rolling_state(params, 5.0)
+    n = int(round(duration / model.opt.timestep))
+    t0 = time.perf_counter()
+    for _ in range(n):
+        mujoco.mj_step(model, data)
+    return duration / (time.perf_counter() - t0)
+
+
+def with_sim(params: WhippleParams, **changes: object) -> WhippleParams:
+    """``params`` with some simulation settings changed."""
+    return replace(params, sim=replace(params.sim, **changes))
+
+
+def eigen_table(params: WhippleParams, speeds: Sequence[float]
+                ) -> list[tuple[float, analytic.Modes, analytic.Modes]]:
+    """``(v, measured modes, benchmark modes)`` at each speed."""
+    model = compile_model(params)
+    mats = analytic.matrices(params)
+    return [(v, measure_modes(params, v, model).modes, analytic.modes(v, mats))
+            for v in speeds]
