@@ -17,12 +17,14 @@ Method (linearisation of the simulator's own step map):
    identity and they are dropped. What remains, ``x_r = (φ, δ, u, ω_x, ω_z, δ̇)``, has six
    eigenvalues ``μ``; ``s = log(μ) / Δt``.
 4. Of the six, two are the soft contacts' lateral slip ("tyre") modes, absent from the
-   knife-edge benchmark. They are told apart by their eigenvectors: in a benchmark mode
-   the wheels roll without slipping, so the lateral velocity of each contact point is
-   small beside that of its wheel centre; in a tyre mode slipping is the motion. The four
-   modes of least slip fraction are the benchmark's; among them a complex pair is weave,
-   the more negative real one castering and the other capsize
-   (:func:`wmr_mujoco.analytic.whipple.classify`).
+   knife-edge benchmark: the friction constraint removes a slip velocity at the rate
+   ``b = 2 / (d τ_c)`` of its reference, so these modes live on the contact's own time
+   scale (``|s| τ_c`` of order 1 or more; measured ≥ 2). The benchmark's four modes are
+   those much slower than the contact, ``|s| τ_c < SLOW_LIMIT``; exactly four must be
+   (otherwise the measurement raises). Among them a complex pair is weave, the more
+   negative real one castering and the other capsize
+   (:func:`wmr_mujoco.analytic.whipple.classify`). Their eigenvectors are reported: the
+   lean/steer part ``(φ, δ)`` carries the mode (``lean_steer_share``).
 
 The nonlinear check pushes the rolling bicycle sideways (a lean-rate impulse) and follows
 its lean for ``duration`` seconds without any control.
@@ -91,11 +93,50 @@ def steady_rolling(model: mujoco.MjModel, params: WhippleParams, speed: float,
 
 def step_map(model: mujoco.MjModel, data: mujoco.MjData, eps: float = FD_EPS
              ) -> np.ndarray:
-    """``A`` of ``δx⁺ = A δx`` by centred finite differences (``mjd_transitionFD``)."""
+    """``A`` of ``δx⁺ = A δx`` by centred finite differences.
+
+    ``mujoco.mjd_transitionFD`` where it applies; MuJoCo 3.17 refuses the RK4 integrator
+    there, so for RK4 the same centred differences are taken here with ``mj_step``
+    (:func:`step_map_direct`).
+    """
+    if model.opt.integrator == mujoco.mjtIntegrator.mjINT_RK4:
+        return step_map_direct(model, data, eps)
     n = 2 * model.nv + model.na
     a = np.zeros((n, n))
     mujoco.mjd_transitionFD(model, data, eps, True, a, None, None, None)
     return a
+
+
+def step_map_direct(model: mujoco.MjModel, data: mujoco.MjData, eps: float = FD_EPS
+                    ) -> np.ndarray:
+    """Centred finite differences of one ``mj_step`` in the tangent space ``(δq, δq̇)``.
+
+    Column ``j``: ``(x⁺(x + ε e_j) ⊖ x⁺(x - ε e_j)) / 2ε``, positions differenced with
+    ``mj_differentiatePos`` (quaternions on their tangent space). No actuator state.
+    """
+    nv = model.nv
+    work = mujoco.MjData(model)
+    out = np.zeros((2 * nv, 2 * nv))
+
+    def step_from(k: int, h: float) -> tuple[np.ndarray, np.ndarray]:
+        mujoco.mj_copyData(work, model, data)
+        if k < nv:
+            dq = np.zeros(nv)
+            dq[k] = h
+            mujoco.mj_integratePos(model, work.qpos, dq, 1.0)
+        else:
+            work.qvel[k - nv] += h
+        mujoco.mj_step(model, work)
+        return work.qpos.copy(), work.qvel.copy()
+
+    for k in range(2 * nv):
+        qp, vp = step_from(k, eps)
+        qm, vm = step_from(k, -eps)
+        dq = np.zeros(nv)
+        mujoco.mj_differentiatePos(model, dq, 1.0, qm, qp)
+        out[:nv, k] = dq / (2.0 * eps)
+        out[nv:, k] = (vp - vm) / (2.0 * eps)
+    return out
 
 
 def continuous_eigenvalues(a: np.ndarray, dt: float) -> np.ndarray:
@@ -119,60 +160,14 @@ def lateral_block(a: np.ndarray, speed: float) -> tuple[np.ndarray, np.ndarray]:
     return a2[np.ix_(keep, keep)], a2[np.ix_(keep, cyclic)]
 
 
-def _lateral_velocities(model: mujoco.MjModel, data: mujoco.MjData,
-                        x_r: np.ndarray, eps: float) -> np.ndarray:
-    """Lateral velocities ``(slip_R, slip_F, centre_R, centre_F)`` per unit of the reduced
-    perturbation ``x_r = (φ, δ, u, ω_x, ω_z, δ̇)`` (real), by a finite difference.
-
-    Slip: velocity of the wheel's material point at the contact along the wheel's
-    horizontal axle direction (zero when rolling without slip); centre: the same
-    component of the wheel centre's velocity.
-    """
-    def sample(scale: float) -> np.ndarray:
-        d = mujoco.MjData(model)
-        d.qpos[:] = data.qpos
-        d.qvel[:] = data.qvel
-        dq = np.zeros(model.nv)
-        dq[_ROLL], dq[_STEER] = scale * x_r[0], scale * x_r[1]
-        mujoco.mj_integratePos(model, d.qpos, dq, 1.0)
-        d.qvel[[_Y, _ROLL, _YAW, _STEER]] += scale * x_r[2:]
-        mujoco.mj_forward(model, d)
-        out = []
-        jac = np.zeros((3, model.nv))
-        for which in ("contact", "centre"):
-            for name in ("rear_wheel", "front_wheel"):
-                body = model.body(name).id
-                geom = model.geom(f"{name}_collision").id
-                if which == "contact":
-                    hits = [c.pos for c in d.contact[:d.ncon] if geom in (c.geom1, c.geom2)]
-                    if not hits:
-                        raise RuntimeError(f"{name} is not touching the floor")
-                    point = hits[0]
-                else:
-                    point = d.xpos[body]
-                mujoco.mj_jac(model, d, jac, None, point, body)
-                axle = d.xmat[body].reshape(3, 3)[:, 1].copy()
-                axle[2] = 0.0
-                axle /= np.linalg.norm(axle)
-                out.append(float(axle @ (jac @ d.qvel)))
-        return np.array(out)
-
-    return (sample(eps) - sample(-eps)) / (2.0 * eps)
+#: A benchmark mode is slower than the contact: ``|s| τ_c`` below this.
+SLOW_LIMIT = 0.25
 
 
-def _slip_fractions(model: mujoco.MjModel, data: mujoco.MjData,
-                    vectors: np.ndarray, eps: float = 1e-6) -> np.ndarray:
-    """Per eigenvector: ``Σ|slip| / (Σ|slip| + Σ|centre|)`` over both wheels (0: rolling
-    without slip, → 1: slipping only); complex vectors combine real and imaginary parts."""
-    frac = np.zeros(vectors.shape[1])
-    for k in range(vectors.shape[1]):
-        vec = vectors[:, k] / np.abs(vectors[:, k]).max()
-        parts = [_lateral_velocities(model, data, part, eps)
-                 for part in (vec.real, vec.imag) if np.abs(part).max() > 0.0]
-        mags = np.sqrt(sum(part**2 for part in parts))
-        slip, centre = mags[:2].sum(), mags[2:].sum()
-        frac[k] = slip / (slip + centre)
-    return frac
+def contact_time_constant(model: mujoco.MjModel) -> float:
+    """The contact's time constant as MuJoCo uses it: ``max(solref[0], 2 Δt)``, s."""
+    geom = model.geom("rear_wheel_collision").id
+    return max(float(model.geom_solref[geom, 0]), 2.0 * model.opt.timestep)
 
 
 @dataclass(frozen=True)
@@ -182,7 +177,9 @@ class MeasuredModes:
     Attributes:
         speed: forward speed of the rear axle after settling, m/s.
         all_eigenvalues: the six lateral eigenvalues ``s``, s⁻¹.
-        slip_fractions: slip fraction of each (same order).
+        slowness: ``|s| τ_c`` of each (same order).
+        lean_steer_share: of each eigenvector scaled to the state's natural units
+            (angles, and rates over ``|s|``), the share of ``(φ, δ)``.
         benchmark: the four picked as the benchmark's, sorted by real part.
         modes: their names (weave, capsize, castering).
         cyclic_coupling: largest entry coupling y, ψ into the kept states (ideally 0).
@@ -190,7 +187,8 @@ class MeasuredModes:
 
     speed: float
     all_eigenvalues: np.ndarray
-    slip_fractions: np.ndarray
+    slowness: np.ndarray
+    lean_steer_share: np.ndarray
     benchmark: np.ndarray
     modes: analytic.Modes
     cyclic_coupling: float
@@ -205,11 +203,21 @@ def measure_modes(params: WhippleParams, speed: float,
     a_r, coupling = lateral_block(step_map(model, data), v)
     mu, vec = np.linalg.eig(a_r)
     s = np.log(mu.astype(complex)) / model.opt.timestep
-    frac = _slip_fractions(model, data, vec)
-    pick = np.argsort(frac)[:4]
+    slowness = np.abs(s) * contact_time_constant(model)
+    pick = np.flatnonzero(slowness < SLOW_LIMIT)
+    if len(pick) != 4:
+        raise RuntimeError(f"{len(pick)} modes slower than the contact at {v:.3f} m/s "
+                           f"(|s| τ_c = {np.round(slowness, 3).tolist()}); expected 4")
+    # Position-level share: angles (φ, δ) against the kinematic angles the rates
+    # would sweep in one time constant 1/|s| (u over the wheelbase as an angle).
+    scaled = np.abs(vec.copy())
+    scaled[2] /= params.wheelbase
+    scaled[2:] /= np.maximum(np.abs(s), 1e-9)
+    share = scaled[:2].sum(axis=0) / scaled.sum(axis=0)
     bench = s[pick]
     bench = bench[np.lexsort((bench.imag, bench.real))]
-    return MeasuredModes(speed=v, all_eigenvalues=s, slip_fractions=frac, benchmark=bench,
+    return MeasuredModes(speed=v, all_eigenvalues=s, slowness=slowness,
+                         lean_steer_share=share, benchmark=bench,
                          modes=analytic.classify(bench, imag_tol=1e-6),
                          cyclic_coupling=float(np.abs(coupling).max()))
 
@@ -262,7 +270,8 @@ class PushResponse:
 def push_response(params: WhippleParams, speed: float, lean_rate: float = 0.5,
                   duration: float = 10.0, window: float = 2.0,
                   model: mujoco.MjModel | None = None) -> PushResponse:
-    """Roll at ``speed``, add ``lean_rate`` (rad/s) to the roll rate, and follow the lean.
+    """Roll at ``speed``, push (lean rate ``lean_rate`` about the ground line, rad/s), and
+    follow the lean for ``duration`` s without control.
 
     The run stops early if the bicycle falls (|φ| > 1.2 rad); a non-finite state raises.
     """
@@ -270,7 +279,10 @@ def push_response(params: WhippleParams, speed: float, lean_rate: float = 0.5,
         raise ValueError(f"lean_rate = {lean_rate!r} rad/s; valid range is (0, 5] in size")
     model = compile_model(params) if model is None else model
     data = steady_rolling(model, params, speed)
+    # A lean rate about the ground line (through both contacts), as the benchmark's φ̇:
+    # ω_x at the rear frame and, at the rear axle (height z), v_y = -ω_x z.
     data.qvel[_ROLL] += lean_rate
+    data.qvel[_Y] -= lean_rate * data.qpos[2]
     dt = model.opt.timestep
     n = int(round(duration / dt))
     every = max(1, int(round(0.01 / dt)))

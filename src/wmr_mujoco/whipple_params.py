@@ -49,10 +49,10 @@ class WhippleSimParams:
     """
 
     timestep: float = 0.001
-    integrator: str = "implicit"
+    integrator: str = "implicitfast"
     contact_timeconst: float = 0.002
     contact_dampratio: float = 1.0
-    impratio: float = 100.0
+    impratio: float = 10.0
     solimp_dmax: float = 0.99
     friction: float = 1.0
     wheel_half_width: float = 0.005
