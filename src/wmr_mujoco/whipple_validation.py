@@ -204,16 +204,20 @@ def write_figure(path: Path, series: dict[str, np.ndarray]) -> Path:
 
     fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
     v, eig = series["curve_v"], series["curve_eig"]
-    ax.plot(v, eig.real, "k-", lw=1.2)
-    ax.plot(v, np.abs(eig.imag), "k--", lw=0.8)
+    # Dots, not lines: the four branches cross and change order with speed.
+    vv = np.repeat(v[:, None], eig.shape[1], axis=1)
+    ax.plot(vv.ravel(), eig.real.ravel(), "k.", ms=1.5)
+    has_im = np.abs(eig.imag) > 1e-9
+    ax.plot(vv[has_im], np.abs(eig.imag[has_im]), ".", color="0.55", ms=1.5)
     pv, pe = series["physics_v"], series["physics_eig"]
     for k in range(pe.shape[1]):
         ax.plot(pv, pe[:, k].real, "o", color="tab:red", ms=4,
                 label="MuJoCo, real part" if k == 0 else None)
-        ax.plot(pv, np.abs(pe[:, k].imag), "s", color="tab:blue", ms=3, mfc="none",
+        im = np.abs(pe[:, k].imag) > 1e-9
+        ax.plot(pv[im], np.abs(pe[im, k].imag), "s", color="tab:blue", ms=4, mfc="none",
                 label="MuJoCo, |imaginary part|" if k == 0 else None)
     ax.plot([], [], "k-", label="benchmark, real part")
-    ax.plot([], [], "k--", label="benchmark, |imaginary part|")
+    ax.plot([], [], "-", color="0.55", label="benchmark, |imaginary part|")
     ax.set_ylim(-10, 10)
     ax.set_xlim(v[0], v[-1])
     ax.axhline(0.0, color="0.6", lw=0.5)
