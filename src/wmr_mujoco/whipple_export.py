@@ -21,7 +21,7 @@ from wmr_mujoco.builders import whipple as builder
 from wmr_mujoco.markers import replace_between
 from wmr_mujoco.paths import MODELS_DIR
 from wmr_mujoco.whipple_measure import real_time_factor
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
 from wmr_mujoco.whipple_validation import (
     TABLE_SPEEDS,
     all_metrics,
@@ -57,7 +57,7 @@ def _fmt(z: complex | float) -> str:
     return f"{z.real:.4f}"
 
 
-def eigen_table(params: WhippleParams = WhippleParams(),
+def eigen_table(params: WhippleParams = DEFAULT_PARAMS,
                 speeds: Sequence[float] = TABLE_SPEEDS) -> str:
     """Markdown: measured (physics) against benchmark modes, with each part's error."""
     lines = ["| v (m/s) | mode | MuJoCo (1/s) | benchmark (1/s) | error Re, Im (1/s) "
@@ -77,7 +77,7 @@ def eigen_table(params: WhippleParams = WhippleParams(),
     return "\n".join(lines)
 
 
-def metrics_table(params: WhippleParams = WhippleParams()) -> str:
+def metrics_table(params: WhippleParams = DEFAULT_PARAMS) -> str:
     """Markdown: every judged metric with its target and verdict, and the real-time factor."""
     lines = ["| metric | value | unit | target | kind | pass |", "|---|---|---|---|---|---|"]
     for m in all_metrics(params):

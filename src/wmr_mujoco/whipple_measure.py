@@ -45,7 +45,7 @@ from wmr_mujoco.analytic import whipple as analytic
 from wmr_mujoco.builders import whipple as builder
 from wmr_mujoco.builders.common import to_xml
 from wmr_mujoco.builders.scene import add_scene
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
 
 #: Rolling time before linearising: many contact time constants, s.
 SETTLE_TIME = 0.3
@@ -57,7 +57,7 @@ _Y, _ROLL, _YAW, _STEER = 1, 3, 5, 7
 _NV = 9
 
 
-def compile_model(params: WhippleParams = WhippleParams()) -> mujoco.MjModel:
+def compile_model(params: WhippleParams = DEFAULT_PARAMS) -> mujoco.MjModel:
     """The bicycle on the project's floor, compiled."""
     root = builder.build(params)
     add_scene(root)
@@ -76,12 +76,12 @@ def steady_rolling(model: mujoco.MjModel, params: WhippleParams, speed: float,
         raise ValueError(f"speed = {speed!r} m/s; valid range is [0, 30]")
     data = mujoco.MjData(model)
     data.qpos[:], data.qvel[:] = builder.rolling_state(params, speed)
-    for _ in range(int(round(settle_time / model.opt.timestep))):
+    for _ in range(round(settle_time / model.opt.timestep)):
         mujoco.mj_step(model, data)
     if not np.all(np.isfinite(data.qpos)) or not np.all(np.isfinite(data.qvel)):
         raise RuntimeError(f"whipple model diverged while settling at {speed} m/s")
     # Remove the round-off in the lateral states (mirror symmetry keeps them zero).
-    w, x, y, z = data.qpos[3:7]
+    w, _, y, _ = data.qpos[3:7]
     pitch = 2.0 * math.atan2(y, w)
     data.qpos[3:7] = (math.cos(pitch / 2), 0.0, math.sin(pitch / 2), 0.0)
     data.qpos[1] = 0.0
@@ -145,8 +145,10 @@ def continuous_eigenvalues(a: np.ndarray, dt: float) -> np.ndarray:
 
 
 def lateral_block(a: np.ndarray, speed: float) -> tuple[np.ndarray, np.ndarray]:
-    """The reduced lateral map ``A_r`` on ``(φ, δ, u, ω_x, ω_z, δ̇)``, and the part of
-    the full map that couples the dropped cyclic coordinates (y, ψ) into it (ideally 0).
+    """The reduced lateral map ``A_r`` on ``(φ, δ, u, ω_x, ω_z, δ̇)``, and its coupling.
+
+    The coupling is the part of the full map that feeds the dropped cyclic coordinates
+    (y, ψ) into the kept ones (ideally 0).
 
     With ``u = v_y - v ψ`` (body-frame lateral velocity at yaw ψ), the change of
     coordinates ``T`` is the identity except ``T[u, ψ] = -v``; ``A' = T A T⁻¹``.
@@ -239,8 +241,11 @@ def capsize_speed(params: WhippleParams, bracket: tuple[float, float] = (5.5, 6.
 
 
 def lean_angle(quat: np.ndarray) -> float:
-    """Lean φ (positive to the right) of the rear frame: ``asin`` of the body y axis's
-    downward... z component, ``φ = asin(R[2, 1])`` with R the body-to-world rotation."""
+    """Lean φ (positive to the right) of the rear frame, ``φ = asin(R[2, 1])``.
+
+    R is the body-to-world rotation; ``R[2, 1]`` is the height component of the body's
+    y (left) axis, ``sin φ`` for any yaw and pitch in the benchmark's yaw-lean-pitch order.
+    """
     mat = np.zeros(9)
     mujoco.mju_quat2Mat(mat, quat)
     return math.asin(max(-1.0, min(1.0, mat[7])))
@@ -270,8 +275,10 @@ class PushResponse:
 def push_response(params: WhippleParams, speed: float, lean_rate: float = 0.5,
                   duration: float = 10.0, window: float = 2.0,
                   model: mujoco.MjModel | None = None) -> PushResponse:
-    """Roll at ``speed``, push (lean rate ``lean_rate`` about the ground line, rad/s), and
-    follow the lean for ``duration`` s without control.
+    """Roll at ``speed``, push sideways, and follow the lean without control.
+
+    The push is a lean rate ``lean_rate`` (rad/s) about the ground line; the run lasts
+    ``duration`` s.
 
     The run stops early if the bicycle falls (|φ| > 1.2 rad); a non-finite state raises.
     """
@@ -284,8 +291,8 @@ def push_response(params: WhippleParams, speed: float, lean_rate: float = 0.5,
     data.qvel[_ROLL] += lean_rate
     data.qvel[_Y] -= lean_rate * data.qpos[2]
     dt = model.opt.timestep
-    n = int(round(duration / dt))
-    every = max(1, int(round(0.01 / dt)))
+    n = round(duration / dt)
+    every = max(1, round(0.01 / dt))
     times, leans = [], []
     t0 = time.perf_counter()
     for k in range(n + 1):
@@ -308,11 +315,13 @@ def push_response(params: WhippleParams, speed: float, lean_rate: float = 0.5,
 
 def real_time_factor(params: WhippleParams, duration: float = 2.0, repeats: int = 3
                      ) -> float:
-    """Simulated over wall-clock time of rolling at 5 m/s (one thread, best of
-    ``repeats`` to discount other load on a shared machine)."""
+    """Simulated over wall-clock time of rolling at 5 m/s, one thread.
+
+    Best of ``repeats`` runs, to discount other load on a shared machine.
+    """
     model = compile_model(params)
     data = mujoco.MjData(model)
-    n = int(round(duration / model.opt.timestep))
+    n = round(duration / model.opt.timestep)
     best = math.inf
     for _ in range(repeats):
         data.qpos[:], data.qvel[:] = builder.rolling_state(params, 5.0)

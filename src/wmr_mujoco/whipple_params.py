@@ -179,3 +179,7 @@ class WhippleParams:
     def total_mass(self) -> float:
         """m_T, the mass of the four bodies."""
         return self.rear_mass + self.rear_frame_mass + self.front_frame_mass + self.front_mass
+
+
+#: The benchmark bicycle with the default settings (a frozen, shared default argument).
+DEFAULT_PARAMS = WhippleParams()

@@ -18,7 +18,7 @@ import numpy as np
 from wmr_mujoco.markers import replace_between
 from wmr_mujoco.paths import MODELS_DIR
 from wmr_mujoco.whipple_measure import evaluations_per_second, real_time_factor, with_sim
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
 from wmr_mujoco.whipple_validation import (
     TABLE_SPEEDS,
     critical_speeds,
@@ -49,7 +49,7 @@ class StudyRow:
     meets_all: bool
 
 
-def study_configs(base: WhippleParams = WhippleParams()) -> list[tuple[str, WhippleParams]]:
+def study_configs(base: WhippleParams = DEFAULT_PARAMS) -> list[tuple[str, WhippleParams]]:
     """The settings compared: the default and one change at a time."""
     s = base.sim
     cfg = [("default", base)]
@@ -85,7 +85,7 @@ def measure_row(label: str, params: WhippleParams) -> StudyRow:
         return StudyRow(label, params, nan, nan, nan, nan, nan,
                         real_time_factor(params), False)
     metrics = speed_metrics(speeds) + eigen_metrics(rows) + stability_metrics(params, runs)
-    cast = [r for r in rows if r.speed == 10.0][0]
+    cast = next(r for r in rows if r.speed == 10.0)
     return StudyRow(
         label=label, params=params,
         weave_err_pct=metrics[0][1], capsize_err_pct=metrics[1][1],

@@ -36,7 +36,7 @@ from wmr_mujoco.whipple_measure import (
     push_response,
     weave_speed,
 )
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
 
 Metric = tuple[str, float, str, float, str]
 
@@ -166,13 +166,13 @@ def stability_metrics(params: WhippleParams, runs: dict[float, PushResponse]
 
 def passed(metric: Metric) -> bool:
     """Whether a metric meets its target (``> target`` for growth, else ``<=``)."""
-    name, value, _, target, kind = metric
+    _, value, _, target, kind = metric
     if np.isnan(target):
         return True
     return value > target if "grows" in kind else value <= target
 
 
-def all_metrics(params: WhippleParams = WhippleParams()) -> list[Metric]:
+def all_metrics(params: WhippleParams = DEFAULT_PARAMS) -> list[Metric]:
     """Every judged metric of the model at ``params`` (about a second of CPU)."""
     return (speed_metrics(critical_speeds(params))
             + eigen_metrics(eigen_rows(params, np.arange(1.0, 10.01, 1.0)))

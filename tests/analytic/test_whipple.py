@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from wmr_mujoco.analytic import whipple as W
+from wmr_mujoco.analytic import whipple as wa
 from wmr_mujoco.whipple_params import WhippleParams
 
 PUBLISHED = {
@@ -37,8 +37,8 @@ EIGENVALUES = {
 
 
 @pytest.fixture(scope="module")
-def mats() -> W.WhippleMatrices:
-    return W.matrices(WhippleParams())
+def mats() -> wa.WhippleMatrices:
+    return wa.matrices(WhippleParams())
 
 
 @pytest.mark.parametrize("name", list(PUBLISHED))
@@ -48,7 +48,7 @@ def test_matrices_match_published(mats, name):
 
 @pytest.mark.parametrize("v", list(EIGENVALUES))
 def test_eigenvalues_match_published(mats, v):
-    got = W.eigenvalues(v, mats)
+    got = wa.eigenvalues(v, mats)
     ref = np.array(EIGENVALUES[v], complex)
     ref = ref[np.lexsort((ref.imag, ref.real))]
     np.testing.assert_allclose(got.real, ref.real, atol=5e-5)
@@ -56,19 +56,19 @@ def test_eigenvalues_match_published(mats, v):
 
 
 def test_critical_speeds(mats):
-    assert abs(W.weave_speed(mats) - 4.2923825) < 5e-8
-    assert abs(W.capsize_speed(mats) - 6.0242620) < 5e-8
+    assert abs(wa.weave_speed(mats) - 4.2923825) < 5e-8
+    assert abs(wa.capsize_speed(mats) - 6.0242620) < 5e-8
 
 
 def test_modes_named_at_5_mps(mats):
-    m = W.modes(5.0, mats)
+    m = wa.modes(5.0, mats)
     assert abs(m.weave - complex(-0.7753, 4.4649)) < 1e-4
     assert abs(m.capsize - (-0.3229)) < 1e-4
     assert abs(m.castering - (-14.0784)) < 1e-4
 
 
 def test_no_weave_pair_at_rest(mats):
-    assert math.isnan(W.modes(0.0, mats).capsize)
+    assert math.isnan(wa.modes(0.0, mats).capsize)
 
 
 # ---- independent check of K0: potential energy of the constrained geometry ----------

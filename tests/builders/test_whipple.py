@@ -12,7 +12,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.builders import whipple as B
+from wmr_mujoco.builders import whipple as wb
 from wmr_mujoco.builders.common import to_xml
 from wmr_mujoco.paths import MODELS_DIR
 from wmr_mujoco.whipple_measure import compile_model
@@ -130,6 +130,6 @@ def test_knife_edge_contact_offset():
 
 def test_checked_in_xml_matches_builder():
     text = (MODELS_DIR / "whipple" / "whipple.xml").read_text()
-    assert text == to_xml(B.build(WhippleParams()))
+    assert text == to_xml(wb.build(WhippleParams()))
     scene = mujoco.MjModel.from_xml_path(str(MODELS_DIR / "whipple" / "scene.xml"))
     assert scene.nv == 9 and scene.nu == 2

@@ -50,7 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
 
 
 @dataclass(frozen=True)
@@ -64,7 +64,7 @@ class WhippleMatrices:
     gravity: float
 
 
-def matrices(p: WhippleParams = WhippleParams()) -> WhippleMatrices:
+def matrices(p: WhippleParams = DEFAULT_PARAMS) -> WhippleMatrices:
     """``M, C1, K0, K2`` of the benchmark from the parameters (Appendix A formulas)."""
     w, c, lam, g = p.wheelbase, p.trail, p.head_angle, p.gravity
     rr, mr = p.rear_radius, p.rear_mass
@@ -142,8 +142,10 @@ class Modes:
 
 
 def classify(ev: np.ndarray, imag_tol: float = 1e-9) -> Modes:
-    """Name the modes of four eigenvalues: a complex pair is weave, of the two real ones
-    the more negative is castering and the other capsize.
+    """Name the modes of four eigenvalues.
+
+    A complex pair is weave; of the two real ones the more negative is castering and the
+    other capsize.
 
     Below the speed (≈ 0.7 m/s for the benchmark) where weave splits into two real
     eigenvalues there is no pair: the modes are returned as NaN.

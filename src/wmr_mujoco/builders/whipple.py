@@ -38,7 +38,7 @@ from dm_control import mjcf
 
 from wmr_mujoco.builders import common
 from wmr_mujoco.params import SimParams
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
 
 #: Paper frame to MuJoCo world: rotation by π about x.
 PAPER_TO_MJ = np.diag([1.0, -1.0, -1.0])
@@ -107,7 +107,7 @@ def _tube(body: mjcf.Element, a: np.ndarray, b: np.ndarray, rgba: tuple,
              rgba=rgba)
 
 
-def build(params: WhippleParams = WhippleParams()) -> mjcf.RootElement:
+def build(params: WhippleParams = DEFAULT_PARAMS) -> mjcf.RootElement:
     """The benchmark bicycle on a free joint, rolling on point-contact (knife-edge) wheels.
 
     Contacts: ``solref = (contact_timeconst, contact_dampratio)``,
