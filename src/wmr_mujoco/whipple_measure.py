@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
 import mujoco
@@ -274,11 +274,13 @@ class PushResponse:
 
 def push_response(params: WhippleParams, speed: float, lean_rate: float = 0.5,
                   duration: float = 10.0, window: float = 2.0,
-                  model: mujoco.MjModel | None = None) -> PushResponse:
+                  model: mujoco.MjModel | None = None,
+                  observer: Callable[[float, mujoco.MjData], None] | None = None
+                  ) -> PushResponse:
     """Roll at ``speed``, push sideways, and follow the lean without control.
 
     The push is a lean rate ``lean_rate`` (rad/s) about the ground line; the run lasts
-    ``duration`` s.
+    ``duration`` s. ``observer(t, data)``, if given, sees every 10 ms sample (for clips).
 
     The run stops early if the bicycle falls (|φ| > 1.2 rad); a non-finite state raises.
     """
@@ -299,6 +301,8 @@ def push_response(params: WhippleParams, speed: float, lean_rate: float = 0.5,
         if k % every == 0:
             times.append(k * dt)
             leans.append(lean_angle(data.qpos[3:7]))
+            if observer is not None:
+                observer(k * dt, data)
             if abs(leans[-1]) > 1.2:
                 break
         mujoco.mj_step(model, data)

@@ -94,8 +94,11 @@ def eigen_metrics(rows: Sequence[EigenRow]) -> list[Metric]:
             ratios.append(err / eigen_tolerance(ref))
             errors.append(err)
     span = f"{min(r.speed for r in rows):g}-{max(r.speed for r in rows):g} m/s"
+    rms = float(np.sqrt(np.mean(np.square(ratios))))
     return [(f"eigenvalue error / tolerance, worst over {span}", float(max(ratios)), "1",
              1.0, "requirement: each part within max(2 %, 0.05 1/s)"),
+            (f"eigenvalue error / tolerance, RMS over {span}", rms, "1", float("nan"),
+             "reported"),
             (f"eigenvalue error, worst over {span}", float(max(errors)), "1/s",
              float("nan"), "reported (the tolerance scales with the eigenvalue)")]
 
@@ -145,6 +148,7 @@ def stability_metrics(params: WhippleParams, runs: dict[float, PushResponse]
                       ) -> list[Metric]:
     """Lean ratios after 10 s against the requirement or the linear benchmark."""
     out: list[Metric] = []
+    mats = analytic.matrices(params)
     for v in STABLE_SPEEDS:
         r = runs[v]
         lin = late_ratio(r.time, linear_lean(params, v, r.time))
@@ -152,13 +156,16 @@ def stability_metrics(params: WhippleParams, runs: dict[float, PushResponse]
             out.append((f"lean after 10 s / peak at {v:g} m/s (linear benchmark {lin:.3f})",
                         r.final_ratio, "1", LEAN_RATIO_MAX, "requirement"))
         else:
-            out.append((f"lean after 10 s / peak at {v:g} m/s, minus the linear "
-                        f"benchmark's {lin:.3f}", abs(r.final_ratio - lin), "1",
+            cap = analytic.modes(v, mats).capsize
+            out.append((f"lean after 10 s / peak at {v:g} m/s: {r.final_ratio:.3f}, minus "
+                        f"the linear benchmark's {lin:.3f}", abs(r.final_ratio - lin), "1",
                         LEAN_RATIO_VS_LINEAR,
-                        "derived bound: the benchmark itself stays above 10 % here"))
+                        f"derived bound: the benchmark's capsize eigenvalue {cap:.3f} 1/s "
+                        f"needs ln(10)/{abs(cap):.3f} = {np.log(10) / abs(cap):.0f} s to "
+                        f"fall to 10 %, so the 10 % requirement is out of reach here"))
     r = runs[UNSTABLE_SPEED]
-    out.append((f"lean growth at {UNSTABLE_SPEED:g} m/s: largest |lean| / first peak "
-                f"(falls at {r.time[-1]:.2f} s)",
+    out.append((f"lean growth at {UNSTABLE_SPEED:g} m/s: largest lean / largest lean in "
+                f"the first second (falls past 1.2 rad at {r.time[-1]:.2f} s)",
                 float(np.abs(r.lean).max() / np.abs(r.lean[r.time <= 1.0]).max()), "1",
                 1.0, "requirement: > 1 (grows)"))
     return out
