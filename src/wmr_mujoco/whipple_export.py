@@ -84,9 +84,9 @@ def metrics_table(params: WhippleParams = DEFAULT_PARAMS) -> str:
     lines = ["| metric | value | unit | target | kind | pass |", "|---|---|---|---|---|---|"]
     for m in all_metrics(params):
         name, value, unit, target, kind = m
-        tgt = "—" if np.isnan(target) else f"{target:g}"
-        lines.append(f"| {name} | {value:.4g} | {unit} | {tgt} | {kind} | "
-                     f"{'yes' if passed(m) else 'NO'} |")
+        tgt = "—" if np.isnan(target) else f"{target:.4g}"
+        verdict = "—" if np.isnan(target) else ("yes" if passed(m) else "NO")
+        lines.append(f"| {name} | {value:.4g} | {unit} | {tgt} | {kind} | {verdict} |")
     lines.append(f"| real-time factor (one thread) | {real_time_factor(params):.0f} | × | — "
                  f"| reported | — |")
     return "\n".join(lines)

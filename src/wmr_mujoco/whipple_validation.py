@@ -13,9 +13,10 @@ over the speeds named. Targets:
   linear equations, given the same push, reach ``ratio_lin``; where ``ratio_lin ≥ 0.1``
   (at 5.5 m/s the capsize eigenvalue is only about -0.117 s⁻¹, so the lean needs about
   20 s to fall to 10 %) the requirement cannot be met by the benchmark itself, and the
-  derived bound judges the physics against ``ratio_lin``: within ``0.05`` absolute (the
-  nonlinear terms at a 5° peak and the measured eigenvalue errors move the ratio by a few
-  hundredths).
+  derived bound judges the physics against ``ratio_lin``. The late lean is dominated by
+  the capsize mode, ``∝ exp(s_capsize t)``; an eigenvalue error within the requirement's
+  ``0.05 s⁻¹`` changes it by a factor of at most ``exp(0.05 · 10 s)``, so the bound is
+  ``|ratio - ratio_lin| ≤ ratio_lin (exp(0.5) - 1)``.
 """
 
 from __future__ import annotations
@@ -49,9 +50,10 @@ UNSTABLE_SPEED = 3.0
 PUSH_LEAN_RATE = 0.5
 #: Relative and absolute eigenvalue tolerance (requirement).
 EIG_REL, EIG_ABS = 0.02, 0.05
-#: Lean ratio requirement, and the bound of physics against the linear benchmark.
+#: Lean ratio requirement.
 LEAN_RATIO_MAX = 0.10
-LEAN_RATIO_VS_LINEAR = 0.05
+#: Length of the push runs, s.
+PUSH_DURATION = 10.0
 
 
 def eigen_tolerance(reference: float) -> float:
@@ -140,7 +142,7 @@ def late_ratio(times: np.ndarray, lean: np.ndarray, window: float = 2.0) -> floa
 def push_runs(params: WhippleParams) -> dict[float, PushResponse]:
     """The push runs at the self-stable speeds and at the falling speed."""
     model = compile_model(params)
-    return {v: push_response(params, v, PUSH_LEAN_RATE, model=model)
+    return {v: push_response(params, v, PUSH_LEAN_RATE, duration=PUSH_DURATION, model=model)
             for v in (*STABLE_SPEEDS, UNSTABLE_SPEED)}
 
 
@@ -157,12 +159,14 @@ def stability_metrics(params: WhippleParams, runs: dict[float, PushResponse]
                         r.final_ratio, "1", LEAN_RATIO_MAX, "requirement"))
         else:
             cap = analytic.modes(v, mats).capsize
+            bound = lin * (np.exp(EIG_ABS * PUSH_DURATION) - 1.0)
             out.append((f"lean after 10 s / peak at {v:g} m/s: {r.final_ratio:.3f}, minus "
                         f"the linear benchmark's {lin:.3f}", abs(r.final_ratio - lin), "1",
-                        LEAN_RATIO_VS_LINEAR,
-                        f"derived bound: the benchmark's capsize eigenvalue {cap:.3f} 1/s "
-                        f"needs ln(10)/{abs(cap):.3f} = {np.log(10) / abs(cap):.0f} s to "
-                        f"fall to 10 %, so the 10 % requirement is out of reach here"))
+                        float(bound),
+                        f"derived bound: ratio_lin (exp(0.05 1/s · 10 s) - 1). The 10 % "
+                        f"requirement is out of reach of the benchmark itself here: its "
+                        f"capsize eigenvalue {cap:.3f} 1/s needs ln(10)/{abs(cap):.3f} = "
+                        f"{np.log(10) / abs(cap):.0f} s to fall to 10 %"))
     r = runs[UNSTABLE_SPEED]
     out.append((f"lean growth at {UNSTABLE_SPEED:g} m/s: largest lean / largest lean in "
                 f"the first second (falls past 1.2 rad at {r.time[-1]:.2f} s)",
