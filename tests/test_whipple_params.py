@@ -40,7 +40,8 @@ def test_bad_values_raise_naming_field_and_range(field, value, words):
 
 @pytest.mark.parametrize("field, value", [("timestep", 0.0), ("integrator", "rk45"),
                                           ("impratio", 0.5), ("solimp_dmax", 1.0),
-                                          ("wheel_half_width", -0.001)])
+                                          ("wheel_half_width", -0.001),
+                                          ("noslip_iterations", 2.5)])
 def test_bad_sim_settings_raise(field, value):
     with pytest.raises(ValueError, match=field):
         WhippleSimParams(**{field: value})

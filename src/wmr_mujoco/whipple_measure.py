@@ -167,9 +167,16 @@ SLOW_LIMIT = 0.25
 
 
 def contact_time_constant(model: mujoco.MjModel) -> float:
-    """The contact's time constant as MuJoCo uses it: ``max(solref[0], 2 Δt)``, s."""
-    geom = model.geom("rear_wheel_collision").id
-    return max(float(model.geom_solref[geom, 0]), 2.0 * model.opt.timestep)
+    """The contact's time constant as MuJoCo uses it: ``max(solref[0], 2 Δt)``, s.
+
+    The wheel geoms' ``solref``, or the largest of the explicit contact pairs' ``solref``
+    and ``solreffriction`` where the model has pairs.
+    """
+    if model.npair:
+        tau = float(max(model.pair_solref[:, 0].max(), model.pair_solreffriction[:, 0].max()))
+    else:
+        tau = float(model.geom_solref[model.geom("rear_wheel_collision").id, 0])
+    return max(tau, 2.0 * model.opt.timestep)
 
 
 @dataclass(frozen=True)

@@ -45,6 +45,7 @@ class WhippleSimParams:
             a knife-edge wheel, m. Its crown radius ``b²/R`` is the tyre's lateral
             radius of curvature: the contact point moves sideways by ``b² sin φ / R`` at
             lean φ, where a knife edge would not move.
+        noslip_iterations: MuJoCo's no-slip post-solver iterations (0: off).
 
     """
 
@@ -55,7 +56,8 @@ class WhippleSimParams:
     impratio: float = 10.0
     solimp_dmax: float = 0.99
     friction: float = 1.0
-    wheel_half_width: float = 0.005
+    wheel_half_width: float = 0.001
+    noslip_iterations: int = 0
 
     def __post_init__(self) -> None:
         _check_range(self, "timestep", 0.0, 0.01)
@@ -68,6 +70,9 @@ class WhippleSimParams:
         _check_range(self, "solimp_dmax", 0.5, 0.9999)
         _check_range(self, "friction", 0.0, 10.0)
         _check_range(self, "wheel_half_width", 0.0, 0.05)
+        if not (isinstance(self.noslip_iterations, int) and 0 <= self.noslip_iterations <= 100):
+            raise ValueError(f"WhippleSimParams.noslip_iterations = {self.noslip_iterations!r}; "
+                             f"valid range is integers [0, 100]")
 
 
 def _frame_tensor(i: tuple[float, float, float, float]) -> np.ndarray:

@@ -3,7 +3,9 @@
 For each simulation setting (integrator, timestep, contact ``solref``/``solimp``,
 ``impratio``, collider half-width) it measures the weave and capsize speeds, the worst
 eigenvalue error at 1, 3, 5, 7, 10 m/s, the self-stability runs and the real-time factor,
-and writes the table between the ``whipple study`` markers of ``models/whipple/README.md``.
+and writes the table between the ``whipple study`` markers of ``models/whipple/README.md``;
+a second table (``whipple contact split``) sets the contact's normal and frictional time
+constants apart to show which one the eigenvalue errors come from.
 It runs in well under a minute on one core.
 """
 
@@ -13,11 +15,21 @@ import argparse
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import mujoco
 import numpy as np
 
+from wmr_mujoco.analytic import whipple as analytic
+from wmr_mujoco.builders import whipple as builder
+from wmr_mujoco.builders.common import to_xml
+from wmr_mujoco.builders.scene import add_scene
 from wmr_mujoco.markers import replace_between
 from wmr_mujoco.paths import MODELS_DIR
-from wmr_mujoco.whipple_measure import evaluations_per_second, real_time_factor, with_sim
+from wmr_mujoco.whipple_measure import (
+    evaluations_per_second,
+    measure_modes,
+    real_time_factor,
+    with_sim,
+)
 from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
 from wmr_mujoco.whipple_validation import (
     TABLE_SPEEDS,
@@ -32,6 +44,7 @@ from wmr_mujoco.whipple_validation import (
 
 README = MODELS_DIR / "whipple" / "README.md"
 MARKER = "whipple study"
+SPLIT_MARKER = "whipple contact split"
 
 
 @dataclass(frozen=True)
@@ -69,7 +82,8 @@ def study_configs(base: WhippleParams = DEFAULT_PARAMS) -> list[tuple[str, Whipp
     cfg.append(("impratio 1", with_sim(base, impratio=1.0)))
     cfg.append(("impratio 100", with_sim(base, impratio=100.0)))
     cfg.append(("solimp d 0.9", with_sim(base, solimp_dmax=0.9)))
-    cfg.append(("collider half-width 1 mm", with_sim(base, wheel_half_width=0.001)))
+    cfg.append(("noslip 10 iterations", with_sim(base, noslip_iterations=10)))
+    cfg.append(("collider half-width 5 mm", with_sim(base, wheel_half_width=0.005)))
     cfg.append(("collider half-width 20 mm", with_sim(base, wheel_half_width=0.02)))
     return cfg
 
@@ -123,6 +137,46 @@ def table(rows: Sequence[StudyRow]) -> str:
     return "\n".join(lines)
 
 
+def split_contact_model(params: WhippleParams, normal_timeconst: float,
+                        friction_timeconst: float) -> mujoco.MjModel:
+    """The model with explicit wheel-floor contact pairs.
+
+    Their normal (``solref``) and frictional (``solreffriction``) time constants may
+    differ; the wheels' own collisions are switched off.
+    """
+    root = builder.build(params)
+    add_scene(root)
+    s = params.sim
+    for name in ("rear_wheel_collision", "front_wheel_collision"):
+        geom = root.find("geom", name)
+        geom.contype = 0
+        geom.conaffinity = 0
+        root.contact.add("pair", geom1=name, geom2="floor", condim=3,
+                         friction=(s.friction, s.friction, 0.005, 0.0001, 0.0001),
+                         solref=(normal_timeconst, s.contact_dampratio),
+                         solreffriction=(friction_timeconst, s.contact_dampratio),
+                         solimp=(s.solimp_dmax, s.solimp_dmax, 0.001, 0.5, 2.0))
+    return mujoco.MjModel.from_xml_string(to_xml(root))
+
+
+def contact_split_table(params: WhippleParams = DEFAULT_PARAMS, speed: float = 10.0) -> str:
+    """Markdown: eigenvalue errors at ``speed``, normal and frictional τ set apart.
+
+    Each of the two time constants is the default's or 4 × it.
+    """
+    tau = max(params.sim.contact_timeconst, 2 * params.sim.timestep)
+    ref = analytic.modes(speed, analytic.matrices(params))
+    lines = [f"| normal τ (ms) | friction τ (ms) | castering error at {speed:g} m/s (1/s) | "
+             f"weave Re error (1/s) | weave Im error (1/s) | capsize error (1/s) |",
+             "|---|---|---|---|---|---|"]
+    for tn, tf in ((tau, tau), (4 * tau, tau), (tau, 4 * tau), (4 * tau, 4 * tau)):
+        m = measure_modes(params, speed, split_contact_model(params, tn, tf)).modes
+        lines.append(f"| {tn * 1e3:g} | {tf * 1e3:g} | {m.castering - ref.castering:+.3f} | "
+                     f"{m.weave.real - ref.weave.real:+.3f} | "
+                     f"{m.weave.imag - ref.weave.imag:+.3f} | {m.capsize - ref.capsize:+.4f} |")
+    return "\n".join(lines)
+
+
 def main(argv: Sequence[str] | None = None) -> None:
     """Run the study, print the table and paste it into the model README."""
     parser = argparse.ArgumentParser(description=__doc__)
@@ -130,9 +184,11 @@ def main(argv: Sequence[str] | None = None) -> None:
     args = parser.parse_args(argv)
     rows = [measure_row(label, p) for label, p in study_configs()]
     text = table(rows)
-    print(text)
+    split = contact_split_table()
+    print(text, split, sep="\n\n")
     if not args.no_write:
         replace_between(README, MARKER, text)
+        replace_between(README, SPLIT_MARKER, split)
         print(f"wrote {README}")
 
 

@@ -119,6 +119,8 @@ def build(params: WhippleParams = DEFAULT_PARAMS) -> mjcf.RootElement:
     root = common.new_root("whipple", _sim_defaults(p))
     root.option.integrator = s.integrator
     root.option.impratio = s.impratio
+    if s.noslip_iterations:
+        root.option.noslip_iterations = s.noslip_iterations
     root.size.nuser_actuator = 0
     collision = root.default.find("default", "collision")
     collision.geom.solref = (s.contact_timeconst, s.contact_dampratio)
