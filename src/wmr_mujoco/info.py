@@ -7,9 +7,9 @@ from typing import Any
 
 import mujoco
 
-from wmr_mujoco.actuation import actuation_mode
-from wmr_mujoco.loading import load
-from wmr_mujoco.registry import get_spec
+from wmr_mujoco.models.actuation import actuation_mode
+from wmr_mujoco.models.loading import load
+from wmr_mujoco.robots import get_spec
 
 _JOINT_TYPES = {int(v): k.removeprefix("mjJNT_").lower()
                 for k, v in mujoco.mjtJoint.__members__.items()}
