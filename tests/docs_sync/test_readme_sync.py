@@ -37,3 +37,17 @@ def test_missing_report_names_the_command(tmp_path, capsys):
         sync(readme, tmp_path)
     assert main(["--readme", str(readme), "--reports", str(tmp_path)]) == 2
     assert "summary.md not found" in capsys.readouterr().err
+
+
+def test_only_the_sections_asked_for_and_nothing_when_one_is_missing(tmp_path):
+    readme = tmp_path / "README.md"
+    original = "\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS))
+    readme.write_text(original)
+    (tmp_path / "summary.md").write_text("| new |\n")
+    with pytest.raises(FileNotFoundError, match="`make bench` writes it"):
+        sync(readme, tmp_path)
+    assert readme.read_text() == original  # nothing written when a report is missing
+    assert sync(readme, tmp_path, ["validation results"]) == ["validation results"]
+    assert readme.read_text().count("old") == 1 and "| new |" in readme.read_text()
+    with pytest.raises(ValueError, match="unknown README sections"):
+        sync(readme, tmp_path, ["results"])

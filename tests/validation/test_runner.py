@@ -114,7 +114,7 @@ def test_unknown_engine():
     from wmr_mujoco.sim.engine import simulate
 
     model = load("disc")
-    with pytest.raises(ValueError, match="engine = 'gpu'; valid engines are rollout, loop"):
+    with pytest.raises(ValueError, match="unknown engine 'gpu'; valid engines are: rollout, loop"):
         simulate(model, mujoco.MjData(model), np.zeros((3, 2)), engine="gpu")
 
 
@@ -141,7 +141,7 @@ def test_batches_split_by_robot_kind_and_settle():
 
 
 def test_run_all_unknown_engine():
-    with pytest.raises(ValueError, match="engine = 'gpu'; valid engines are rollout, loop"):
+    with pytest.raises(ValueError, match="unknown engine 'gpu'; valid engines are: rollout, loop"):
         run_all([], engine="gpu")
 
 

@@ -29,8 +29,8 @@ def test_selection_and_bad_robot():
 
 def test_kind_from_its_string_and_bad_kind():
     assert Scenario("disc", "a", (const(1.0),), kind="dynamic").kind is ScenarioKind.DYNAMIC
-    with pytest.raises(ValueError, match="unknown scenario kind 'static'; valid kinds are: "
-                                         "kinematic, dynamic, measurement"):
+    with pytest.raises(ValueError, match="unknown scenario kind 'static'; valid scenario "
+                                         "kinds are: kinematic, dynamic, measurement"):
         Scenario("disc", "a", kind="static")
 
 

@@ -16,8 +16,7 @@ def wrap_angle(angle: float | np.ndarray) -> float | np.ndarray:
 
 def path_length(xy: np.ndarray) -> float:
     """Length of the polyline through the rows of ``xy`` (N, 2): ``Σ |p_{k+1} − p_k|``."""
-    xy = np.asarray(xy, float)
-    return float(np.sum(np.linalg.norm(np.diff(xy, axis=0), axis=1))) if len(xy) > 1 else 0.0
+    return float(cumulative_path(xy)[-1])
 
 
 def cumulative_path(xy: np.ndarray) -> np.ndarray:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import re
 import sys
+from collections.abc import Sequence
 from pathlib import Path
 
 from wmr_mujoco.docs_sync.markers import replace_between
@@ -30,21 +31,34 @@ def section_text(report: str) -> str:
     return re.sub(r"^## ", "#### ", "\n".join(lines).strip(), flags=re.MULTILINE)
 
 
-def sync(readme: Path = README_PATH, reports: Path = REPORTS_DIR) -> list[str]:
-    """Replace each README section with its report; return the keys updated.
+def sync(readme: Path = README_PATH, reports: Path = REPORTS_DIR,
+         keys: Sequence[str] | None = None) -> list[str]:
+    """Replace each README section (all, or those in ``keys``) with its report.
+
+    Every requested report is checked before anything is written, so a missing one
+    leaves the README as it was.
+
+    Returns:
+        The keys updated.
 
     Raises:
         FileNotFoundError: a report is missing; the message says which command writes it.
-        ValueError: the README lacks a section's markers.
+        ValueError: an unknown key, or the README lacks a section's markers.
     """
-    updated = []
-    for key, (name, command) in SECTIONS.items():
+    keys = list(SECTIONS) if keys is None else list(keys)
+    unknown = [k for k in keys if k not in SECTIONS]
+    if unknown:
+        raise ValueError(f"unknown README sections {unknown}; valid: {', '.join(SECTIONS)}")
+    texts = {}
+    for key in keys:
+        name, command = SECTIONS[key]
         path = Path(reports) / name
         if not path.is_file():
             raise FileNotFoundError(f"{path} not found; `{command}` writes it")
-        replace_between(readme, key, section_text(path.read_text()))
-        updated.append(key)
-    return updated
+        texts[key] = section_text(path.read_text())
+    for key, text in texts.items():
+        replace_between(readme, key, text)
+    return keys
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -52,9 +66,11 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--readme", type=Path, default=README_PATH)
     parser.add_argument("--reports", type=Path, default=REPORTS_DIR)
+    parser.add_argument("--only", action="append", choices=list(SECTIONS),
+                        help="paste only this section (repeatable; default: all)")
     args = parser.parse_args(argv)
     try:
-        keys = sync(args.readme, args.reports)
+        keys = sync(args.readme, args.reports, args.only)
     except (FileNotFoundError, ValueError) as err:
         print(f"error: {err}", file=sys.stderr)
         return 2

@@ -19,6 +19,7 @@ import enum
 import mujoco
 import numpy as np
 
+from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.models.builders.common import KIND_STEER, KIND_WHEEL, NUSER_ACTUATOR
 
 
@@ -30,11 +31,7 @@ class ActuationMode(str, enum.Enum):
 
 
 def _parse_mode(mode: ActuationMode | str) -> ActuationMode:
-    try:
-        return ActuationMode(mode)
-    except ValueError:
-        valid = ", ".join(m.value for m in ActuationMode)
-        raise ValueError(f"unknown actuation mode {mode!r}; valid modes are: {valid}") from None
+    return parse_choice(ActuationMode, mode, "actuation mode")
 
 
 def _check_model(model: mujoco.MjModel) -> None:

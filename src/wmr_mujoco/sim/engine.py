@@ -14,6 +14,7 @@ from collections.abc import Callable, Sequence
 import mujoco
 import numpy as np
 
+from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 
 #: MuJoCo state recorded after every step (what ``mujoco.rollout`` returns).
@@ -35,11 +36,7 @@ def parse_engine(engine: Engine | str) -> Engine:
     Raises:
         ValueError: unknown engine; the message lists the valid ones.
     """
-    try:
-        return Engine(engine)
-    except ValueError:
-        valid = ", ".join(e.value for e in Engine)
-        raise ValueError(f"engine = {engine!r}; valid engines are {valid}") from None
+    return parse_choice(Engine, engine, "engine")
 
 
 def get_state(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:

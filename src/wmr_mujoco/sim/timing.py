@@ -20,14 +20,18 @@ def timed(fn: Callable[[], object]) -> float:
     return time.perf_counter() - t0
 
 
+def _check_count(name: str, value: int) -> None:
+    if value < 1:
+        raise ValueError(f"{name} = {value!r}; must be >= 1")
+
+
 def median_time(fn: Callable[[], object], repeats: int, warmup: bool = True) -> float:
     """Median wall time of ``fn()`` over ``repeats`` runs (after one warm-up if ``warmup``).
 
     Raises:
         ValueError: ``repeats`` below 1.
     """
-    if repeats < 1:
-        raise ValueError(f"repeats = {repeats!r}; must be >= 1")
+    _check_count("repeats", repeats)
     if warmup:
         fn()
     return float(np.median([timed(fn) for _ in range(repeats)]))
@@ -43,8 +47,7 @@ def paired_ratio(slow: Callable[[], object], fast: Callable[[], object], rounds:
     Raises:
         ValueError: ``rounds`` below 1.
     """
-    if rounds < 1:
-        raise ValueError(f"rounds = {rounds!r}; must be >= 1")
+    _check_count("rounds", rounds)
     if warmup:
         slow()
         fast()

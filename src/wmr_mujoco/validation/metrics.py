@@ -16,7 +16,7 @@ heading difference wrapped into (−180°, 180°]:
     final heading error   = Δψ(T)
 
 All maxima and means are over the recorded samples of the whole run (every
-:data:`~wmr_mujoco.validation.runner.RECORD_EVERY` steps and the last one). A run that
+:data:`RECORD_EVERY` steps and the last one). A run that
 turns in place (``L`` < 1 mm) is judged on its centre's worst drift in metres instead.
 """
 
@@ -37,6 +37,24 @@ if TYPE_CHECKING:
 
 #: Below this analytic path length (m) a run counts as turning in place.
 MIN_PATH = 1e-3
+
+#: Metrics are recorded every this many steps (and at the last one).
+RECORD_EVERY = 5
+
+#: How the report's pose metrics and targets are defined (Markdown, for the report).
+DEFINITIONS = f"""\
+- *Worst position error*: the largest distance, at any recorded instant of the run,
+  between the simulated and the analytic reference point, in % of the analytic path
+  length of the whole run (and in metres). Judged against the robot's target.
+- *RMS position error*: root mean square of that distance over the run, m. *Final
+  position error*: at the last instant (the figure judged before issue 12), m and %.
+- *Worst heading error*: the largest heading difference over the run, wrapped into
+  (−180°, 180°]; *final heading error* at the last instant.
+- A run that turns in place (path under 1 mm) is judged on its centre's worst drift, m.
+- Samples: every {RECORD_EVERY}th simulation step and the last one.
+- Each target is a **requirement** (asked for; the issue is named) or a **derived bound**
+  (it follows from the physics; its derivation is given); a metric without a target is
+  reported, not judged."""
 
 # Keys of a robot's target table used by the generic judges.
 POSITION_PCT = "worst position error % of path"

@@ -17,7 +17,7 @@ import numpy as np
 
 from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.atomic import atomic_path, write_text_atomic
-from wmr_mujoco.validation.metrics import Row, Series, Trace
+from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Series, Trace
 from wmr_mujoco.validation.runner import ScenarioResult
 
 if TYPE_CHECKING:
@@ -216,7 +216,8 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) 
              f"**{len(results) - len(failed)} of {len(results)} scenarios pass.**", ""]
     if failed:
         lines += ["Failed: " + ", ".join(f"`{r.scenario.key}`" for r in failed), ""]
-    lines += ["## Summary", "", summary_table(results), "", "## Every metric", "",
+    lines += ["## Summary", "", summary_table(results), "", "## How the metrics are judged",
+              "", DEFINITIONS, "", "## Every metric", "",
               markdown_table(results), "", "## Plots", ""]
     for r in results:
         png = plot_scenario(r, plots / f"{slug(r.scenario.key)}.png")

@@ -33,6 +33,7 @@ from wmr_mujoco.sim.engine import STATE_SPEC, Engine, parse_engine, simulate, si
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.metrics import (
+    RECORD_EVERY,
     Probe,
     Row,
     Sample,
@@ -41,9 +42,6 @@ from wmr_mujoco.validation.metrics import (
     slip_metrics,
 )
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
-
-#: Metrics are recorded every this many steps (and at the last one).
-RECORD_EVERY = 5
 
 
 @dataclass

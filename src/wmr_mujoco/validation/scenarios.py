@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.validation.metrics import Metric, Series
 from wmr_mujoco.validation.signals import Signal
 
@@ -42,11 +43,7 @@ def parse_kind(kind: ScenarioKind | str) -> ScenarioKind:
     Raises:
         ValueError: unknown kind; the message lists the valid ones.
     """
-    try:
-        return ScenarioKind(kind)
-    except ValueError:
-        valid = ", ".join(k.value for k in ScenarioKind)
-        raise ValueError(f"unknown scenario kind {kind!r}; valid kinds are: {valid}") from None
+    return parse_choice(ScenarioKind, kind, "scenario kind")
 
 
 @dataclass(frozen=True)
