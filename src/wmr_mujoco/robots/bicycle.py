@@ -18,7 +18,6 @@ from wmr_mujoco.models.builders import bicycle as builder
 from wmr_mujoco.models.params import BicycleParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import Picture, RobotSpec
-from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -57,10 +56,7 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
     return BicycleKinematics(params_or_default(params, BicycleParams))
 
 
-TARGETS: Mapping[str, Target] = {
-    mt.POSITION_PCT: req.position_pct(0.5),
-    mt.LATERAL_SLIP_RMS: req.LATERAL_SLIP_RMS,
-}
+TARGETS: Mapping[str, Target] = req.vehicle_targets(0.5)
 
 SCENARIOS = (
     *(Scenario(NAME, f"steady turn {phi:g} rad", (const(2.0, 1.0), steer_to(phi)))

@@ -20,7 +20,6 @@ from wmr_mujoco.models.builders import disc as builder
 from wmr_mujoco.models.params import DiscParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import Picture, RobotSpec
-from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -129,8 +128,7 @@ def judge_rolling(scenario: Scenario, trace: Trace, adapter: DiscDynamics,
 
 
 TARGETS: Mapping[str, Target] = {
-    mt.POSITION_PCT: req.position_pct(0.5),
-    mt.LATERAL_SLIP_RMS: req.LATERAL_SLIP_RMS,
+    **req.vehicle_targets(0.5),
     ACCELERATION_PCT: Target.requirement(1.0, f"{req.SOURCE}: single-wheel acceleration "
                                               "within 1 % of τR/(J + mR²)"),
 }

@@ -6,6 +6,7 @@ pick from these and add their own derived bounds beside them.
 
 from __future__ import annotations
 
+from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.metrics import Target
 
 #: Where the requirements come from.
@@ -16,6 +17,11 @@ def position_pct(value: float) -> Target:
     """Worst position error over the run, % of the analytic path length."""
     return Target.requirement(value, f"{SOURCE}: position within {value:g} % of path "
                                      "over the whole run")
+
+
+def vehicle_targets(position: float) -> dict[str, Target]:
+    """Targets of a wheeled vehicle on rate inputs: worst position error and lateral slip."""
+    return {mt.POSITION_PCT: position_pct(position), mt.LATERAL_SLIP_RMS: LATERAL_SLIP_RMS}
 
 
 #: Lateral slip speed at a conventional wheel's contact, RMS over the run, m/s.

@@ -22,7 +22,6 @@ from wmr_mujoco.models.builders import tricycle as builder
 from wmr_mujoco.models.params import RobotParams, TricycleParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import Picture, RobotSpec
-from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -97,10 +96,7 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
     return TricycleKinematics(params_or_default(params, TricycleParams))
 
 
-TARGETS: Mapping[str, Target] = {
-    mt.POSITION_PCT: req.position_pct(0.5),
-    mt.LATERAL_SLIP_RMS: req.LATERAL_SLIP_RMS,
-}
+TARGETS: Mapping[str, Target] = req.vehicle_targets(0.5)
 
 SCENARIOS = (
     # The driven wheel is the inner one in left turns: speed first, then steering, so

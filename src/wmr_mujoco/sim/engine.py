@@ -30,15 +30,6 @@ class Engine(str, enum.Enum):
     LOOP = "loop"
 
 
-def parse_engine(engine: Engine | str) -> Engine:
-    """The engine from an enum member or its value.
-
-    Raises:
-        ValueError: unknown engine; the message lists the valid ones.
-    """
-    return parse_choice(Engine, engine, "engine")
-
-
 def get_state(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
     """The full physics state of ``data``."""
     state = np.empty(mujoco.mj_stateSize(model, STATE_SPEC))
@@ -61,7 +52,7 @@ def simulate(model: mujoco.MjModel, data: mujoco.MjData, controls: np.ndarray,
         ValueError: unknown engine.
         SimulationDivergedError: NaN or MuJoCo warnings.
     """
-    engine = parse_engine(engine)
+    engine = parse_choice(Engine, engine, "engine")
     states = np.empty((len(controls) + 1, mujoco.mj_stateSize(model, STATE_SPEC)))
     states[0] = get_state(model, data)
     if engine is Engine.ROLLOUT and on_step is None:

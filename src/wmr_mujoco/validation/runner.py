@@ -25,11 +25,12 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic.integrate import rk4_step
+from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.models.actuation import set_actuation_mode
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import get_spec
-from wmr_mujoco.sim.engine import STATE_SPEC, Engine, parse_engine, simulate, simulate_batch
+from wmr_mujoco.sim.engine import STATE_SPEC, Engine, simulate, simulate_batch
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.metrics import (
@@ -236,7 +237,7 @@ def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | Non
     failure is attributed. ``"loop"`` steps each scenario in Python, one after the other.
     Measurement scenarios run through their own ``evaluate``.
     """
-    engine = parse_engine(engine)
+    engine = parse_choice(Engine, engine, "engine")
     results = _run_batched(scenarios, progress) if engine is Engine.ROLLOUT else {}
     for i, s in enumerate(scenarios):
         if i not in results:

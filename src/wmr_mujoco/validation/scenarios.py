@@ -37,15 +37,6 @@ class ScenarioKind(str, enum.Enum):
     MEASUREMENT = "measurement"
 
 
-def parse_kind(kind: ScenarioKind | str) -> ScenarioKind:
-    """The kind from an enum member or its value.
-
-    Raises:
-        ValueError: unknown kind; the message lists the valid ones.
-    """
-    return parse_choice(ScenarioKind, kind, "scenario kind")
-
-
 @dataclass(frozen=True)
 class MeasurementResult:
     """What a measurement scenario's ``evaluate`` returns.
@@ -90,7 +81,7 @@ class Scenario:
     description: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "kind", parse_kind(self.kind))
+        object.__setattr__(self, "kind", parse_choice(ScenarioKind, self.kind, "scenario kind"))
         if (self.kind is ScenarioKind.MEASUREMENT) != (self.evaluate is not None):
             raise ValueError(f"{self.key}: a {self.kind.value} scenario "
                              f"{'needs' if self.evaluate is None else 'takes no'} evaluate")
