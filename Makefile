@@ -46,7 +46,8 @@ study: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/wmr bench
 
-# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into README.md.
+# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into README.md
+# (a missing report changes nothing; `--only "validation results"` pastes one section).
 readme: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.docs_sync.readme_sync
 

@@ -44,3 +44,14 @@ def test_text_table_and_slug(results):
     assert table.splitlines()[0].split()[:3] == ["robot", "scenario", "metric"]
     assert "FAIL" in table
     assert slug("omni3/translate 45°") == "omni3-translate-45deg"
+
+
+def test_markdown_cells_escape_pipes():
+    from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
+    from wmr_mujoco.validation.report import markdown_table
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    s = Scenario("disc", "s", (const(1.0),))
+    row = Row.of("disc", "s", Metric("m", 1.0, "", Target.derived(2.0, "|F| ≤ μN"), "|x|"))
+    line = markdown_table([ScenarioResult(s, [row], Trace())]).splitlines()[-1]
+    assert line.count(" | ") + 2 == 9 and "\\|F\\|" in line and "\\|x\\|" in line

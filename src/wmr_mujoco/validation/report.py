@@ -53,6 +53,11 @@ def text_table(results: Sequence[ScenarioResult], judged_only: bool = False) -> 
     return "\n".join(lines)
 
 
+def _cell_text(text: str) -> str:
+    """Text safe inside a Markdown table cell (``|`` escaped)."""
+    return text.replace("|", "\\|")
+
+
 def markdown_table(results: Sequence[ScenarioResult]) -> str:
     """Every row: value, target with its basis (requirement or derived bound), verdict."""
     lines = ["| robot | scenario | metric | value | target | basis of the target | pass | note |",
@@ -60,8 +65,9 @@ def markdown_table(results: Sequence[ScenarioResult]) -> str:
     for res in results:
         for r in res.rows:
             target = "" if r.target is None else f"≤ {_fmt(r.target)} {r.unit}"
-            lines.append(f"| {r.robot} | {res.scenario.name} | {r.metric} | {_fmt(r.value)} "
-                         f"{r.unit} | {target} | {r.basis} | {_verdict(r)} | {r.note} |")
+            lines.append(f"| {r.robot} | {res.scenario.name} | {_cell_text(r.metric)} | "
+                         f"{_fmt(r.value)} {r.unit} | {target} | {_cell_text(r.basis)} | "
+                         f"{_verdict(r)} | {_cell_text(r.note)} |")
     return "\n".join(lines)
 
 
