@@ -109,6 +109,8 @@ def test_a_name_cannot_be_registered_twice():
     ({"scenarios": (Scenario("disc", "a", (const(1.0),)),)}, "scenarios of other robots"),
     ({"adapters": {}}, "has no kinematic adapter"),
     ({"build": None}, "give both build and params_type"),
+    ({"scenarios": (Scenario(NAME, "t", (const(1.0),), kind="dynamic"),),
+      "adapters": {ScenarioKind.DYNAMIC: lambda s, m, p: None}}, "has no judge for dynamic"),
 ])
 def test_inconsistent_entries_are_refused(change, match):
     with pytest.raises(ValueError, match=match):

@@ -90,9 +90,14 @@ class RobotSpec(Generic[P]):
         if wrong:
             raise ValueError(f"robot {self.name!r} lists scenarios of other robots: {wrong}")
         for s in self.scenarios:
-            if s.kind is not ScenarioKind.MEASUREMENT and s.kind not in self.adapters:
+            if s.kind is ScenarioKind.MEASUREMENT:
+                continue
+            if s.kind not in self.adapters:
                 raise ValueError(f"{s.key}: robot {self.name!r} has no {s.kind.value} "
                                  f"adapter; it has: {[k.value for k in self.adapters]}")
+            if self.judge(s.kind) is None:
+                raise ValueError(f"{s.key}: robot {self.name!r} has no judge for "
+                                 f"{s.kind.value} scenarios")
         for label, chosen in (("demo", self.demo_scenario), ("bench", self.bench_scenario),
                               ("render", self.render_scenario)):
             if chosen is not None and chosen not in names:
