@@ -16,7 +16,7 @@ import pytest
 from scipy.optimize import brentq
 
 from wmr_mujoco.analytic import whipple as wa
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.models.params_whipple import WhippleParams
 
 PUBLISHED = {
     "M": [[80.81722, 2.31941332208709], [2.31941332208709, 0.29784188199686]],

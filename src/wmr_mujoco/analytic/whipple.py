@@ -5,7 +5,7 @@ lean φ and steer δ of the knife-edge, no-slip bicycle obey
 
     M q̈ + v C1 q̇ + (g K0 + v² K2) q = f,    q = (φ, δ),  f = (T_φ, T_δ).
 
-Every entry is a formula of :class:`~wmr_mujoco.whipple_params.WhippleParams` (paper
+Every entry is a formula of :class:`~wmr_mujoco.models.params_whipple.WhippleParams` (paper
 frame: x forward, y right, z down, origin at the rear contact). Whole-bicycle sums:
 
     m_T = m_R + m_B + m_H + m_F
@@ -50,7 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
+from wmr_mujoco.models.params_whipple import DEFAULT_PARAMS, WhippleParams
 
 
 @dataclass(frozen=True)

@@ -12,11 +12,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.builders import whipple as wb
-from wmr_mujoco.builders.common import to_xml
-from wmr_mujoco.paths import MODELS_DIR
-from wmr_mujoco.whipple_measure import compile_model, with_sim
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple.rolling import compile_model
 
 P = np.diag([1.0, -1.0, -1.0])
 
@@ -112,7 +109,7 @@ def test_knife_edge_contact_offset():
     sqrt(b² sin²φ + R² cos²φ) high. Checked with a wide collider (b = 20 mm, offset 0.4
     mm) so the formula is tested, not the noise. Bound: 1e-6 m (the test's 1 µm
     penetration)."""
-    p = with_sim(WhippleParams(), wheel_half_width=0.02)
+    p = WhippleParams().with_sim(wheel_half_width=0.02)
     model = compile_model(p)
     data = mujoco.MjData(model)
     lean, b, r = 0.3, p.sim.wheel_half_width, p.rear_radius
@@ -128,10 +125,3 @@ def test_knife_edge_contact_offset():
     expected = -b * b * math.sin(lean) / height  # towards the floor side: -y_body
     assert offset == pytest.approx(expected, abs=1e-6)
     assert abs(expected) > 3e-4
-
-
-def test_checked_in_xml_matches_builder():
-    text = (MODELS_DIR / "whipple" / "whipple.xml").read_text()
-    assert text == to_xml(wb.build(WhippleParams()))
-    scene = mujoco.MjModel.from_xml_path(str(MODELS_DIR / "whipple" / "scene.xml"))
-    assert scene.nv == 9 and scene.nu == 2

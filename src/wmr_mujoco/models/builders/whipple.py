@@ -36,9 +36,9 @@ import math
 import numpy as np
 from dm_control import mjcf
 
-from wmr_mujoco.builders import common
-from wmr_mujoco.params import SimParams
-from wmr_mujoco.whipple_params import DEFAULT_PARAMS, WhippleParams
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.params import SimParams
+from wmr_mujoco.models.params_whipple import DEFAULT_PARAMS, WhippleParams
 
 #: Paper frame to MuJoCo world: rotation by π about x.
 PAPER_TO_MJ = np.diag([1.0, -1.0, -1.0])

@@ -1,12 +1,12 @@
-"""The fidelity-versus-cost study: its settings and its table."""
+"""The Whipple fidelity-versus-cost study: its settings, its rows and its tables."""
 
 from __future__ import annotations
 
 import dataclasses
 
-from wmr_mujoco import whipple_measure as wm
-from wmr_mujoco import whipple_study as ws
-from wmr_mujoco.whipple_params import WhippleParams
+from wmr_mujoco.bench import whipple_study as ws
+from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import eigen
 
 
 def test_configs_change_only_simulation_settings():
@@ -14,7 +14,7 @@ def test_configs_change_only_simulation_settings():
     configs = ws.study_configs(base)
     assert configs[0] == ("default", base)
     labels = [label for label, _ in configs]
-    assert len(labels) == len(set(labels))
+    assert len(labels) == len(set(labels)) and "implicitfast" in labels
     for _, p in configs[1:]:
         assert p.sim != base.sim
         assert dataclasses.replace(p, sim=base.sim) == base
@@ -34,6 +34,14 @@ def test_split_contact_pairs_reproduce_the_default_model():
     tau = p.sim.contact_timeconst
     split = ws.split_contact_model(p, tau, tau)
     assert split.npair == 2
-    a = wm.measure_modes(p, 5.0, split).benchmark
-    b = wm.measure_modes(p, 5.0).benchmark
+    a = eigen.measure_modes(p, 5.0, split).benchmark
+    b = eigen.measure_modes(p, 5.0).benchmark
     assert abs(a - b).max() < 1e-6
+
+
+def test_self_stability_text_says_where_the_benchmark_cannot_meet_10_percent():
+    text = ws.self_stability_text()
+    lines = text.splitlines()
+    assert len(lines) == 3
+    assert "cannot meet the 10 % floor" in lines[2] and "5.5 m/s" in lines[2]
+    assert "cannot" not in lines[0] + lines[1]

@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from wmr_mujoco.whipple_params import WhippleParams, WhippleSimParams
+from wmr_mujoco.models.params_whipple import WhippleParams, WhippleSimParams
 
 
 def test_defaults_are_table_1():

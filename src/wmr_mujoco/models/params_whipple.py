@@ -16,11 +16,11 @@ which keeps the diagonal and ``I_yz`` and flips the signs of ``I_xz`` and ``I_xy
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from wmr_mujoco.params import _check_range
+from wmr_mujoco.models.params import _check_range
 
 #: Integrators the study compares (MuJoCo names).
 INTEGRATORS = ("implicitfast", "implicit", "RK4", "Euler")
@@ -50,7 +50,7 @@ class WhippleSimParams:
     """
 
     timestep: float = 0.001
-    integrator: str = "implicitfast"
+    integrator: str = "implicit"
     contact_timeconst: float = 0.002
     contact_dampratio: float = 1.0
     impratio: float = 10.0
@@ -179,6 +179,10 @@ class WhippleParams:
             ixx, iyy = value
             return np.diag([ixx, iyy, ixx])
         return _frame_tensor(value)
+
+    def with_sim(self, **changes: object) -> WhippleParams:
+        """These parameters with some simulation settings changed (validated again)."""
+        return replace(self, sim=replace(self.sim, **changes))
 
     @property
     def total_mass(self) -> float:
