@@ -12,6 +12,7 @@ push runs) and the real-time factor, and writes into ``models/whipple/README.md`
 * ``whipple eigenvalues``: MuJoCo against the benchmark at 1, 3, 5, 7, 10 m/s;
 * ``whipple metrics``: every judged metric of ``wmr validate whipple`` at the defaults;
 * ``whipple self-stability``: what the benchmark's own equations reach after the push;
+* ``whipple integrator cost``: the default integrator's cost against ``implicitfast``;
 
 and the eigenvalue-versus-speed figure ``models/whipple/eigenvalues.png``. It runs in
 well under a minute on one core.
@@ -66,6 +67,26 @@ def real_time_factor(params: WhippleParams, duration: float = 2.0, repeats: int 
             mujoco.mj_step(model, data)
         best = min(best, time.perf_counter() - t0)
     return duration / best
+
+
+def integrator_cost_text(rounds: int = 5) -> str:
+    """The default's integrator against ``implicitfast``: real-time factors timed in turn.
+
+    Interleaved (``rounds`` rounds, each integrator two 2-s runs per round, best of all),
+    so that the load of a shared machine falls on both alike.
+    """
+    base = WhippleParams()
+    other = "implicitfast" if base.sim.integrator != "implicitfast" else "implicit"
+    params = {base.sim.integrator: base, other: base.with_sim(integrator=other)}
+    best = dict.fromkeys(params, 0.0)
+    for _ in range(rounds):
+        for name, p in params.items():
+            best[name] = max(best[name], real_time_factor(p, repeats=2))
+    d, o = best[base.sim.integrator], best[other]
+    return (f"Cost of the integrators, timed in turn (best of {2 * rounds} 2-s runs each, "
+            f"one thread): `{base.sim.integrator}` (default) {d:.0f} × real time, "
+            f"`{other}` {o:.0f} × real time; the default costs {o / d:.2f} × as much "
+            f"per simulated second.")
 
 
 def evaluations_per_second(params: WhippleParams) -> float:
@@ -295,7 +316,8 @@ def main(argv: Sequence[str] | None = None) -> None:
     texts = {"whipple study": table(rows), "whipple contact split": contact_split_table(),
              "whipple eigenvalues": eigen_table(),
              "whipple metrics": metrics_table(measure(), rows[0].rtf),
-             "whipple self-stability": self_stability_text()}
+             "whipple self-stability": self_stability_text(),
+             "whipple integrator cost": integrator_cost_text()}
     for key, text in texts.items():
         print(f"\n## {key}\n{text}")
     if not args.no_write:

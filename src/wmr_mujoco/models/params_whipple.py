@@ -20,15 +20,15 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from wmr_mujoco.models.params import _check_range
+from wmr_mujoco.models.params import SimParams, _check_range
 
 #: Integrators the study compares (MuJoCo names).
 INTEGRATORS = ("implicitfast", "implicit", "RK4", "Euler")
 
 
 @dataclass(frozen=True)
-class WhippleSimParams:
-    """Simulation settings of the Whipple model.
+class WhippleSimParams(SimParams):
+    """Simulation settings of the Whipple model: :class:`SimParams` and more.
 
     Attributes:
         timestep: integration step, s.
@@ -60,15 +60,13 @@ class WhippleSimParams:
     noslip_iterations: int = 0
 
     def __post_init__(self) -> None:
+        super().__post_init__()
         _check_range(self, "timestep", 0.0, 0.01)
         if self.integrator not in INTEGRATORS:
             raise ValueError(f"WhippleSimParams.integrator = {self.integrator!r}; valid "
                              f"values are {', '.join(INTEGRATORS)}")
-        _check_range(self, "contact_timeconst", 0.0, 0.1)
         _check_range(self, "contact_dampratio", 0.0, 10.0)
-        _check_range(self, "impratio", 1.0, 1e4, low_inclusive=True)
         _check_range(self, "solimp_dmax", 0.5, 0.9999)
-        _check_range(self, "friction", 0.0, 10.0)
         _check_range(self, "wheel_half_width", 0.0, 0.05)
         if not (isinstance(self.noslip_iterations, int) and 0 <= self.noslip_iterations <= 100):
             raise ValueError(f"WhippleSimParams.noslip_iterations = {self.noslip_iterations!r}; "

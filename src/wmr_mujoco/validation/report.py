@@ -157,7 +157,8 @@ def _plot_series(axes: Sequence[Axes], series: Sequence[Series]) -> None:
     for ax, ((xlabel, ylabel), members) in zip(axes, list(groups.items())[:len(axes)],
                                                 strict=False):
         for s in members:
-            ax.plot(s.x, s.y, s.style, label=s.label, color=s.color, ms=4)
+            colour = {} if s.color is None else {"color": s.color}
+            ax.plot(s.x, s.y, s.style, label=s.label, ms=4, **colour)
         ax.set(xlabel=xlabel, ylabel=ylabel)
         ax.legend(fontsize=7)
     for ax in axes[len(groups):]:

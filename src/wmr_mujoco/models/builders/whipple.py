@@ -37,7 +37,6 @@ import numpy as np
 from dm_control import mjcf
 
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.params import SimParams
 from wmr_mujoco.models.params_whipple import DEFAULT_PARAMS, WhippleParams
 
 #: Paper frame to MuJoCo world: rotation by π about x.
@@ -79,12 +78,6 @@ def steer_pivot(p: WhippleParams) -> np.ndarray:
     return ground + np.dot(centre - ground, axis) * axis
 
 
-def _sim_defaults(p: WhippleParams) -> SimParams:
-    s = p.sim
-    return SimParams(timestep=s.timestep, contact_timeconst=s.contact_timeconst,
-                     impratio=min(s.impratio, 1000.0), friction=s.friction)
-
-
 def _add_wheel(parent: mjcf.Element, name: str, pos: np.ndarray, radius: float,
                mass: float, inertia: tuple[float, float], half_width: float) -> None:
     body = parent.add("body", name=name, pos=list(pos))
@@ -116,9 +109,8 @@ def build(params: WhippleParams = DEFAULT_PARAMS) -> mjcf.RootElement:
     """
     p = params
     s = p.sim
-    root = common.new_root("whipple", _sim_defaults(p))
+    root = common.new_root("whipple", s)
     root.option.integrator = s.integrator
-    root.option.impratio = s.impratio
     if s.noslip_iterations:
         root.option.noslip_iterations = s.noslip_iterations
     root.size.nuser_actuator = 0
