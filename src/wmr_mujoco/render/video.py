@@ -126,7 +126,7 @@ def render_free_run(scenario: Scenario, width: int = 640, height: int = 480, fps
     every = 1.0 / fps
     with rendering.Filmer(model, width, height, cam) as filmer:
         next_t = data.time
-        for _ in range(nstep + 1):
+        for _ in range(nstep):
             if data.time + 1e-9 >= next_t:
                 next_t += every
                 site = data.site_xpos[base]

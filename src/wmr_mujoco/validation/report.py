@@ -101,7 +101,7 @@ def summary_table(results: Sequence[ScenarioResult]) -> str:
                  _cell(_value(res, "final position error", "% of path"), " %"),
                  _cell(_value(res, "worst heading error", "deg"), "°"),
                  _cell(_value(res, "final heading error", "deg"), "°"), slip]
-        lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {headline} | "
+        lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {_cell_text(headline)} | "
                      f"{' | '.join(cells)} | {verdict} |")
     return "\n".join(lines)
 
