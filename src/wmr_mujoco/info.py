@@ -7,6 +7,7 @@ import dataclasses
 import mujoco
 
 from wmr_mujoco.models.actuation import actuation_mode
+from wmr_mujoco.models.builders.common import NUSER_ACTUATOR
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import get_spec
@@ -60,11 +61,11 @@ def describe(robot: str) -> str:
         lines.append(f"  {_name(model, mujoco.mjtObj.mjOBJ_JOINT, j):<22} {jtype:<6}"
                      f" body {_name(model, mujoco.mjtObj.mjOBJ_BODY, model.jnt_bodyid[j])}"
                      f"{extra}")
-    if model.nu and spec.build is not None:
+    if model.nu and spec.build is not None and model.nuser_actuator >= NUSER_ACTUATOR:
         lines.append(f"actuators (mode: {actuation_mode(model).value}; "
                      "switch with wmr_mujoco.set_actuation_mode):")
     elif model.nu:
-        lines.append("actuators (the model file's own):")
+        lines.append("actuators (the model's own, without rate/torque switching):")
     for a in range(model.nu):
         trn = _TRN_TYPES[int(model.actuator_trntype[a])]
         objtype = (mujoco.mjtObj.mjOBJ_TENDON if trn == "tendon" else mujoco.mjtObj.mjOBJ_JOINT)
