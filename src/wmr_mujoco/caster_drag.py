@@ -10,8 +10,7 @@ Two independent measurements on the differential drive (:mod:`wmr_mujoco.builder
    loss. Reported for a straight run, an arc and a spin in place, beside the wheels'
    total drive force ``Σ τ_i / R`` over the same window. With no losses that force is
    not zero in turns: it is the forward component of the CoM's centripetal force,
-   ``M ω² d`` for a CoM a distance d behind the axle (0.10 N on the arc, 0.92 N in the
-   spin for the defaults), not a resistance.
+   ``M ω² d`` for a CoM a distance d behind the axle, not a resistance.
 2. **Coasting.** From a steady straight run the motors switch to zero torque and the robot
    coasts for ``COAST_TIME``. The same run with the caster contact made frictionless
    (``condim = 1``: it can push up, never sideways) is the reference. The drag the
@@ -32,7 +31,7 @@ import numpy as np
 from wmr_mujoco.actuation import set_actuation_mode
 from wmr_mujoco.analytic import diffdrive
 from wmr_mujoco.builders import common
-from wmr_mujoco.params_wheeled import DiffDriveParams
+from wmr_mujoco.params_wheeled import DIFFDRIVE, DiffDriveParams
 from wmr_mujoco.simulation import check_healthy
 
 GRAVITY = 9.81
@@ -109,7 +108,7 @@ class DragFigures:
                 (f"wheel drive force Σ τ/R, {self.manoeuvre}, mean", self.wheel_force, "N")]
 
 
-def contact_drag(params: DiffDriveParams = DiffDriveParams(),
+def contact_drag(params: DiffDriveParams = DIFFDRIVE,
                  manoeuvres: tuple[tuple[str, float, float], ...] = (
                      ("straight 0.5 m/s", 0.5, 0.0), ("arc 0.5 m/s, 0.5 rad/s", 0.5, 0.5),
                      ("spin 1.5 rad/s", 0.0, 1.5)),
@@ -124,7 +123,8 @@ def contact_drag(params: DiffDriveParams = DiffDriveParams(),
         drag: list[float] = []
         force: list[float] = []
 
-        def record(d: mujoco.MjData) -> None:
+        def record(d: mujoco.MjData, drag: list[float] = drag,
+                   force: list[float] = force) -> None:
             drag.append(caster_contact_drag(model, d))
             force.append(float(d.actuator_force.sum()) / params.wheel.radius)
 
@@ -150,7 +150,7 @@ def _coast_deceleration(params: DiffDriveParams, frictionless: bool, v: float) -
     return float(-np.polyfit(t, speeds, 1)[0])
 
 
-def coasting_drag(params: DiffDriveParams = DiffDriveParams(), v: float = 0.5
+def coasting_drag(params: DiffDriveParams = DIFFDRIVE, v: float = 0.5
                   ) -> dict[str, float]:
     """Measurement 2: decelerations with the rolling ball and the frictionless reference."""
     a_ball = _coast_deceleration(params, False, v)
@@ -165,7 +165,7 @@ def coasting_drag(params: DiffDriveParams = DiffDriveParams(), v: float = 0.5
             "caster drag from coasting / weight": force / (params.total_mass * GRAVITY)}
 
 
-def drag_table(params: DiffDriveParams = DiffDriveParams()) -> str:
+def drag_table(params: DiffDriveParams = DIFFDRIVE) -> str:
     """Markdown table of both measurements."""
     rows = ["| measurement | value | unit |", "|---|---|---|"]
     for fig in contact_drag(params):

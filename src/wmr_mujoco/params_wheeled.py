@@ -17,7 +17,6 @@ Rolling without slip on the floor, a ball pushed at its centre by force F accele
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 from wmr_mujoco.params import (
@@ -30,6 +29,7 @@ from wmr_mujoco.params import (
 
 #: Wheel, fork and drive shared by the three robots (the tricycle's proven sizes).
 _WHEEL = WheelParams(radius=0.08, width=0.03, mass=0.4)
+_SIM = SimParams()
 _DRIVE = DriveParams(wheel_kv=10.0, wheel_armature=0.01, wheel_torque_limit=10.0,
                      steer_kp=100.0, steer_kv=0.5, steer_angle_limit=1.4)
 
@@ -62,6 +62,9 @@ class BallCasterParams:
         return self.mass + self.inertia / self.radius**2
 
 
+_CASTER = BallCasterParams()
+
+
 def _check_caster_fits(obj: object, wheel: WheelParams, caster: BallCasterParams) -> None:
     if caster.radius >= wheel.radius:
         raise ValueError(f"{type(obj).__name__}.caster.radius = {caster.radius!r} must be "
@@ -91,13 +94,13 @@ class DiffDriveParams:
 
     wheel: WheelParams = _WHEEL
     track: float = 0.36
-    caster: BallCasterParams = BallCasterParams()
+    caster: BallCasterParams = _CASTER
     caster_x: float = -0.25
     chassis_mass: float = 5.0
     chassis_com_x: float = -0.08
     chassis_size: tuple[float, float, float] = (0.34, 0.28, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = SimParams()
+    sim: SimParams = _SIM
 
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("caster_x", "chassis_com_x"))
@@ -146,14 +149,14 @@ class SingleSteerParams:
 
     wheel: WheelParams = _WHEEL
     fork_mass: float = 0.3
-    caster: BallCasterParams = BallCasterParams()
+    caster: BallCasterParams = _CASTER
     caster_x: float = 0.32
     caster_y: float = 0.14
     chassis_mass: float = 5.0
     chassis_com_x: float = 0.16
     chassis_size: tuple[float, float, float] = (0.4, 0.3, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = SimParams()
+    sim: SimParams = _SIM
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
@@ -194,13 +197,13 @@ class DoubleSteerParams:
     wheel: WheelParams = _WHEEL
     half_wheelbase: float = 0.2
     fork_mass: float = 0.3
-    caster: BallCasterParams = BallCasterParams()
+    caster: BallCasterParams = _CASTER
     caster_y: float = 0.2
     chassis_mass: float = 5.0
     chassis_com_y: float = 0.07
     chassis_size: tuple[float, float, float] = (0.5, 0.3, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = SimParams()
+    sim: SimParams = _SIM
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
@@ -216,5 +219,7 @@ class DoubleSteerParams:
         return self.chassis_mass + 2.0 * (self.fork_mass + self.wheel.mass) + self.caster.mass
 
 
-#: Largest steering angle the scenarios use, kept clear of the ±π/2 singularity.
-MAX_STEER = math.radians(75.0)
+#: Default parameter sets (module-level singletons for argument defaults).
+DIFFDRIVE = DiffDriveParams()
+SINGLE_STEER = SingleSteerParams()
+DOUBLE_STEER = DoubleSteerParams()

@@ -30,15 +30,20 @@ import numpy as np
 from wmr_mujoco.actuation import set_actuation_mode
 from wmr_mujoco.analytic import diffdrive, steered
 from wmr_mujoco.builders import common
-from wmr_mujoco.builders import diffdrive as diffdrive_builder
-from wmr_mujoco.builders import steered as steered_builder
 from wmr_mujoco.builders.scene import add_scene
-from wmr_mujoco.params_wheeled import DiffDriveParams, DoubleSteerParams, SingleSteerParams
-from wmr_mujoco.paths import MODELS_DIR
+from wmr_mujoco.params_wheeled import (
+    DIFFDRIVE,
+    DOUBLE_STEER,
+    SINGLE_STEER,
+    DiffDriveParams,
+    DoubleSteerParams,
+    SingleSteerParams,
+)
 from wmr_mujoco.scenarios import Scenario
 from wmr_mujoco.signals import Sine, const, pulses
 from wmr_mujoco.simulation import check_healthy
 from wmr_mujoco.validation import lateral_slip, schedule, simulate
+from wmr_mujoco.wheeled_registry import SPECS, get_spec
 
 #: Requirements (issue 15): position error ≤ 0.5 % of path (final and worst over the run),
 #: lateral slip RMS ≤ 1 mm/s at every conventional wheel.
@@ -46,28 +51,21 @@ POSITION_PCT = 0.5
 LATERAL_SLIP_RMS = 1e-3
 REQUIREMENT = "requirement (issue 15)"
 
-#: name -> (builder, parameter type, model file stem)
-ROBOTS: dict[str, tuple[Any, type]] = {
-    "diffdrive": (diffdrive_builder.build, DiffDriveParams),
-    "single_steer": (steered_builder.build_single, SingleSteerParams),
-    "double_steer": (steered_builder.build_double, DoubleSteerParams),
-}
+ROBOTS = tuple(SPECS)
 
 
 def _check_robot(robot: str) -> None:
-    if robot not in ROBOTS:
-        raise ValueError(f"unknown robot {robot!r}; valid robots are: {', '.join(ROBOTS)}")
+    get_spec(robot)
 
 
 def build_scene(robot: str, params: Any = None) -> Any:
     """The robot's mjcf root with floor and light (defaults if ``params`` is None)."""
-    _check_robot(robot)
-    build, ptype = ROBOTS[robot]
-    params = ptype() if params is None else params
-    if not isinstance(params, ptype):
-        raise ValueError(f"params for {robot!r} must be a {ptype.__name__}, "
+    spec = get_spec(robot)
+    params = spec.params_type() if params is None else params
+    if not isinstance(params, spec.params_type):
+        raise ValueError(f"params for {robot!r} must be a {spec.params_type.__name__}, "
                          f"got {type(params).__name__}")
-    root = build(params)
+    root = spec.build(params)
     root.model = f"{root.model} scene"
     add_scene(root)
     return root
@@ -75,9 +73,9 @@ def build_scene(robot: str, params: Any = None) -> Any:
 
 def load(robot: str, params: Any = None) -> mujoco.MjModel:
     """The checked-in ``models/<robot>/scene.xml``, or the scene built from ``params``."""
-    _check_robot(robot)
+    spec = get_spec(robot)
     if params is None:
-        path = MODELS_DIR / robot / "scene.xml"
+        path = spec.scene_path
         if not path.is_file():
             raise FileNotFoundError(f"{path} missing; run `python -m wmr_mujoco.wheeled_export`")
         return mujoco.MjModel.from_xml_path(str(path))
@@ -100,7 +98,7 @@ def chassis_pose(data: mujoco.MjData) -> np.ndarray:
 class DiffDriveKinematics:
     """``x = (x, y, ψ)`` of the axle midpoint; ``u = (v, ω)``; controls ``(v_L/R, v_R/R)``."""
 
-    params: DiffDriveParams = DiffDriveParams()
+    params: DiffDriveParams = DIFFDRIVE
     robot: str = "diffdrive"
     mode: str = "rate"
     state_names: tuple[str, ...] = ("x", "y", "heading")
@@ -112,12 +110,15 @@ class DiffDriveKinematics:
         return np.array(diffdrive.wheel_speeds(u[0], u[1], self.params.track))
 
     def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Actuator controls for input ``u``."""
         return self.wheel_speeds(u, analytic_state) / self.params.wheel.radius
 
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Analytic state derivative."""
         return diffdrive.rates(x, self.wheel_speeds(u, x), self.params.track)
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """The analytic state's quantities read from the simulation."""
         return chassis_pose(data)
 
 
@@ -125,7 +126,7 @@ class DiffDriveKinematics:
 class SingleSteerDynamics:
     """``x = (x, y, ψ, β, p)`` of P; ``u = (v_w, ω)``; controls ``(v_w/R, ω)``."""
 
-    params: SingleSteerParams = SingleSteerParams()
+    params: SingleSteerParams = SINGLE_STEER
     robot: str = "single_steer"
     mode: str = "rate"
     state_names: tuple[str, ...] = ("x", "y", "heading", "steer", "momentum")
@@ -142,12 +143,15 @@ class SingleSteerDynamics:
         return np.array([u[0]])
 
     def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Actuator controls for input ``u``."""
         return np.array([u[0] / self.params.wheel.radius, u[1]])
 
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Analytic state derivative."""
         return steered.single_rates(x, u, self.inertia)
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """The analytic state's quantities read from the simulation."""
         beta = data.joint("drive_steer").qpos[0]
         v_w = data.joint("drive_wheel").qvel[0] * self.params.wheel.radius
         mom = steered.single_momentum(data.qvel[5], v_w, beta,
@@ -163,7 +167,7 @@ class DoubleSteerKinematics:
     steering angles (an open-loop schedule known in advance).
     """
 
-    params: DoubleSteerParams = DoubleSteerParams()
+    params: DoubleSteerParams = DOUBLE_STEER
     robot: str = "double_steer"
     mode: str = "rate"
     state_names: tuple[str, ...] = ("x", "y", "heading", "front steer", "rear steer")
@@ -176,13 +180,16 @@ class DoubleSteerKinematics:
         return np.array([u[0], steered.double_rear_speed(u[0], x[3], x[4])])
 
     def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Actuator controls for input ``u``."""
         v = self.wheel_speeds(u, analytic_state) / self.params.wheel.radius
         return np.array([v[0], u[1], v[1], u[2]])
 
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Analytic state derivative."""
         return steered.double_rates(x, u, self.params.half_wheelbase)
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """The analytic state's quantities read from the simulation."""
         return np.append(chassis_pose(data), [data.joint("front_steer").qpos[0],
                                               data.joint("rear_steer").qpos[0]])
 

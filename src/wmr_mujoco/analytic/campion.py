@@ -32,8 +32,9 @@ How wheels are found (heuristics; ``docs`` of :func:`find_wheels`):
        ``[H]`` fixed wheel; ``[V, H]`` steerable wheel, *centred* if the vertical axis
        passes within ``CENTRED_TOL`` of the wheel centre (the H anchor) and an
        off-centred *castor* otherwise (offset d reported); ``[H, hinge]`` Swedish wheel
-       (hub H, roller hinge at any orientation, since it turns with the hub), roller angle γ = angle of the roller axis to the wheel plane,
-       signed against the rolling direction; ``[ball]`` ball wheel (sphere on a ball
+       (hub H, roller hinge at any orientation, since it turns with the hub), roller
+       angle γ = angle of the roller axis to the wheel plane, signed against the
+       rolling direction; ``[ball]`` ball wheel (sphere on a ball
        joint).
     4. Wheels are grouped by their spin joint (the hub for Swedish wheels); a wheel none
        of whose colliders touches the floor after settling is an error.

@@ -6,13 +6,13 @@ from dm_control import mjcf
 
 from wmr_mujoco.builders import common
 from wmr_mujoco.builders.caster import add_ball_caster
-from wmr_mujoco.params_wheeled import DiffDriveParams
+from wmr_mujoco.params_wheeled import DIFFDRIVE, DiffDriveParams
 
 #: Plate CoM height above the axle.
 CHASSIS_COM_HEIGHT = 0.04
 
 
-def build(params: DiffDriveParams = DiffDriveParams()) -> mjcf.RootElement:
+def build(params: DiffDriveParams = DIFFDRIVE) -> mjcf.RootElement:
     """Differential drive on a free joint resting on two wheels and a ball caster.
 
     Kinematic tree::

@@ -14,7 +14,12 @@ from dm_control import mjcf
 from wmr_mujoco.builders import common
 from wmr_mujoco.builders.caster import add_ball_caster
 from wmr_mujoco.params import DriveParams, WheelParams
-from wmr_mujoco.params_wheeled import DoubleSteerParams, SingleSteerParams
+from wmr_mujoco.params_wheeled import (
+    DOUBLE_STEER,
+    SINGLE_STEER,
+    DoubleSteerParams,
+    SingleSteerParams,
+)
 
 CHASSIS_COM_HEIGHT = 0.04
 FORK_HEIGHT = 0.12
@@ -58,7 +63,7 @@ def _chassis(root: mjcf.RootElement, height: float, mass: float, com: Sequence[f
     return chassis, site
 
 
-def build_single(params: SingleSteerParams = SingleSteerParams()) -> mjcf.RootElement:
+def build_single(params: SingleSteerParams = SINGLE_STEER) -> mjcf.RootElement:
     """Class (2,1): one centred steerable driven wheel, two ball casters ahead of it.
 
     Kinematic tree::
@@ -83,7 +88,7 @@ def build_single(params: SingleSteerParams = SingleSteerParams()) -> mjcf.RootEl
     return root
 
 
-def build_double(params: DoubleSteerParams = DoubleSteerParams()) -> mjcf.RootElement:
+def build_double(params: DoubleSteerParams = DOUBLE_STEER) -> mjcf.RootElement:
     """Class (1,2): two centred steerable driven wheels on the x axis and a ball caster.
 
     Kinematic tree::
