@@ -54,11 +54,18 @@ def add_steered_wheel(root: mjcf.RootElement, chassis: mjcf.Element, prefix: str
 
 
 def _chassis(root: mjcf.RootElement, height: float, mass: float, com: Sequence[float],
-             size: Sequence[float]) -> tuple[mjcf.Element, mjcf.Element]:
+             size: Sequence[float], visual_x: tuple[float, float]
+             ) -> tuple[mjcf.Element, mjcf.Element]:
+    """Chassis on a free joint; inertia of the full plate ``size`` about ``com``.
+
+    The visual plate spans only ``visual_x`` along x, so that the wheels stay visible.
+    """
     chassis = root.worldbody.add("body", name="chassis", pos=(0, 0, height))
     chassis.add("freejoint", name="chassis")
     chassis.add("inertial", pos=list(com), mass=mass, diaginertia=common.box_inertia(mass, size))
-    common.add_box_body_geoms(chassis, size, pos=com)
+    x0, x1 = visual_x
+    common.add_box_body_geoms(chassis, (x1 - x0, size[1], size[2]),
+                              pos=(0.5 * (x0 + x1), com[1], com[2]))
     site = chassis.add("site", name="base", pos=(0, 0, 0))
     return chassis, site
 
@@ -78,7 +85,10 @@ def build_single(params: SingleSteerParams = SINGLE_STEER) -> mjcf.RootElement:
     r, rc = p.wheel.radius, p.caster.radius
     root = common.new_root("single_steer", p.sim)
     chassis, site = _chassis(root, r, p.chassis_mass, (p.chassis_com_x, 0, CHASSIS_COM_HEIGHT),
-                             p.chassis_size)
+                             p.chassis_size, (r + 0.015, p.caster_x + 0.05))
+    chassis.add("geom", dclass="visual", type="capsule", size=(0.01,),
+                fromto=(0, 0, FORK_HEIGHT, r + 0.015, 0, CHASSIS_COM_HEIGHT),
+                rgba=common.BODY_RGBA)
     add_steered_wheel(root, chassis, "drive", p.wheel, p.fork_mass, p.drive, (0, 0, 0))
     for side, y in (("left", 1.0), ("right", -1.0)):
         add_ball_caster(chassis, f"caster_{side}", p.caster,
@@ -104,7 +114,9 @@ def build_double(params: DoubleSteerParams = DOUBLE_STEER) -> mjcf.RootElement:
     r, rc, a = p.wheel.radius, p.caster.radius, p.half_wheelbase
     root = common.new_root("double_steer", p.sim)
     chassis, site = _chassis(root, r, p.chassis_mass, (0, p.chassis_com_y, CHASSIS_COM_HEIGHT),
-                             p.chassis_size)
+                             p.chassis_size, (-a + r + 0.015, a - r - 0.015))
+    chassis.add("geom", dclass="visual", type="capsule", size=(0.01,),
+                fromto=(-a, 0, FORK_HEIGHT, a, 0, FORK_HEIGHT), rgba=common.BODY_RGBA)
     for prefix, x in (("front", a), ("rear", -a)):
         add_steered_wheel(root, chassis, prefix, p.wheel, p.fork_mass, p.drive, (x, 0, 0))
     add_ball_caster(chassis, "caster", p.caster, pos=(0, p.caster_y, rc - r))
