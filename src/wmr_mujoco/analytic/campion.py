@@ -25,7 +25,7 @@ How wheels are found (heuristics; ``docs`` of :func:`find_wheels`):
        geom(s) of the world body (a horizontal plane).
     2. The chassis is the top-level body (child of the world) carrying the colliders
        that touch the floor; its own joints (free joint, or slides and a yaw hinge) are
-       the base's degrees of freedom and are not wheel joints.
+       the base's degrees of freedom and are not wheel joints. Its z axis is "vertical".
     3. For every collider body below the chassis, the joints on the path from the
        chassis down to it form its *chain*. Hinges are vertical (|axis·z| > cos 10°) or
        horizontal (|axis·z| < sin 10°); anything else is tilted (unsupported). Chains:
@@ -168,12 +168,18 @@ class _Link:
 
 
 def _chain(model: mujoco.MjModel, data: mujoco.MjData, path: list[int]) -> list[_Link]:
+    """Joints from below the chassis ``path[0]`` down to ``path[-1]``.
+
+    Vertical and horizontal are judged against the chassis z axis, so that a chassis
+    that tipped while settling is still read as built.
+    """
+    up = data.xmat[path[0]].reshape(3, 3)[:, 2]
     links = []
     for b in path[1:]:
         for j in range(model.body_jntadr[b], model.body_jntadr[b] + model.body_jntnum[b]):
             jt = model.jnt_type[j]
             if jt == mujoco.mjtJoint.mjJNT_HINGE:
-                cz = abs(data.xaxis[j][2])
+                cz = abs(data.xaxis[j] @ up)
                 kind = "V" if cz > VERTICAL_COS else ("H" if cz < np.sin(np.radians(10.0))
                                                        else "T")
             elif jt == mujoco.mjtJoint.mjJNT_BALL:
