@@ -71,7 +71,8 @@ def _mecanum_xml(gamma_deg: float, n_rollers: int = 8) -> str:
                 f'{axis[2]:.6f}"/><inertial pos="0 0 0" mass="0.01" diaginertia="1e-6 1e-6 1e-6"/>'
                 f'<geom type="sphere" size="0.01"/></body>')
         wheels.append(f'<body name="wheel{i}" pos="{x} {y} 0"><joint name="hub{i}" type="hinge" '
-                      f'axis="0 1 0"/><inertial pos="0 0 0" mass="0.2" diaginertia="1e-4 2e-4 1e-4"/>'
+                      f'axis="0 1 0"/>'
+                      f'<inertial pos="0 0 0" mass="0.2" diaginertia="1e-4 2e-4 1e-4"/>'
                       f'{"".join(rollers)}</body>')
     return (f'<mujoco><worldbody>{FLOOR}<body name="base" pos="0 0 0.05"><freejoint/>'
             f'<inertial pos="0 0 0" mass="3" diaginertia="0.03 0.03 0.05"/>'

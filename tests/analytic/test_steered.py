@@ -33,6 +33,7 @@ def test_icr_of_the_twist_is_where_the_axles_meet(b1, b2):
 def test_parallel_steering_translates():
     u, v, r = steered.double_twist(0.4, 0.5, 0.5, A)
     assert r == pytest.approx(0.0, abs=1e-15)
+    assert (u, v) == pytest.approx((0.4 * math.cos(0.5), 0.4 * math.sin(0.5)))
     assert np.all(np.isinf(steered.axle_intersection(0.5, 0.5, A)))
 
 
