@@ -163,3 +163,14 @@ def test_fixed_wheels_on_two_axles_are_outside_the_theory():
     c = campion.classify_wheels(wheels)
     assert c.robot_class is None
     assert "more than one axle" in c.reason
+
+
+def test_command_line_classifies_files(tmp_path, capsys):
+    good = tmp_path / "castor.xml"
+    good.write_text(_castor_xml(0.03))
+    bad = tmp_path / "nofloor.xml"
+    bad.write_text(_castor_xml(0.03).replace(FLOOR, ""))
+    assert campion.main([str(good)]) == 0
+    assert "class (2,0)" in capsys.readouterr().out
+    assert campion.main([str(bad)]) == 1
+    assert "no floor" in capsys.readouterr().out

@@ -262,7 +262,9 @@ def find_wheels(model: mujoco.MjModel) -> tuple[tuple[Wheel, ...], tuple[str, ..
         g["bodies"].append(b)
         g["touch"] |= b in touching
     if not groups:
-        raise ValueError("no wheels: no jointed collider below the chassis")
+        raise ValueError(f"no wheels: no jointed collider below the chassis "
+                         f"{_name(model, mujoco.mjtObj.mjOBJ_BODY, chassis)!r} (what touches "
+                         f"the floor is the chassis itself)")
     wheels = []
     for key, g in groups.items():
         name = _name(model, mujoco.mjtObj.mjOBJ_JOINT, key)
@@ -407,3 +409,28 @@ def summary(c: Classification) -> str:
     cls = f"({c.delta_m},{c.delta_s})" if c.robot_class else f"outside the theory: {c.reason}"
     return (f"wheels: {kinds}; δm = {c.delta_m}, δs = {c.delta_s}, "
             f"δM = {c.manoeuvrability}; class {cls}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m wmr_mujoco.analytic.campion SCENE.xml ...``: print each model's class."""
+    import sys
+
+    paths = sys.argv[1:] if argv is None else argv
+    if not paths:
+        print("usage: python -m wmr_mujoco.analytic.campion SCENE.xml [...]")
+        return 2
+    status = 0
+    for path in paths:
+        try:
+            c = classify(mujoco.MjModel.from_xml_path(path))
+            print(f"{path}: {summary(c)}")
+            for note in c.notes:
+                print(f"  note: {note}")
+        except ValueError as err:
+            print(f"{path}: error: {err}")
+            status = 1
+    return status
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
