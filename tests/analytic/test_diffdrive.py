@@ -25,6 +25,12 @@ def test_constant_wheel_speeds_trace_the_unicycle_circle():
     assert np.abs(states - exact).max() < 1e-9
 
 
+def test_unequal_radii_turn_at_equal_rates():
+    # θ̇ = 10 rad/s, R_L = 0.08, R_R = 0.081: v = 10·0.0805, ω = 10·0.001/0.36.
+    v, w = diffdrive.twist_from_rates(10.0, 10.0, B, 0.08, 0.081)
+    assert (v, w) == pytest.approx((0.805, 0.01 / 0.36))
+
+
 def test_icr_on_the_axle():
     assert diffdrive.icr_offset(0.5, 0.5) == pytest.approx(1.0)
     assert diffdrive.icr_offset(0.5, 0.0) == np.inf

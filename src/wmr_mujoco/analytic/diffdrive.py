@@ -34,6 +34,16 @@ def twist(v_left: float, v_right: float, track: float) -> tuple[float, float]:
     return 0.5 * (v_right + v_left), (v_right - v_left) / b
 
 
+def twist_from_rates(rate_left: float, rate_right: float, track: float, left_radius: float,
+                     right_radius: float) -> tuple[float, float]:
+    """``(v, ω)`` from wheel rates: ``v_L = R_L θ̇_L``, ``v_R = R_R θ̇_R``, then :func:`twist`.
+
+    Unequal radii make a robot driven at equal rates turn: ``ω = θ̇ (R_R − R_L)/b``.
+    """
+    rl, rr = positive("left_radius", left_radius), positive("right_radius", right_radius)
+    return twist(rl * rate_left, rr * rate_right, track)
+
+
 def wheel_speeds(v: float, omega: float, track: float) -> tuple[float, float]:
     """``(v_L, v_R) = (v − ω b/2, v + ω b/2)``: the inverse of :func:`twist`."""
     half = positive("track", track) / 2.0
