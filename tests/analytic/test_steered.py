@@ -6,10 +6,10 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco import wheeled_scenarios as ws
 from wmr_mujoco.analytic import steered
 from wmr_mujoco.analytic.integrate import integrate
-from wmr_mujoco.params_wheeled import SingleSteerParams
+from wmr_mujoco.models.loading import load
+from wmr_mujoco.models.params_wheeled import SingleSteerParams
 
 A = 0.2
 
@@ -76,7 +76,7 @@ def test_icr_lies_on_the_steered_axle_line():
 def test_sleigh_mass_data_match_the_compiled_model():
     # Independent: sum MuJoCo's own body masses and inertias about the steering axis.
     p = SingleSteerParams()
-    model = ws.load("single_steer")
+    model = load("single_steer")
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     pivot = data.site_xpos[model.site("base").id]

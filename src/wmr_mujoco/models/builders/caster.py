@@ -6,8 +6,8 @@ from collections.abc import Sequence
 
 from dm_control import mjcf
 
-from wmr_mujoco.builders import common
-from wmr_mujoco.params_wheeled import BallCasterParams
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.params_wheeled import BallCasterParams
 
 SOCKET_RGBA = (0.6, 0.6, 0.65, 0.35)
 BALL_RGBA = (0.85, 0.85, 0.88, 1.0)
@@ -26,7 +26,9 @@ def add_ball_caster(parent: mjcf.Element, name: str, caster: BallCasterParams,
     The ball's inertia is the uniform sphere's ``(2/5) m r_c²`` about every axis. The
     joint has no damping, friction loss or armature, and the collider has condim 3 (no
     torsional or rolling friction), so the ball rolls and spins freely in every
-    direction; the socket is a translucent visual cup on ``parent``.
+    direction; with ``caster.rolling_friction`` it has condim 6 and the collision
+    class's torsional and rolling coefficients resist spinning and rolling. The socket
+    is a translucent visual cup on ``parent``.
 
     Args:
         parent: the chassis body.
@@ -46,7 +48,8 @@ def add_ball_caster(parent: mjcf.Element, name: str, caster: BallCasterParams,
     body.add("joint", name=name, type="ball")
     body.add("inertial", pos=(0, 0, 0), mass=caster.mass, diaginertia=(caster.inertia,) * 3)
     body.add("geom", name=f"{name}_collision", dclass="collision", type="sphere",
-             size=(r,), contype=BALL_CONTYPE, conaffinity=BALL_CONAFFINITY)
+             size=(r,), contype=BALL_CONTYPE, conaffinity=BALL_CONAFFINITY,
+             condim=6 if caster.rolling_friction else None)
     body.add("geom", dclass="visual", type="sphere", size=(0.98 * r,), rgba=BALL_RGBA)
     body.add("geom", dclass="visual", type="box", size=(0.2 * r, 0.2 * r, 0.99 * r),
              rgba=common.MARK_RGBA)

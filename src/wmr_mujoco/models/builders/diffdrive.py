@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from dm_control import mjcf
 
-from wmr_mujoco.builders import common
-from wmr_mujoco.builders.caster import add_ball_caster
-from wmr_mujoco.params_wheeled import DIFFDRIVE, DiffDriveParams
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.builders.caster import add_ball_caster
+from wmr_mujoco.models.params_wheeled import DIFFDRIVE, DiffDriveParams
 
 #: Plate CoM height above the axle.
 CHASSIS_COM_HEIGHT = 0.04

@@ -1,8 +1,8 @@
 """Builders of the two steered classes: (2,1) one steered wheel, (1,2) two steered wheels.
 
-Both are made of existing parts: the thin-disc wheel of :mod:`~wmr_mujoco.builders.common`
+Both are made of existing parts: the thin-disc wheel of :mod:`~wmr_mujoco.models.builders.common`
 on a steering fork (a vertical hinge through the wheel centre: a *centred* steerable
-wheel) and the ball caster of :mod:`~wmr_mujoco.builders.caster`.
+wheel) and the ball caster of :mod:`~wmr_mujoco.models.builders.caster`.
 """
 
 from __future__ import annotations
@@ -11,10 +11,10 @@ from collections.abc import Sequence
 
 from dm_control import mjcf
 
-from wmr_mujoco.builders import common
-from wmr_mujoco.builders.caster import add_ball_caster
-from wmr_mujoco.params import DriveParams, WheelParams
-from wmr_mujoco.params_wheeled import (
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.builders.caster import add_ball_caster
+from wmr_mujoco.models.params import DriveParams, WheelParams
+from wmr_mujoco.models.params_wheeled import (
     DOUBLE_STEER,
     SINGLE_STEER,
     DoubleSteerParams,

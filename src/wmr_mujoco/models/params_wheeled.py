@@ -1,9 +1,9 @@
 """Parameters of the caster-supported robots: differential drive and the steered classes.
 
-Same conventions as :mod:`wmr_mujoco.params` (SI units, radians, frozen dataclasses that
+Same conventions as :mod:`wmr_mujoco.models.params` (SI units, radians, frozen dataclasses that
 check their ranges in ``__post_init__`` and raise ``ValueError`` naming field, value and
-valid range). Wheels reuse :class:`~wmr_mujoco.params.WheelParams`; settings reuse
-:class:`~wmr_mujoco.params.DriveParams` and :class:`~wmr_mujoco.params.SimParams`.
+valid range). Wheels reuse :class:`~wmr_mujoco.models.params.WheelParams`; settings reuse
+:class:`~wmr_mujoco.models.params.DriveParams` and :class:`~wmr_mujoco.models.params.SimParams`.
 
 A ball caster is a uniform sphere of radius ``r_c`` and mass ``m_c`` on a frictionless
 ball joint at its centre::
@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from wmr_mujoco.params import (
+from wmr_mujoco.models.params import (
     DriveParams,
     SimParams,
     WheelParams,
@@ -41,14 +41,20 @@ class BallCasterParams:
     Attributes:
         radius: ball radius r_c.
         mass: ball mass m_c.
+        rolling_friction: False (default): contact condim 3, sliding friction only, so
+            the ball rolls and spins freely. True: condim 6, MuJoCo's torsional and
+            rolling friction act too: a torque ``|τ_roll| ≤ μ_r N`` (``μ_r``, m, the
+            third ``friction`` coefficient) opposes rolling, giving a steady drag
+            ``F = μ_r N / r_c`` on the chassis.
 
     """
 
     radius: float = 0.02
     mass: float = 0.05
+    rolling_friction: bool = False
 
     def __post_init__(self) -> None:
-        _check_positive_fields(self)
+        _check_positive_fields(self, exclude=("rolling_friction",))
         _check_range(self, "radius", 0.002, 0.2)
 
     @property

@@ -2,7 +2,7 @@
 
 import pytest
 
-from wmr_mujoco.params_wheeled import (
+from wmr_mujoco.models.params_wheeled import (
     BallCasterParams,
     DiffDriveParams,
     DoubleSteerParams,
