@@ -14,7 +14,8 @@ def test_every_robot_has_its_scenarios():
     scenarios = scenarios_for()
     names = {s.key for s in scenarios}
     assert len(names) == len(scenarios), "scenario names must be unique per robot"
-    assert {s.robot for s in scenarios} == {"disc", "bicycle", "tricycle", "omni3"}
+    assert {s.robot for s in scenarios} == {"disc", "bicycle", "tricycle", "omni3",
+                                            "diffdrive", "single_steer", "double_steer"}
     assert {s.robot for s in scenarios if s.kind is ScenarioKind.DYNAMIC} == {"disc", "omni3"}
     assert sum(s.name.startswith("translate ") for s in scenarios) == 8
 
