@@ -97,7 +97,8 @@ def set_free_state(model: mujoco.MjModel, data: mujoco.MjData, disc: RollingDisc
     """Put the free disc on the analytic ``state`` (spin angle 0), touching the floor.
 
     Orientation ``R = R_z(ψ) R_x(θ)`` (body x = ê1, y = axle ê2, z = ê3); centre height
-    the collision ellipsoid's support ``√(a² cos² θ + b² sin² θ)``; linear velocity
+    the collision ellipsoid's support ``√(a² cos² θ + b² sin² θ)`` (cylinder:
+    ``a cos θ + b |sin θ|``); linear velocity
     ``v_G = a (ω2 ê1 − ω1 ê2)``; body angular velocity ``(ω1, ω2, ω3)``.
     """
     mujoco.mj_resetData(model, data)
@@ -107,7 +108,10 @@ def set_free_state(model: mujoco.MjModel, data: mujoco.MjData, disc: RollingDisc
                        np.array([math.cos(th / 2), math.sin(th / 2), 0, 0]))
     a, b = model.geom("disc_collision").size[:2]
     centre = disc.centre(state)
-    centre[2] = math.hypot(a * math.cos(th), b * math.sin(th))
+    if model.geom("disc_collision").type[0] == mujoco.mjtGeom.mjGEOM_CYLINDER:
+        centre[2] = a * math.cos(th) + b * abs(math.sin(th))  # the rim edge touches
+    else:
+        centre[2] = math.hypot(a * math.cos(th), b * math.sin(th))
     data.qpos[:3] = centre
     data.qpos[3:7] = quat
     data.qvel[:3] = disc.centre_velocity(state)
@@ -385,7 +389,7 @@ def _mounted_run(model: mujoco.MjModel, torque, duration: float) -> np.ndarray:
     return rows
 
 
-def slip_onset(model: mujoco.MjModel, ramp: float = 0.25, slip_threshold: float = 0.002,
+def slip_onset(model: mujoco.MjModel, ramp: float = 0.25, slip_threshold: float = 0.02,
                ) -> ScenarioResult:
     """Torque ramp ``τ = ramp · t`` on the mounted wheel: the torque where it starts to slip.
 
@@ -409,7 +413,7 @@ def slip_onset(model: mujoco.MjModel, ramp: float = 0.25, slip_threshold: float 
                    [rows[:, 0], rows[:, 1], slip])})
 
 
-def slip_pulse(model: mujoco.MjModel, torque_ratio: float = 1.2, on_time: float = 0.2,
+def slip_pulse(model: mujoco.MjModel, torque_ratio: float = 1.05, on_time: float = 0.3,
                duration: float = 0.8) -> ScenarioResult:
     """Torque pulse ``τ = torque_ratio · τ_max`` for ``on_time`` s on the mounted wheel.
 
@@ -434,7 +438,7 @@ def slip_pulse(model: mujoco.MjModel, torque_ratio: float = 1.2, on_time: float 
     tg = pulse.regrip_time
 
     def slope(y: np.ndarray, lo: float, hi: float) -> float:
-        sel = (t > lo + 0.01) & (t < hi - 0.002)
+        sel = (t > lo + 0.004) & (t < hi - 0.002)
         return float(np.polyfit(t[sel], y[sel], 1)[0])
 
     acc = [(slope(speed, 0.0, tg), pulse.linear_acceleration),
