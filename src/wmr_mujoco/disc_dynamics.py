@@ -102,7 +102,7 @@ def set_free_state(model: mujoco.MjModel, data: mujoco.MjData, disc: RollingDisc
     ``v_G = a (ω2 ê1 − ω1 ê2)``; body angular velocity ``(ω1, ω2, ω3)``.
     """
     mujoco.mj_resetData(model, data)
-    x, y, psi, th = state[:4]
+    psi, th = state[2], state[3]
     quat = np.zeros(4)
     mujoco.mju_mulQuat(quat, np.array([math.cos(psi / 2), 0, 0, math.sin(psi / 2)]),
                        np.array([math.cos(th / 2), math.sin(th / 2), 0, 0]))

@@ -149,8 +149,10 @@ def margin(row: dict[str, float | bool | str]) -> float:
 
 
 def cheapest_passing(rows: list[dict[str, float | bool | str]]) -> int | None:
-    """Index of the passing row with the fewest model evaluations per simulated second;
-    among equals, the one furthest inside its targets (not the wall clock: it is noisy)."""
+    """Index of the passing row with the fewest model evaluations per simulated second.
+
+    Among equals, the one furthest inside its targets (not the wall clock: it is noisy).
+    """
     ok = [i for i, r in enumerate(rows) if r.get("passed")]
     return min(ok, key=lambda i: (rows[i]["evals"], margin(rows[i]))) if ok else None
 
