@@ -370,7 +370,7 @@ def mounted_wheel(model: mujoco.MjModel) -> WheelDynamics:
 
 
 def _mounted_run(model: mujoco.MjModel, torque, duration: float) -> np.ndarray:
-    """Torque-mode run; rows ``(t, τ, ẋ, θ̇)``."""
+    """Torque-mode run; rows ``(t, τ, ẋ, θ̇, contacts)``."""
     model = _copy(model)
     set_actuation_mode(model, "torque")
     data = mujoco.MjData(model)
@@ -379,12 +379,12 @@ def _mounted_run(model: mujoco.MjModel, torque, duration: float) -> np.ndarray:
     vx = model.jnt_dofadr[model.joint("mount_x").id]
     spin = model.jnt_dofadr[model.joint("wheel").id]
     n = round(duration / model.opt.timestep)
-    rows = np.empty((n + 1, 4))
+    rows = np.empty((n + 1, 5))
     for k in range(n + 1):
         if k:
             mujoco.mj_step(model, data)
         data.ctrl[wheel] = torque(data.time)
-        rows[k] = [data.time, data.ctrl[wheel], data.qvel[vx], data.qvel[spin]]
+        rows[k] = [data.time, data.ctrl[wheel], data.qvel[vx], data.qvel[spin], data.ncon]
     check_healthy(model, data)
     return rows
 
@@ -417,10 +417,15 @@ def slip_pulse(model: mujoco.MjModel, torque_ratio: float = 1.05, on_time: float
                duration: float = 0.8) -> ScenarioResult:
     """Torque pulse ``τ = torque_ratio · τ_max`` for ``on_time`` s on the mounted wheel.
 
-    Judged against :class:`SlipPulse`: the sliding accelerations (least-squares slopes of
-    ``ẋ`` and ``θ̇`` over each phase, 10 ms after each switch excluded), the re-grip time
-    (first time after the pulse that ``R θ̇ − ẋ`` falls below 1 mm/s), and the speed
-    and spin trajectories over the whole run.
+    Judged against :class:`SlipPulse`: the re-grip time (first time after the pulse
+    that ``R θ̇ − ẋ`` falls below 1 mm/s); the mean sliding accelerations over each
+    phase (change of ``ẋ`` or ``θ̇`` over the phase divided by its length: the friction
+    impulse, which the contact's hopping does not disturb as much as a pointwise slope);
+    the speed and spin trajectories over the whole run; and the share of sliding steps
+    in which the wheel is off the floor. MuJoCo's soft contact couples the normal and the
+    friction rows in one cone, and a sliding wheel hops (the wheel is airborne for most
+    of the sliding steps): the coast-phase acceleration, measured over a few
+    milliseconds of hops, misses its target.
     """
     if not math.isfinite(torque_ratio) or torque_ratio <= 1.0:
         raise ValueError(f"torque_ratio = {torque_ratio!r}; valid range is (1, inf) "
@@ -437,22 +442,28 @@ def slip_pulse(model: mujoco.MjModel, torque_ratio: float = 1.05, on_time: float
     ref = pulse.state(t)
     tg = pulse.regrip_time
 
-    def slope(y: np.ndarray, lo: float, hi: float) -> float:
-        sel = (t > lo + 0.004) & (t < hi - 0.002)
-        return float(np.polyfit(t[sel], y[sel], 1)[0])
-
-    acc = [(slope(speed, 0.0, tg), pulse.linear_acceleration),
-           (slope(spin, 0.0, on_time), pulse.spin_acceleration),
-           (slope(spin, on_time, tg), pulse.coast_spin_acceleration)]
-    acc_err = [100.0 * abs(s / e - 1.0) for s, e in acc]
     slip = w.radius * spin - speed
     after = np.flatnonzero((t > on_time) & (slip < 1e-3))
     tg_sim = float(t[after[0]]) if after.size else math.nan
+    k1 = int(np.searchsorted(t, on_time - 1e-9))
+    kg = int(after[0]) if after.size else len(t) - 1
+
+    def mean_rate(y: np.ndarray, k_lo: int, k_hi: int) -> float:
+        return float((y[k_hi] - y[k_lo]) / (t[k_hi] - t[k_lo]))
+
+    acc = [(mean_rate(speed, 0, kg), pulse.linear_acceleration),
+           (mean_rate(spin, 0, k1), pulse.spin_acceleration),
+           (mean_rate(spin, k1, kg), pulse.coast_spin_acceleration)]
+    acc_err = [100.0 * abs(s / e - 1.0) for s, e in acc]
+    lost = float(np.mean(rows[1:kg + 1, 4] == 0)) * 100.0
     names = ("ẍ", "θ̈ pulse", "θ̈ coast")
     metrics = [Metric(f"sliding {n} error", e, "%", 2.0, REQUIREMENT)
                for n, e in zip(names, acc_err, strict=True)]
     metrics.append(Metric("re-grip time error", 100.0 * abs(tg_sim / tg - 1.0), "%", 2.0,
                           REQUIREMENT))
+    metrics.append(Metric("steps without contact while sliding", lost, "%", 0.0,
+                          "derived bound: the wheel carries its weight, so it must stay "
+                          "on the floor"))
     speed_scale = pulse.linear_acceleration * tg
     metrics += _pair("speed error (% of peak speed)", 100.0 * (speed - ref[:, 1])
                      / speed_scale, "%", 2.0, "derived bound: the 2 % on accelerations")
