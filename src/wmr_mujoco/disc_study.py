@@ -1,5 +1,8 @@
 """Fidelity versus cost of the free rolling disc: ``python -m wmr_mujoco.disc_study``.
 
+Also writes every judged metric of the disc scenarios at the default settings between
+the ``disc dynamics`` markers.
+
 Runs the free-disc scenarios of :mod:`wmr_mujoco.disc_dynamics` under a small set of
 simulation settings (integrator, timestep, contact softness, noslip iterations,
 impratio, collider) and writes a table of each setting's worst errors and real-time factor
@@ -18,12 +21,13 @@ from dataclasses import dataclass, replace
 import mujoco
 
 from wmr_mujoco import disc_dynamics as dd
-from wmr_mujoco.loading import build_scene
+from wmr_mujoco.loading import build_scene, load
 from wmr_mujoco.markers import replace_between
 from wmr_mujoco.params import DiscParams
 from wmr_mujoco.paths import MODELS_DIR
 
 MARKER = "disc study"
+VALIDATION_MARKER = "disc dynamics"
 #: Columns of the table: (heading, scenario metric name, unit).
 COLUMNS = (
     ("incline a", "incline acceleration error worst", "%"),
@@ -176,15 +180,31 @@ def table(rows: list[dict[str, float | bool | str]]) -> str:
     return "\n".join(lines) + "\n\n" + targets
 
 
+def validation_table() -> str:
+    """Every judged metric of the disc scenarios at the default settings (Markdown)."""
+    results = dd.free_scenarios(load("disc_free")) + dd.mounted_scenarios(load("disc"))
+    lines = ["| model | scenario | metric | value | unit | target | basis | pass |",
+             "|---|---|---|---|---|---|---|---|"]
+    for r in results:
+        model = "disc" if r.name.startswith("slip") else "disc_free"
+        for m in r.metrics:
+            lines.append(f"| {model} | {r.name} | {m.name} | {m.value:.3g} | {m.unit} | "
+                         f"{m.target:g} | {m.basis} | {'yes' if m.passed else '**no**'} |")
+    return "\n".join(lines)
+
+
 def main(argv: list[str] | None = None) -> None:
     """Run the study and paste the table into the disc README (``--dry-run``: print)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--dry-run", action="store_true", help="print, do not write")
     args = parser.parse_args(argv)
     text = table(study())
-    print(text)
+    checks = validation_table()
+    print(text, checks, sep="\n\n")
     if not args.dry_run:
-        replace_between(MODELS_DIR / "disc" / "README.md", MARKER, text)
+        readme = MODELS_DIR / "disc" / "README.md"
+        replace_between(readme, MARKER, text)
+        replace_between(readme, VALIDATION_MARKER, checks)
 
 
 if __name__ == "__main__":
