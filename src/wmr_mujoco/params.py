@@ -153,12 +153,12 @@ class DiscParams:
         free_integrator: integrator of the free disc (``disc_free``): ``"RK4"``,
             ``"implicit"``, ``"implicitfast"`` or ``"Euler"``. ``implicitfast`` (and
             ``implicit``, identical here) miss steady precession by an error proportional to
-            the timestep (17 % at 2 ms); RK4 does not (study in ``models/disc/README.md``).
+            the timestep; RK4 does not (study table in ``models/disc/README.md``).
         free_timestep: timestep of the free disc, s.
         free_rim: half-thickness of the free disc's collision ellipsoid ``(R, rim, R)``, m.
-            A thin rim makes a leaning disc touch where a thin disc would; the 10 mm
-            half-width of the wheel puts the contact of a leaning disc off the thin-disc
-            point and misses steady precession by 2-3 %.
+            A thin rim makes a leaning disc touch where a thin disc would; the wheel's
+            full half-width puts a leaning disc's contact off the thin-disc point and
+            misses steady precession by more than its target (study table).
 
     """
 
