@@ -58,3 +58,17 @@ def test_bad_input_is_clear_and_leaves_no_file(tmp_path, monkeypatch, kwargs, ma
     with pytest.raises(ValueError, match=match):
         render_to_file(**args)
     assert list(tmp_path.rglob("*")) == []
+
+
+def test_a_measurement_is_filmed_from_its_own_runs():
+    """disc_free's steady precession: frames at fps over the duration, the disc moving."""
+    got = render_scenario(pick_scenario("disc_free", "steady precession"), width=64,
+                          height=48, fps=5, duration=1.0)
+    assert got.shape == (5, 48, 64, 3)
+    assert np.abs(got[0].astype(int) - got[-1].astype(int)).mean() > 2
+
+
+def test_a_measurement_without_a_film_is_refused():
+    with pytest.raises(ValueError, match="measurement without a film; scenarios that can "
+                                         "be rendered: .*'steady precession'"):
+        pick_scenario("disc_free", "energy")

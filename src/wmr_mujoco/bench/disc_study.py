@@ -1,47 +1,60 @@
-"""Fidelity versus cost of the free rolling disc: ``python -m wmr_mujoco.disc_study``.
+"""Fidelity versus cost of the free rolling disc: ``python -m wmr_mujoco.bench.disc_study``.
 
-Also writes every judged metric of the disc scenarios at the default settings between
-the ``disc dynamics`` markers.
+Also writes every metric of the disc's rolling and sliding measurement scenarios at the
+default settings (through the validation runner) between the ``disc dynamics`` markers.
 
-Runs the free-disc scenarios of :mod:`wmr_mujoco.disc_dynamics` under a small set of
+Runs the free-disc measurements of :mod:`wmr_mujoco.robots.disc_free.measurements` under
+a small set of
 simulation settings (integrator, timestep, contact softness, noslip iterations,
 impratio, collider) and writes a table of each setting's worst errors and real-time factor
 between the ``disc study`` markers of ``models/disc/README.md``. The cheapest setting
 that meets every target (fewest model evaluations per simulated second: RK4 evaluates
 the model 4 times a step, the Euler-type integrators once) is marked; it is the
-default in :class:`~wmr_mujoco.params.DiscParams` (``free_*``) when the table says so.
+default in :class:`~wmr_mujoco.models.params.DiscParams` (``free_*``) when the table says
+so.
 """
 
 from __future__ import annotations
 
 import argparse
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import mujoco
+import numpy as np
 
-from wmr_mujoco import disc_dynamics as dd
-from wmr_mujoco.loading import build_scene, load
-from wmr_mujoco.markers import replace_between
-from wmr_mujoco.params import DiscParams
-from wmr_mujoco.paths import MODELS_DIR
+from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.loading import build_scene
+from wmr_mujoco.models.params import DiscParams
+from wmr_mujoco.models.paths import MODELS_DIR
+from wmr_mujoco.robots import disc, disc_free
+from wmr_mujoco.robots.disc_free import measurements as ms
+from wmr_mujoco.robots.disc_free.state import disc_from_model, set_free_state
+from wmr_mujoco.validation.metrics import Metric
+from wmr_mujoco.validation.report import markdown_table
+from wmr_mujoco.validation.runner import run_all
+from wmr_mujoco.validation.scenarios import MeasurementResult, ScenarioKind
 
 MARKER = "disc study"
 VALIDATION_MARKER = "disc dynamics"
-#: Columns of the table: (heading, scenario metric name, unit).
+README = MODELS_DIR / "disc" / "README.md"
+#: The free-disc measurements at their default arguments, by scenario name.
+MEASUREMENTS: dict[str, Callable[[mujoco.MjModel], MeasurementResult]] = {
+    "incline": ms.incline, "stability sweep": ms.stability_sweep,
+    "steady precession": ms.steady_precession, "leaning start": ms.leaning_start,
+    "energy": ms.energy_drift}
+#: Columns of the table: (heading, scenario, judged metric name, unit).
 COLUMNS = (
-    ("incline a", "incline acceleration error worst", "%"),
-    ("v_c", "threshold speed error", "%"),
-    ("precession θ", "precession lean error worst", "%"),
-    ("precession R", "precession circle radius error worst", "%"),
-    ("lean-start path", "leaning start path error (% of path) worst", "%"),
-    ("lean-start θ", "leaning start lean error worst", "deg"),
-    ("energy", "energy drift worst", "%"),
+    ("incline a", "incline", "worst incline acceleration error", "%"),
+    ("v_c", "stability sweep", "threshold speed error", "%"),
+    ("precession θ", "steady precession", "worst lean error", "%"),
+    ("precession R", "steady precession", "worst circle radius error", "%"),
+    ("lean-start path", "leaning start", "worst contact path error", "% of path"),
+    ("lean-start θ", "leaning start", "worst lean error", "deg"),
+    ("energy", "energy", "worst energy drift", "%"),
 )
-
-#: Target of each column (requirements of issue 13), in the column's unit.
-TARGETS = {"incline a": 0.5, "v_c": 2.0, "precession θ": 1.0, "precession R": 1.0,
-           "lean-start path": 1.0, "lean-start θ": 1.0, "energy": 0.5}
 
 
 @dataclass(frozen=True)
@@ -75,8 +88,9 @@ class Setting:
         """Model evaluations per simulated second (RK4: 4 a step)."""
         return (4.0 if self.integrator == "RK4" else 1.0) / self.timestep
 
-    def model(self, params: DiscParams = DiscParams()) -> mujoco.MjModel:
-        """The free disc and floor compiled under this setting."""
+    def model(self, params: DiscParams | None = None) -> mujoco.MjModel:
+        """The free disc and floor compiled under this setting (``params`` None: defaults)."""
+        params = DiscParams() if params is None else params
         p = replace(params, free_integrator=self.integrator, free_timestep=self.timestep,
                     free_rim=self.rim,
                     sim=replace(params.sim, contact_timeconst=self.contact_timeconst,
@@ -90,7 +104,7 @@ class Setting:
             geom.type = "cylinder"
             geom.size = (r, self.rim)
             geom.zaxis = (0, 1, 0)
-        return mujoco.MjModel.from_xml_string(root.to_xml_string(), root.get_assets())
+        return mujoco.MjModel.from_xml_string(common.to_xml(root))
 
 
 SETTINGS = (
@@ -119,11 +133,11 @@ def real_time_factor(model: mujoco.MjModel, sim_seconds: float = 2.0,
     disturbed by other load.
     """
     data = mujoco.MjData(model)
-    disc = dd.disc_from_model(model)
+    disc = disc_from_model(model)
     n = round(sim_seconds / model.opt.timestep)
     best = float("inf")
     for _ in range(repeats):
-        dd.set_free_state(model, data, disc, disc.initial_state(0.15, 1.0))
+        set_free_state(model, data, disc, disc.initial_state(*ms.LEANING_START))
         start = time.perf_counter()
         for _ in range(n):
             mujoco.mj_step(model, data)
@@ -131,20 +145,30 @@ def real_time_factor(model: mujoco.MjModel, sim_seconds: float = 2.0,
     return sim_seconds / best
 
 
+def _passed(m: Metric) -> bool:
+    return m.target is None or bool(np.isfinite(m.value) and abs(m.value) <= m.target.value)
+
+
 def evaluate(setting: Setting) -> dict[str, float | bool | str]:
-    """Worst errors of every free-disc scenario, pass/fail and real-time factor."""
+    """Worst errors of every free-disc measurement, pass/fail and real-time factor.
+
+    Pass: every judged metric of every measurement within its target (the targets of
+    the measurements themselves).
+    """
     model = setting.model()
     row: dict[str, float | bool | str] = {"label": setting.label}
+    metrics: dict[tuple[str, str], Metric] = {}
     try:
-        results = dd.free_scenarios(model)
+        for name, measure in MEASUREMENTS.items():
+            metrics.update({(name, m.name): m for m in measure(model).metrics})
+        row["passed"] = all(_passed(m) for m in metrics.values())
     except Exception as exc:  # a diverging run is a result of the study, reported
         row.update(passed=False, error=f"{type(exc).__name__}")
-        results = []
-    metrics = {m.name: m for r in results for m in r.metrics}
-    for head, name, _ in COLUMNS:
-        row[head] = metrics[name].value if name in metrics else float("nan")
-    if results:
-        row["passed"] = all(r.passed for r in results)
+    for head, scenario, name, _ in COLUMNS:
+        m = metrics.get((scenario, name))
+        row[head] = abs(m.value) if m is not None else float("nan")
+        if m is not None and m.target is not None:
+            row[f"{head} target"] = m.target.value
     row["rtf"] = real_time_factor(model)
     row["evals"] = setting.evaluations_per_second
     return row
@@ -156,8 +180,9 @@ def study(settings: tuple[Setting, ...] = SETTINGS) -> list[dict[str, float | bo
 
 
 def margin(row: dict[str, float | bool | str]) -> float:
-    """Largest error/target ratio of a row (< 1: every target met)."""
-    return max(abs(float(row[h])) / TARGETS[h] for h, _, _ in COLUMNS)
+    """Largest error/target ratio of a row (< 1: every target met; NaN-free rows only)."""
+    return max(abs(float(row[h])) / float(row.get(f"{h} target", np.inf))
+               for h, _, _, _ in COLUMNS)
 
 
 def cheapest_passing(rows: list[dict[str, float | bool | str]]) -> int | None:
@@ -172,12 +197,12 @@ def cheapest_passing(rows: list[dict[str, float | bool | str]]) -> int | None:
 def table(rows: list[dict[str, float | bool | str]]) -> str:
     """Markdown table of the study; the chosen default in bold."""
     best = cheapest_passing(rows)
-    heads = [f"{h} ({u})" for h, _, u in COLUMNS]
+    heads = [f"{h} ({u})" for h, _, _, u in COLUMNS]
     lines = ["| setting | " + " | ".join(heads) + " | all targets | evals/s | RTF |",
              "|---|" + "---|" * (len(heads) + 3)]
     for i, r in enumerate(rows):
         label = f"**{r['label']}** (chosen)" if i == best else str(r["label"])
-        cells = [f"{r[h]:.3g}" for h, _, _ in COLUMNS]
+        cells = [f"{r[h]:.3g}" for h, _, _, _ in COLUMNS]
         verdict = "yes" if r.get("passed") else f"no {r.get('error', '')}".strip()
         lines.append(f"| {label} | " + " | ".join(cells)
                      + f" | {verdict} | {r['evals']:.0f} | {r['rtf']:.0f} |")
@@ -190,16 +215,13 @@ def table(rows: list[dict[str, float | bool | str]]) -> str:
 
 
 def validation_table() -> str:
-    """Every judged metric of the disc scenarios at the default settings (Markdown)."""
-    results = dd.free_scenarios(load("disc_free")) + dd.mounted_scenarios(load("disc"))
-    lines = ["| model | scenario | metric | value | unit | target | basis | pass |",
-             "|---|---|---|---|---|---|---|---|"]
-    for r in results:
-        model = "disc" if r.name.startswith("slip") else "disc_free"
-        for m in r.metrics:
-            lines.append(f"| {model} | {r.name} | {m.name} | {m.value:.3g} | {m.unit} | "
-                         f"{m.target:g} | {m.basis} | {'yes' if m.passed else '**no**'} |")
-    return "\n".join(lines)
+    """Every metric of the disc's measurement scenarios at the defaults (Markdown).
+
+    Run through the validation runner, tabulated as in the validation report.
+    """
+    scenarios = [s for spec in (disc_free.SPEC, disc.SPEC) for s in spec.scenarios
+                 if s.kind is ScenarioKind.MEASUREMENT]
+    return markdown_table(run_all(scenarios))
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -211,9 +233,9 @@ def main(argv: list[str] | None = None) -> None:
     checks = validation_table()
     print(text, checks, sep="\n\n")
     if not args.dry_run:
-        readme = MODELS_DIR / "disc" / "README.md"
-        replace_between(readme, MARKER, text)
-        replace_between(readme, VALIDATION_MARKER, checks)
+        replace_between(README, MARKER, text)
+        replace_between(README, VALIDATION_MARKER, checks)
+        print(f"wrote {README}")
 
 
 if __name__ == "__main__":

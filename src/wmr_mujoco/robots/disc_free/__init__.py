@@ -41,7 +41,11 @@ def _evaluate(measure: Measure) -> Callable[[Scenario, RobotParams | None], Meas
 
 def _film(runs: Runs, reference: Callable[[FreeRun], np.ndarray] | None = None
           ) -> Callable[[Scenario, RobotParams | None], Iterator[FilmFrame]]:
-    """Frames of ``runs`` one after the other; ``reference(run)`` the analytic path."""
+    """Frames of ``runs`` one after the other, with ``reference(run)`` drawn.
+
+    ``reference`` gives the analytic path of the centre (the physics trail is the
+    centre's, the ``base`` site).
+    """
     def film(scenario: Scenario, params: RobotParams | None) -> Iterator[FilmFrame]:
         for run in runs(_model(params)):
             path = None if reference is None else reference(run)
@@ -51,21 +55,24 @@ def _film(runs: Runs, reference: Callable[[FreeRun], np.ndarray] | None = None
 
 
 def _circle(run: FreeRun) -> np.ndarray:
-    """The steady solution's contact circle (centre (0, −R), through the origin)."""
-    radius = ms.PRECESSION[1]
+    """The steady solution's centre circle: about (0, −R), radius ``R − a sin θ``."""
+    lean, radius = ms.PRECESSION
+    r = run.disc.steady_motion(lean, radius).centre_radius
     a = np.linspace(0.0, 2 * np.pi, 91)
-    return np.column_stack([radius * np.sin(a), radius * (np.cos(a) - 1.0)])
+    return np.column_stack([r * np.sin(a), r * np.cos(a) - radius])
 
 
 def _nonlinear(run: FreeRun) -> np.ndarray:
-    """The nonlinear equations' contact path over the run."""
+    """The nonlinear equations' centre path over the run."""
     t = np.linspace(0.0, run.duration, 201)
-    return ms.analytic_run(run.disc, run.state, t)[:, :2]
+    return np.array([run.disc.centre(x)[:2] for x in ms.analytic_run(run.disc, run.state, t)])
 
 
 def _sweep_clip(model: mujoco.MjModel) -> list[FreeRun]:
-    """The sweep's extreme speeds (0.8 and 1.2 v_c), kicked 15× harder to be seen, and
-    run until the slow one has fallen."""
+    """The sweep's extreme speeds (0.8 and 1.2 v_c), kicked 15× harder to be seen.
+
+    2 s each: below v_c the lean grows to tens of degrees, above it stays a few degrees.
+    """
     lo, hi = ms.SWEEP_RATIOS[0], ms.SWEEP_RATIOS[-1]
     return ms.stability_runs(model, (lo, hi), kick=15 * ms.SWEEP_KICK, duration=2.0,
                              stop_lean=1.2)
@@ -79,7 +86,7 @@ SCENARIOS = (
              evaluate=_evaluate(ms.stability_sweep), film=_film(_sweep_clip),
              description="upright rolling at 0.8 to 1.2 v_c with a lean kick: threshold "
                          "speed and lean growth rate"),
-    Scenario(NAME, "steady precession", duration=5.0, kind=ScenarioKind.MEASUREMENT,
+    Scenario(NAME, "steady precession", duration=3.5, kind=ScenarioKind.MEASUREMENT,
              evaluate=_evaluate(ms.steady_precession),
              film=_film(ms.precession_runs, _circle),
              description="steady circling at 0.3 rad lean on a 0.6 m circle, one full "

@@ -93,8 +93,10 @@ def incline(model: mujoco.MjModel, slope: float = 0.1, speed: float = 1.0,
 def stability_runs(model: mujoco.MjModel, ratios: tuple[float, ...] = SWEEP_RATIOS,
                    kick: float = SWEEP_KICK, duration: float = 1.5,
                    stop_lean: float = LINEAR_LEAN) -> list[FreeRun]:
-    """Upright rolling at ``ratio · v_c`` with a lean-rate kick ``θ̇(0) = kick`` rad/s,
-    each run ending when ``|θ|`` passes ``stop_lean``."""
+    """Upright rolling at ``ratio · v_c`` with a lean-rate kick ``θ̇(0) = kick`` rad/s.
+
+    Each run ends when ``|θ|`` passes ``stop_lean`` rad.
+    """
     check_rate("kick", kick, "rad/s")
     disc = disc_from_model(model)
     return [FreeRun(model, disc.initial_state(
