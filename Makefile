@@ -38,10 +38,14 @@ renders: $(STAMP)
 	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 200 --height 150 --fps 8 --duration 5
 	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
 	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
+	$(BIN)/wmr render disc_free --scenario "steady precession" --out renders/disc_free.gif --width 200 --height 150 --fps 8
+	$(BIN)/wmr render disc_free --scenario "stability sweep" --out renders/disc_free_stability.gif --width 200 --height 150 --fps 8
 
-# The roller design study and peer comparison in models/omni3/README.md.
+# The roller design study and peer comparison in models/omni3/README.md; the free disc's
+# fidelity-versus-cost study and rolling/sliding table in models/disc/README.md.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
+	$(BIN)/python -m wmr_mujoco.bench.disc_study
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

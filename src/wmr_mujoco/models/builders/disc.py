@@ -62,7 +62,7 @@ def build_free(params: DiscParams) -> mjcf.RootElement:
     """Free disc: the same wheel on a free joint, no mount and no actuators.
 
     Its own integrator, timestep and collision rim (``DiscParams.free_*``): the
-    settings the fidelity study (``python -m wmr_mujoco.disc_study``) found cheapest
+    settings the fidelity study (``python -m wmr_mujoco.bench.disc_study``) found cheapest
     that meet the rolling-disc targets.
 
     Keyframes (free-joint ``qvel`` is world linear velocity then body angular
