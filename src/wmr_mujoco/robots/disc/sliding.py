@@ -36,8 +36,8 @@ from wmr_mujoco.validation.scenarios import MeasurementResult
 SOURCE = "issue 13: sliding wheel within 2 %"
 #: Slip speed ``R θ̇ − ẋ`` below which the wheel has gripped again, m/s.
 REGRIP_SLIP = 1e-3
-HOP_NOTE = ("not judged: MuJoCo's soft contact couples normal and friction in one cone; "
-            "a sliding wheel hops (see module docstring), so this phase is a few impacts")
+HOP_NOTE = ("not judged: MuJoCo's soft contact couples normal and friction in one cone, "
+            "so a sliding wheel hops (models/disc/README.md)")
 
 
 def mounted_run(model: mujoco.MjModel, torque: Callable[[float], float],
@@ -147,7 +147,8 @@ def slip_pulse(model: mujoco.MjModel, torque_ratio: float = 1.05,
                f"t_g = t_1 (1 + ṡ_1/|ṡ_2|) = {pulse.regrip_time:.4g} s"),
         Metric("sliding θ̈ error, coast", pct(mean_rate(spin, k1, kg),
                                                pulse.coast_spin_acceleration), "%",
-               note=f"θ̈ = −μN R/J over {1e3 * (t[kg] - t[k1]):.0f} ms; {HOP_NOTE}"),
+               note=f"θ̈ = −μN R/J over {1e3 * (t[kg] - t[k1]):.0f} ms, a few impacts; "
+                    f"{HOP_NOTE}"),
         Metric("steps without contact while sliding",
                100.0 * float(np.mean(rows[1:kg + 1, 4] == 0)), "%", note=HOP_NOTE),
         Metric("worst speed error", float(np.max(np.abs(speed_err))), "% of peak speed",
