@@ -70,5 +70,5 @@ def test_a_measurement_is_filmed_from_its_own_runs():
 
 def test_a_measurement_without_a_film_is_refused():
     with pytest.raises(ValueError, match="measurement without a film; scenarios that can "
-                                         "be rendered: .*'steady precession'"):
-        pick_scenario("disc_free", "energy")
+                                         "be rendered: .*'sinusoidal steering'"):
+        pick_scenario("disc", "sliding wheel")

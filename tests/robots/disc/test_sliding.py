@@ -22,6 +22,12 @@ def test_slip_onset_torque(mounted):
     assert abs(got.value) <= got.target.value == 2.0
 
 
+def test_sliding_wheel_is_onset_and_pulse(mounted):
+    got = sliding.sliding_wheel(mounted)
+    names = [m.name for m in got.metrics]
+    assert names[0] == "slip onset torque error" and "re-grip time error" in names
+
+
 def test_slip_pulse_judged_rows_pass_and_the_hop_is_reported(mounted):
     """Sliding ẍ, pulse θ̈ and re-grip time within 2 % (issue 13); the coast phase and
     the trajectories are reported without a target, with the cause named."""

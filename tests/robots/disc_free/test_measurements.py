@@ -24,7 +24,7 @@ def failed(result):
 
 
 @pytest.mark.parametrize("measure", [ms.incline, ms.stability_sweep, ms.steady_precession,
-                                     ms.leaning_start, ms.energy_drift])
+                                     ms.leaning_start])
 def test_free_disc_meets_the_targets(free, measure):
     result = measure(free)
     assert not failed(result)
@@ -47,7 +47,8 @@ def test_implicitfast_misses_steady_precession(free):
     (lambda m: ms.incline(m, slope=math.pi / 2), r"incline = 1.57.*valid range is \[0"),
     (lambda m: ms.incline(m, speed=-1.0), r"speed = -1.0 m/s .*valid range is \[0, inf\)"),
     (lambda m: ms.leaning_start(m, lean=2.0), r"lean = 2.0 rad .*valid range"),
-    (lambda m: ms.energy_drift(m, speed=math.inf), r"speed = inf m/s"),
+    (lambda m: ms.leaning_start(m, speed=math.inf), r"speed = inf m/s"),
+    (lambda m: ms.leaning_start(m, judged=20.0), r"judged = 20.0 s; valid range is \(0, 10.0\]"),
     (lambda m: ms.steady_precession(m, lean=1.6), r"lean = 1.6 rad"),
     (lambda m: ms.stability_sweep(m, kick=math.nan), r"kick = nan rad/s"),
 ])

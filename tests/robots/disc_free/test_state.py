@@ -3,7 +3,6 @@
 import math
 
 import mujoco
-import numpy as np
 import pytest
 
 from wmr_mujoco.models.loading import load

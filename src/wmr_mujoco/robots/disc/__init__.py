@@ -147,13 +147,11 @@ SCENARIOS = (
     Scenario(NAME, "sinusoidal steering", (const(1.0, 0.5), Sine(0.8, 4.0))),
     Scenario(NAME, "torque", (const(0.3), const(0.0)), duration=2.0,
              kind=ScenarioKind.DYNAMIC),
-    Scenario(NAME, "slip onset", duration=2.0, kind=ScenarioKind.MEASUREMENT,
-             evaluate=_on_model(sliding.slip_onset),
-             description="torque ramp until the wheel slips, against μN(J + mR²)/(mR)"),
-    Scenario(NAME, "slip pulse", duration=0.8, kind=ScenarioKind.MEASUREMENT,
-             evaluate=_on_model(sliding.slip_pulse),
-             description="torque pulse 5 % above the traction limit: sliding and re-grip "
-                         "against the Coulomb closed form"),
+    Scenario(NAME, "sliding wheel", duration=2.0, kind=ScenarioKind.MEASUREMENT,
+             evaluate=_on_model(sliding.sliding_wheel),
+             description="torque ramp to the slip onset, then a torque pulse 5 % above the "
+                         "traction limit: sliding and re-grip against the Coulomb closed "
+                         "form"),
 )
 
 SPEC = RobotSpec(

@@ -163,5 +163,10 @@ def slip_pulse(model: mujoco.MjModel, torque_ratio: float = 1.05,
         Series("ẋ closed form", t, ref[:, 1], ylabel="speed [m/s]"),
         Series("θ̇ MuJoCo", t, spin, ylabel="spin [rad/s]"),
         Series("θ̇ closed form", t, ref[:, 2], ylabel="spin [rad/s]"),
-        Series("R θ̇ − ẋ MuJoCo", t, slip, ylabel="slip speed [m/s]"),
     ])
+
+
+def sliding_wheel(model: mujoco.MjModel) -> MeasurementResult:
+    """Slip onset (torque ramp) and the torque pulse at their defaults, as one result."""
+    onset, pulse = slip_onset(model), slip_pulse(model)
+    return MeasurementResult(onset.metrics + pulse.metrics, onset.series + pulse.series)

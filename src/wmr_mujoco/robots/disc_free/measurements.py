@@ -11,7 +11,7 @@ quantity's own unit, against :mod:`wmr_mujoco.analytic.rolling_disc` (derivation
 Targets, all requirements of issue 13 except where a derivation is given: incline
 acceleration 0.5 %; stability threshold speed 2 %; steady precession lean and circle
 radius 1 % over a full circle; leaning start contact path 1 % of path length and lean 1°
-over 5 s; energy drift 0.5 % over 10 s.
+over 5 s, and energy drift 0.5 % over 10 s (one 10 s run).
 """
 
 from __future__ import annotations
@@ -194,7 +194,7 @@ def analytic_run(disc: RollingDisc, state: np.ndarray, t: np.ndarray) -> np.ndar
 
 
 def leaning_runs(model: mujoco.MjModel, lean: float = LEANING_START[0],
-                 speed: float = LEANING_START[1], duration: float = 5.0) -> list[FreeRun]:
+                 speed: float = LEANING_START[1], duration: float = 10.0) -> list[FreeRun]:
     """Leaning rolling start (the ``leaning`` keyframe's state)."""
     disc = disc_from_model(model)
     state = disc.initial_state(check_lean(lean), check_rate("speed", speed, "m/s"))
@@ -202,40 +202,50 @@ def leaning_runs(model: mujoco.MjModel, lean: float = LEANING_START[0],
 
 
 def leaning_start(model: mujoco.MjModel, lean: float = LEANING_START[0],
-                  speed: float = LEANING_START[1], duration: float = 5.0
-                  ) -> MeasurementResult:
-    """Leaning rolling start against the nonlinear equations, as a trajectory.
+                  speed: float = LEANING_START[1], duration: float = 10.0,
+                  judged: float = 5.0) -> MeasurementResult:
+    """Leaning rolling start: trajectory against the nonlinear equations, and energy.
 
-    Judged over the whole run: contact point distance ``|P_sim − P_an|`` as % of the
-    analytic path length, and lean ``θ_sim − θ_an`` in degrees.
+    One run of ``duration`` s. Judged over its first ``judged`` s (issue 13: a trajectory
+    of at least 5 s): contact point distance ``|P_sim − P_an|`` as % of the analytic path
+    length over that window, and lean ``θ_sim − θ_an`` in degrees; the same errors over
+    the whole run are reported beside them (small differences in the precession rate
+    grow into a phase lag along the path). Judged over the whole run: energy
+    ``(E − E_0)/E_0`` in % (rolling without slip does no work; potential from the floor).
+
+    Raises:
+        ValueError: a lean outside (−π/2, π/2), a negative or non-finite speed, or a
+            judged window not in (0, duration].
     """
+    if not (math.isfinite(judged) and 0 < judged <= duration):
+        raise ValueError(f"judged = {judged!r} s; valid range is (0, {duration!r}] s")
     run = leaning_runs(model, lean, speed, duration)[0]
     rows = run.rows()
-    ref = analytic_run(run.disc, run.state, rows[:, 0])
-    length = float(np.sum(np.linalg.norm(np.diff(ref[:, :2], axis=0), axis=1)))
-    path_err = 100.0 * np.linalg.norm(rows[:, 1:3] - ref[:, :2], axis=1) / length
     t = rows[:, 0]
-    return MeasurementResult(
-        [*_worst_rms("contact path error", path_err, "% of path",
-                     Target.requirement(1.0, SOURCE), f"path {length:.3g} m"),
-         *_worst_rms("lean error", np.degrees(rows[:, 4] - ref[:, 3]), "deg",
-                     Target.requirement(1.0, SOURCE))],
-        [Series("MuJoCo", rows[:, 1], rows[:, 2], "x [m]", "y [m]"),
-         Series("nonlinear equations", ref[:, 0], ref[:, 1], "x [m]", "y [m]"),
-         Series("lean MuJoCo", t, np.degrees(rows[:, 4]), ylabel="lean [deg]"),
-         Series("lean nonlinear equations", t, np.degrees(ref[:, 3]), ylabel="lean [deg]")])
-
-
-def energy_drift(model: mujoco.MjModel, lean: float = LEANING_START[0],
-                 speed: float = LEANING_START[1], duration: float = 10.0
-                 ) -> MeasurementResult:
-    """Energy of the leaning rolling disc on the flat over ``duration`` s.
-
-    Rolling without slip does no work, so ``E`` must stay ``E_0`` (potential from the
-    floor). Judged: ``(E − E_0)/E_0`` in % over the whole run.
-    """
-    rows = leaning_runs(model, lean, speed, duration)[0].rows()
+    ref = analytic_run(run.disc, run.state, t)
+    window = t <= judged + 1e-9
+    path_len = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(ref[:, :2], axis=0),
+                                                               axis=1))])
+    gap = np.linalg.norm(rows[:, 1:3] - ref[:, :2], axis=1)
+    lean_err = np.degrees(rows[:, 4] - ref[:, 3])
+    path_req = Target.requirement(1.0, f"{SOURCE}: over at least 5 s")
+    lean_req = Target.requirement(1.0, f"{SOURCE}: over at least 5 s")
+    window_len = float(path_len[window][-1])
     drift = 100.0 * (rows[:, 8] / rows[0, 8] - 1.0)
-    return MeasurementResult(
-        _worst_rms("energy drift", drift, "%", Target.requirement(0.5, SOURCE)),
-        [Series("(E − E_0)/E_0", rows[:, 0], drift, ylabel="energy drift [%]")])
+    metrics = [
+        *_worst_rms(f"contact path error, first {judged:g} s", 100.0 * gap[window]
+                    / window_len, "% of path", path_req, f"path {window_len:.3g} m"),
+        *_worst_rms(f"lean error, first {judged:g} s", lean_err[window], "deg", lean_req),
+        Metric(f"worst contact path error, {duration:g} s", 100.0 * float(gap.max())
+               / float(path_len[-1]), "% of path", note=f"path {path_len[-1]:.3g} m"),
+        Metric(f"worst lean error, {duration:g} s", float(np.abs(lean_err).max()), "deg"),
+        *_worst_rms("energy drift", drift, "%",
+                    Target.requirement(0.5, f"{SOURCE}: over 10 s"),
+                    f"over {duration:g} s"),
+    ]
+    return MeasurementResult(metrics, [
+        Series("MuJoCo", rows[:, 1], rows[:, 2], "x [m]", "y [m]"),
+        Series("nonlinear equations", ref[:, 0], ref[:, 1], "x [m]", "y [m]"),
+        Series("lean MuJoCo", t, np.degrees(rows[:, 4]), ylabel="lean [deg]"),
+        Series("lean nonlinear equations", t, np.degrees(ref[:, 3]), ylabel="lean [deg]"),
+        Series("(E − E_0)/E_0 MuJoCo", t, drift, ylabel="energy drift [%]")])
