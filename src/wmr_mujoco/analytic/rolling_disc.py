@@ -273,20 +273,3 @@ class SteadyMotion:
     def speed(self) -> float:
         """Contact point speed ``a φ̇``."""
         return self.disc_radius * self.spin_rate
-
-
-def rk4(fun, y0: np.ndarray, dt: float, n: int) -> np.ndarray:
-    """Fixed-step classic RK4 of ``y' = fun(t, y)``: ``n`` steps, rows of states."""
-    y = np.asarray(y0, float)
-    out = np.empty((n + 1, len(y)))
-    out[0] = y
-    t = 0.0
-    for k in range(n):
-        k1 = fun(t, y)
-        k2 = fun(t + dt / 2, y + dt / 2 * k1)
-        k3 = fun(t + dt / 2, y + dt / 2 * k2)
-        k4 = fun(t + dt, y + dt * k3)
-        y = y + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-        t += dt
-        out[k + 1] = y
-    return out
