@@ -1,0 +1,145 @@
+"""The mecanum roller design study: ``python -m wmr_mujoco.mecanum_study``.
+
+Roller colliders × roller counts, each measured in one run on this machine: the
+rolling-radius ripple on the collision geometry (``mj_geomDistance`` over a wheel
+revolution), open-loop tracking of :func:`~wmr_mujoco.mecanum_scenarios.standard_scenarios`
+(0.5 s ramps and steps; worst over every run and RMS), and the real-time factor of
+``mj_step`` on one thread. ``omni3`` (default model) is timed in the same process for the
+ratio. The tables go between markers in ``models/mecanum4/README.md``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from wmr_mujoco.loading import load
+from wmr_mujoco.markers import replace_between
+from wmr_mujoco.mecanum_model import SPEC, load_mecanum
+from wmr_mujoco.mecanum_scenarios import (
+    MecanumScenario,
+    lateral_bound_pct,
+    run_scenario,
+    standard_scenarios,
+)
+from wmr_mujoco.omni_study import OMNI_WHEELS
+from wmr_mujoco.omni_trials import layout_from_model, rolling_radius_profile, run_trial
+from wmr_mujoco.omni_trials import standard_trials as omni_standard_trials
+from wmr_mujoco.params_mecanum import MecanumParams
+
+README = SPEC.robot_path.parent / "README.md"
+COUNTS = (8, 12, 16)
+#: Study trials are short (2 shared cores); the validation scenarios run 4 s.
+STUDY_DURATION = 2.5
+
+
+@dataclass(frozen=True)
+class Summary:
+    """One model's figures over all scenarios (position over runs with ≥ 1 cm of path)."""
+
+    label: str
+    ripple_pct: float
+    lateral_bound_pct: float
+    worst_position_pct: float
+    rms_position_pct: float
+    worst_heading_deg: float
+    rms_heading_deg: float
+    real_time_factor: float
+
+
+def ripple_pct(model) -> float:
+    """Peak-to-peak rolling radius of wheel FL over one revolution, % of its mean."""
+    prof = rolling_radius_profile(model, "wheel_fl", "wheel_fl_roller", samples=721)
+    return 100.0 * float(np.ptp(prof) / np.mean(prof))
+
+
+def measure(params: MecanumParams, scenarios: Sequence[MecanumScenario],
+            label: str) -> Summary:
+    """Ripple, tracking and real-time factor of the model built from ``params``."""
+    model = load_mecanum(params)
+    results = [run_scenario(model, params, s) for s in scenarios]
+    pos, pos_sq, head, head_sq = [], [], [], []
+    for r in results:
+        if r.path >= 0.01:
+            pct = 100.0 * r.position_error / r.path
+            pos.append(pct.max())
+            pos_sq.append(np.mean(pct**2))
+        h = r.heading_error
+        head.append(np.abs(h).max())
+        head_sq.append(np.mean(h**2))
+    return Summary(label, ripple_pct(model), lateral_bound_pct(params), float(max(pos)),
+                   float(np.sqrt(np.mean(pos_sq))), float(max(head)),
+                   float(np.sqrt(np.mean(head_sq))),
+                   float(np.median([r.real_time_factor for r in results])))
+
+
+def omni3_real_time_factor(duration: float = STUDY_DURATION) -> float:
+    """Median real-time factor of the default ``omni3`` on its standard trials."""
+    model = load("omni3")
+    info = layout_from_model(model, OMNI_WHEELS)
+    trials = [dataclasses.replace(t, duration=duration) for t in omni_standard_trials()]
+    return float(np.median([run_trial(model, info, t).real_time_factor for t in trials]))
+
+
+def study_configs() -> list[tuple[str, MecanumParams]]:
+    """Roller shapes × roller counts, everything else at the defaults."""
+    return [(f"{shape}, {n}", dataclasses.replace(MecanumParams(), roller_shape=shape,
+                                                   rollers_per_wheel=n))
+            for n in COUNTS for shape in MecanumParams.ROLLER_SHAPES]
+
+
+def _fmt(x: float, digits: int = 2) -> str:
+    return "n/a" if not np.isfinite(x) else f"{x:.{digits}f}"
+
+
+def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
+    """Markdown table of summaries."""
+    lines = ["| rollers | ripple % | derived lateral shortfall % | worst position error "
+             "% of path | RMS position error % of path | worst heading error ° | "
+             "RMS heading error ° | real-time factor |",
+             "|---|---|---|---|---|---|---|---|"]
+    for s in rows:
+        label = f"**{s.label} (default)**" if s.label == default_label else s.label
+        lines.append(f"| {label} | {_fmt(s.ripple_pct, 3)} | {_fmt(s.lateral_bound_pct)} | "
+                     f"{_fmt(s.worst_position_pct, 3)} | {_fmt(s.rms_position_pct, 3)} | "
+                     f"{_fmt(s.worst_heading_deg)} | {_fmt(s.rms_heading_deg, 3)} | "
+                     f"{_fmt(s.real_time_factor, 0)}× |")
+    return "\n".join(lines)
+
+
+def main(argv: Sequence[str] | None = None) -> None:
+    """Run the study; print the tables and update the README."""
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--no-write", action="store_true", help="print only")
+    parser.add_argument("--duration", type=float, default=STUDY_DURATION,
+                        help="seconds per trial")
+    args = parser.parse_args(argv)
+    scenarios = standard_scenarios(duration=args.duration)
+    default = MecanumParams()
+    default_label = f"{default.roller_shape}, {default.rollers_per_wheel}"
+    study = []
+    for label, params in study_configs():
+        study.append(measure(params, scenarios, label))
+        print(table(study[-1:]).splitlines()[-1], flush=True)
+    # Default and omni3 timed back to back in the same process for the ratio.
+    ours = measure(default, scenarios, "mecanum4 (default)")
+    omni = omni3_real_time_factor(args.duration)
+    timing = "\n".join([
+        "| model | real-time factor (one thread) |", "|---|---|",
+        f"| mecanum4 (default, {default_label}) | {ours.real_time_factor:.0f}× |",
+        f"| omni3 (default) | {omni:.0f}× |",
+        f"| ratio mecanum4 / omni3 | {ours.real_time_factor / omni:.2f} |"])
+    study_md = table(study, default_label)
+    print(study_md, "", timing, sep="\n")
+    if not args.no_write:
+        replace_between(README, "mecanum roller study", study_md)
+        replace_between(README, "mecanum timing", timing)
+        print(f"wrote {README}")
+
+
+if __name__ == "__main__":
+    main()
