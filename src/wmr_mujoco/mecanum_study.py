@@ -22,6 +22,7 @@ from wmr_mujoco.markers import replace_between
 from wmr_mujoco.mecanum_model import SPEC, load_mecanum
 from wmr_mujoco.mecanum_scenarios import (
     MecanumScenario,
+    ScenarioResult,
     lateral_bound_pct,
     run_scenario,
     standard_scenarios,
@@ -39,15 +40,16 @@ STUDY_DURATION = 2.5
 
 @dataclass(frozen=True)
 class Summary:
-    """One model's figures over all scenarios (position over runs with ≥ 1 cm of path)."""
+    """One model's figures; tracking per command kind (``"ramp"``, ``"step"``).
+
+    ``tracking[kind] = (worst position %, RMS position %, worst heading °, RMS heading °)``,
+    position over the runs with ≥ 1 cm of path, worst and RMS over every run's series.
+    """
 
     label: str
     ripple_pct: float
     lateral_bound_pct: float
-    worst_position_pct: float
-    rms_position_pct: float
-    worst_heading_deg: float
-    rms_heading_deg: float
+    tracking: dict[str, tuple[float, float, float, float]]
     real_time_factor: float
 
 
@@ -57,11 +59,8 @@ def ripple_pct(model) -> float:
     return 100.0 * float(np.ptp(prof) / np.mean(prof))
 
 
-def measure(params: MecanumParams, scenarios: Sequence[MecanumScenario],
-            label: str) -> Summary:
-    """Ripple, tracking and real-time factor of the model built from ``params``."""
-    model = load_mecanum(params)
-    results = [run_scenario(model, params, s) for s in scenarios]
+def tracking(results: Sequence[ScenarioResult]) -> tuple[float, float, float, float]:
+    """Worst and RMS position error (% of path) and heading error (°) over all series."""
     pos, pos_sq, head, head_sq = [], [], [], []
     for r in results:
         if r.path >= 0.01:
@@ -71,9 +70,19 @@ def measure(params: MecanumParams, scenarios: Sequence[MecanumScenario],
         h = r.heading_error
         head.append(np.abs(h).max())
         head_sq.append(np.mean(h**2))
-    return Summary(label, ripple_pct(model), lateral_bound_pct(params), float(max(pos)),
-                   float(np.sqrt(np.mean(pos_sq))), float(max(head)),
-                   float(np.sqrt(np.mean(head_sq))),
+    return (float(max(pos)), float(np.sqrt(np.mean(pos_sq))), float(max(head)),
+            float(np.sqrt(np.mean(head_sq))))
+
+
+def measure(params: MecanumParams, scenarios: Sequence[MecanumScenario],
+            label: str) -> Summary:
+    """Ripple, tracking and real-time factor of the model built from ``params``."""
+    model = load_mecanum(params)
+    results = [run_scenario(model, params, s) for s in scenarios]
+    kinds = {"ramp": [r for r, s in zip(results, scenarios, strict=True) if s.ramp > 0],
+             "step": [r for r, s in zip(results, scenarios, strict=True) if s.ramp == 0]}
+    return Summary(label, ripple_pct(model), lateral_bound_pct(params),
+                   {k: tracking(v) for k, v in kinds.items() if v},
                    float(np.median([r.real_time_factor for r in results])))
 
 
@@ -97,17 +106,19 @@ def _fmt(x: float, digits: int = 2) -> str:
 
 
 def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
-    """Markdown table of summaries."""
-    lines = ["| rollers | ripple % | derived lateral shortfall % | worst position error "
-             "% of path | RMS position error % of path | worst heading error ° | "
-             "RMS heading error ° | real-time factor |",
+    """Markdown table of summaries: ramp and step tracking in their own columns."""
+    lines = ["| rollers | ripple % | derived lateral shortfall % | ramps: worst / RMS "
+             "position % of path | ramps: worst / RMS heading ° | steps: worst / RMS "
+             "position % of path | steps: worst / RMS heading ° | real-time factor |",
              "|---|---|---|---|---|---|---|---|"]
     for s in rows:
         label = f"**{s.label} (default)**" if s.label == default_label else s.label
+        cells = []
+        for kind in ("ramp", "step"):
+            wp, rp, wh, rh = s.tracking.get(kind, (np.nan,) * 4)
+            cells += [f"{_fmt(wp, 3)} / {_fmt(rp, 3)}", f"{_fmt(wh)} / {_fmt(rh, 3)}"]
         lines.append(f"| {label} | {_fmt(s.ripple_pct, 3)} | {_fmt(s.lateral_bound_pct)} | "
-                     f"{_fmt(s.worst_position_pct, 3)} | {_fmt(s.rms_position_pct, 3)} | "
-                     f"{_fmt(s.worst_heading_deg)} | {_fmt(s.rms_heading_deg, 3)} | "
-                     f"{_fmt(s.real_time_factor, 0)}× |")
+                     + " | ".join(cells) + f" | {_fmt(s.real_time_factor, 0)}× |")
     return "\n".join(lines)
 
 
