@@ -1,0 +1,83 @@
+"""The mecanum4 builder: layout, free rollers, envelope, actuation, checked-in files."""
+
+import dataclasses
+import math
+
+import mujoco
+import numpy as np
+import pytest
+
+from wmr_mujoco.actuation import set_actuation_mode
+from wmr_mujoco.builders import common, mecanum4
+from wmr_mujoco.mecanum_model import SPEC, load_mecanum
+from wmr_mujoco.omni_trials import rolling_radius_profile
+from wmr_mujoco.params_mecanum import MecanumParams
+
+
+@pytest.fixture(scope="module")
+def model():
+    return load_mecanum(MecanumParams())
+
+
+def test_contact_roller_axes_make_the_o_layout(model):
+    # At rest roller 00 of each wheel is the bottom one; its axis, seen from above, must
+    # make γ_i = (−45°, +45°, +45°, −45°) with +x (FL, FR, RL, RR), up to a half turn.
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    for (name, _, _, sg) in mecanum4.WHEELS:
+        j = model.joint(f"{name}_roller00").id
+        axis = data.xaxis[j]
+        assert abs(axis[2]) < 1e-9
+        angle = math.atan2(axis[1], axis[0])
+        assert math.tan(angle) == pytest.approx(math.tan(sg * math.pi / 4), abs=1e-9)
+        assert data.xanchor[j][2] == pytest.approx(MecanumParams().roller_half_width,
+                                                   abs=1e-9)  # R − d above the floor
+
+
+def test_roller_joints_are_free(model):
+    p = MecanumParams()
+    rollers = [j for j in range(model.njnt) if "_roller" in model.joint(j).name]
+    assert len(rollers) == 4 * p.rollers_per_wheel
+    dofs = [model.jnt_dofadr[j] for j in rollers]
+    assert not model.dof_damping[dofs].any()
+    assert not model.dof_frictionloss[dofs].any()
+    assert not model.dof_armature[dofs].any()
+
+
+def test_rolling_radius_ripple_meets_the_requirement(model):
+    # Requirement (issue 15): ripple ≤ 0.3 %; the mean radius is R less the contact
+    # penetration (none here: the base is lifted, mj_geomDistance is exact).
+    prof = rolling_radius_profile(model, "wheel_fl", "wheel_fl_roller", samples=241)
+    assert 100 * np.ptp(prof) / prof.mean() <= 0.3
+    assert prof.max() == pytest.approx(MecanumParams().wheel_radius, rel=1e-6)
+
+
+def test_profile_mesh_has_no_ripple():
+    # The ideal profile as a convex mesh: ripple only from its facets (17 rings × 40).
+    model = load_mecanum(dataclasses.replace(MecanumParams(), roller_shape="profile"))
+    prof = rolling_radius_profile(model, "wheel_fl", "wheel_fl_roller", samples=121)
+    assert 100 * np.ptp(prof) / prof.mean() <= 0.1
+
+
+def test_torque_mode_applies_the_control(model):
+    m = load_mecanum(MecanumParams())
+    set_actuation_mode(m, "torque")
+    data = mujoco.MjData(m)
+    data.ctrl[:] = 0.5
+    mujoco.mj_step(m, data)
+    np.testing.assert_allclose(data.actuator_force, 0.5)
+
+
+def test_checked_in_files_match_the_builder():
+    assert SPEC.robot_path.read_text() == common.to_xml(mecanum4.build(MecanumParams()))
+    assert load_mecanum().nbody == load_mecanum(MecanumParams()).nbody
+
+
+@pytest.mark.parametrize(("field", "value"), [("rollers_per_wheel", 4),
+                                              ("roller_shape", "cylinder"),
+                                              ("roller_angle", 1.5),
+                                              ("half_track", 0.01),
+                                              ("roller_thickness", 0.9)])
+def test_bad_parameters_are_named(field, value):
+    with pytest.raises(ValueError, match=field):
+        dataclasses.replace(MecanumParams(), **{field: value})
