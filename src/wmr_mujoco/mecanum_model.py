@@ -1,7 +1,7 @@
 """The ``mecanum4`` robot's registry entry, loading and checked-in files.
 
-``python -m wmr_mujoco.mecanum_model`` writes ``models/mecanum4/mecanum4.xml``,
-``scene.xml`` and the README's parameter table from the builder's defaults (what
+``python -m wmr_mujoco.mecanum_model [--picture]`` writes ``models/mecanum4/mecanum4.xml``,
+``scene.xml``, the README's parameter table (and the picture) from the builder's defaults (what
 ``python -m wmr_mujoco.export`` does for the registered robots; once :data:`SPEC` is in
 the registry, that command covers this robot too).
 """
@@ -57,6 +57,26 @@ def write_files() -> list[Path]:
     return written
 
 
+def write_picture(width: int = 640, height: int = 400) -> Path:
+    """Render the robot at rest to ``models/mecanum4/mecanum4.png`` (as ``wmr_mujoco.pictures``)."""
+    from wmr_mujoco.gl_backend import select_backend
+
+    select_backend()
+    from wmr_mujoco.rendering import CameraSettings, Filmer, write_media
+
+    model = load_mecanum()
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    with Filmer(model, width, height, CameraSettings(shadows=True, reflections=True,
+                                                      elevation=-35)) as f:
+        image = f.frame(data)
+    return write_media(SPEC.robot_path.with_suffix(".png"), image)
+
+
 if __name__ == "__main__":
+    import sys
+
     for p in write_files():
         print(f"wrote {p}")
+    if "--picture" in sys.argv[1:]:
+        print(f"wrote {write_picture()}")

@@ -192,12 +192,35 @@ def run_scenario(model: mujoco.MjModel, params: MecanumParams,
     return ScenarioResult(scenario.name, dt * np.arange(nstep + 1), sim, analytic, wall)
 
 
-def judge(result: ScenarioResult) -> list[Row]:
+def step_lag_floor_pct(params: MecanumParams, scenario: MecanumScenario,
+                       path: float) -> float:
+    """Least position lag of a step translation, % of ``path`` (docs/mecanum.md §4).
+
+    Each wheel pushes the chassis only along its contact roller's axis ``e_i``, by at most
+    ``μ N_i = μ m g / 4``; the components across the motion cancel in this symmetric
+    layout, so along the unit direction ``ê`` the chassis accelerates at most at
+    ``a = (μ g / 4) Σ |e_i · ê|`` and falls behind a step to speed V by ``V² / (2a)``.
+    NaN for runs that turn (the bound is for pure translation) or with no path.
+    """
+    u, v, r = scenario.twist
+    speed = float(np.hypot(u, v))
+    if r != 0.0 or speed == 0.0 or path <= 0.0:
+        return float("nan")
+    lay = layout(params)
+    e = np.stack([np.cos(lay.roller_angles), np.sin(lay.roller_angles)], axis=1)
+    accel = params.sim.friction * 9.81 / 4.0 * float(np.abs(e @ (np.array([u, v]) / speed)).sum())
+    return 100.0 * speed**2 / (2.0 * accel) / path
+
+
+def judge(result: ScenarioResult, params: MecanumParams | None = None,
+          scenario: MecanumScenario | None = None) -> list[Row]:
     """Judged rows ``(metric, value, unit, target, basis)`` of one run.
 
     Position error in % of the run's analytic path (worst over the run, RMS over the run,
     final); for a run with under 1 cm of path (pure rotation) the drift in mm is reported
-    instead, without target. Heading error in degrees, worst, RMS and final.
+    instead, without target. Heading error in degrees, worst, RMS and final. Given the
+    ``params`` and a step ``scenario`` that translates, a last row reports the derived
+    friction floor of the lag (:func:`step_lag_floor_pct`).
     """
     req = "requirement (issue 15)"
     rows: list[Row] = []
@@ -217,6 +240,11 @@ def judge(result: ScenarioResult) -> list[Row]:
              ("heading error, RMS over run", float(np.sqrt(np.mean(h**2))), "deg",
               HEADING_DEG, req),
              ("heading error, final", float(abs(h[-1])), "deg", HEADING_DEG, req)]
+    if params is not None and scenario is not None and scenario.ramp == 0.0:
+        floor = step_lag_floor_pct(params, scenario, path)
+        if np.isfinite(floor):
+            rows.append(("position lag floor of a step (friction)", floor, "% of path",
+                         float("nan"), "derived bound: V²/(2a), a = (μg/4) Σ|e_i·ê|"))
     return rows
 
 
@@ -231,7 +259,7 @@ def run_all(model: mujoco.MjModel, params: MecanumParams,
     out = []
     for s in scenarios:
         res = run_scenario(model, params, s)
-        out.append((res, judge(res)))
+        out.append((res, judge(res, params, s)))
     return out
 
 

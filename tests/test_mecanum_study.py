@@ -1,0 +1,31 @@
+"""The mecanum design study: one short measurement, the table, the configurations."""
+
+import pytest
+
+from wmr_mujoco.mecanum_scenarios import MecanumScenario
+from wmr_mujoco.mecanum_study import measure, study_configs, table
+from wmr_mujoco.params_mecanum import MecanumParams
+
+
+def test_measure_splits_ramps_and_steps_and_marks_the_default():
+    scen = [MecanumScenario("fwd ramp", (0.3, 0.0, 0.0), duration=1.0),
+            MecanumScenario("fwd step", (0.3, 0.0, 0.0), duration=1.0, ramp=0.0)]
+    s = measure(MecanumParams(), scen, "ellipsoid, 16")
+    assert set(s.tracking) == {"ramp", "step"}
+    # A step lags more than a ramp of the same run (friction-limited acceleration).
+    assert s.tracking["step"][0] > s.tracking["ramp"][0]
+    assert 0.0 < s.ripple_pct <= 0.3
+    assert "**ellipsoid, 16 (default)**" in table([s], "ellipsoid, 16")
+
+
+def test_configs_are_shapes_times_counts():
+    labels = [label for label, _ in study_configs()]
+    assert len(labels) == len(set(labels)) == 3 * len(MecanumParams.ROLLER_SHAPES)
+
+
+def test_load_rejects_foreign_params():
+    from wmr_mujoco.mecanum_model import load_mecanum
+    from wmr_mujoco.params import OmniParams
+
+    with pytest.raises(ValueError, match="MecanumParams"):
+        load_mecanum(OmniParams())
