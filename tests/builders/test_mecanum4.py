@@ -9,6 +9,7 @@ import pytest
 
 from wmr_mujoco.actuation import set_actuation_mode
 from wmr_mujoco.builders import common, mecanum4
+from wmr_mujoco.export import scene_xml
 from wmr_mujoco.mecanum_model import SPEC, load_mecanum
 from wmr_mujoco.omni_trials import rolling_radius_profile
 from wmr_mujoco.params_mecanum import MecanumParams
@@ -69,7 +70,9 @@ def test_torque_mode_applies_the_control(model):
 
 
 def test_checked_in_files_match_the_builder():
+    # Regenerate with `python -m wmr_mujoco.mecanum_model` after changing the builder.
     assert SPEC.robot_path.read_text() == common.to_xml(mecanum4.build(MecanumParams()))
+    assert SPEC.scene_path.read_text() == scene_xml(SPEC)
     assert load_mecanum().nbody == load_mecanum(MecanumParams()).nbody
 
 
