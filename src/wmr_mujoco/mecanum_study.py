@@ -36,7 +36,7 @@ from wmr_mujoco.params_mecanum import MecanumParams
 README = SPEC.robot_path.parent / "README.md"
 COUNTS = (8, 12, 16, 20, 24)
 #: Study trials are short (2 shared cores); the validation scenarios run 4 s.
-STUDY_DURATION = 2.5
+STUDY_DURATION = 3.0
 
 
 @dataclass(frozen=True)
