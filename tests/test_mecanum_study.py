@@ -1,7 +1,5 @@
 """The mecanum design study: one short measurement, the table, the configurations."""
 
-import pytest
-
 from wmr_mujoco.mecanum_scenarios import MecanumScenario
 from wmr_mujoco.mecanum_study import COUNTS, measure, study_configs, table
 from wmr_mujoco.params_mecanum import MecanumParams
@@ -21,11 +19,3 @@ def test_measure_splits_ramps_and_steps_and_marks_the_default():
 def test_configs_are_shapes_times_counts():
     labels = [label for label, _ in study_configs()]
     assert len(labels) == len(set(labels)) == len(COUNTS) * len(MecanumParams.ROLLER_SHAPES)
-
-
-def test_load_rejects_foreign_params():
-    from wmr_mujoco.mecanum_model import load_mecanum
-    from wmr_mujoco.params import OmniParams
-
-    with pytest.raises(ValueError, match="MecanumParams"):
-        load_mecanum(OmniParams())
