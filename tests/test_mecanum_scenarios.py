@@ -10,6 +10,7 @@ from wmr_mujoco.mecanum_scenarios import (
     judge,
     lateral_bound_pct,
     run_scenario,
+    runner_scenarios,
     standard_scenarios,
     step_lag_floor_pct,
 )
@@ -96,3 +97,13 @@ def test_a_step_cannot_beat_the_friction_floor(setup):
     rows = {r[0]: r for r in judge(res, p, s)}
     floor = rows["position lag floor of a step (friction)"][1]
     assert rows["position error, final"][1] >= 0.95 * floor
+
+
+def test_runner_scenarios_carry_the_same_inputs():
+    ours, theirs = standard_scenarios(), runner_scenarios()
+    assert [s.name for s in ours] == [s.name for s in theirs]
+    for a, b in zip(ours, theirs, strict=True):
+        assert b.robot == "mecanum4"
+        for t in (0.0, 0.1, 0.3, 0.6, 2.0):
+            np.testing.assert_allclose([sig(t) for sig in b.inputs], a.twist_at(t),
+                                       atol=1e-12)

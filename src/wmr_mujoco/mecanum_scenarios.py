@@ -32,7 +32,8 @@ from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.integrate import integrate
 from wmr_mujoco.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.params_mecanum import MecanumParams
-from wmr_mujoco.scenarios import OMNI_DIRECTIONS_DEG, OMNI_SPEED, OMNI_YAW_RATE
+from wmr_mujoco.scenarios import OMNI_DIRECTIONS_DEG, OMNI_SPEED, OMNI_YAW_RATE, Scenario
+from wmr_mujoco.signals import const
 from wmr_mujoco.simulation import check_healthy
 
 #: Requirements (issue 15): position error in % of path and heading error in degrees.
@@ -106,6 +107,17 @@ def standard_scenarios(duration: float = 4.0, speed: float = OMNI_SPEED,
         out.append(MecanumScenario(f"diagonal+rotate ({tag})",
                                    (-0.6 * speed, 0.6 * speed, -yaw_rate), duration, ramp))
     return out
+
+
+def runner_scenarios(duration: float = 4.0) -> list[Scenario]:
+    """The standard scenarios as the validation runner's :class:`Scenario` objects.
+
+    Robot ``"mecanum4"``, inputs ``(u, v, r)`` as ramped or stepped constants, ready for
+    ``wmr_mujoco.scenarios.SCENARIOS``.
+    """
+    return [Scenario("mecanum4", s.name, tuple(const(float(x), s.ramp) for x in s.twist),
+                     duration=s.duration, settle=s.settle)
+            for s in standard_scenarios(duration)]
 
 
 @dataclass(frozen=True)
