@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-from wmr_mujoco.robots import bicycle, disc, disc_free, omni3, tricycle
+from wmr_mujoco.robots import bicycle, disc, disc_free, mecanum4, omni3, tricycle
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 
 __all__ = ["ROBOTS", "Picture", "RobotSpec", "get_spec", "register", "registered",
@@ -25,6 +25,7 @@ ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
     bicycle.SPEC,
     tricycle.SPEC,
     omni3.SPEC,
+    mecanum4.SPEC,
 )}
 
 

@@ -12,8 +12,8 @@ import numpy as np
 from dm_control import mjcf
 
 from wmr_mujoco.analytic import mecanum_roller as mr
-from wmr_mujoco.builders import common
-from wmr_mujoco.params_mecanum import MecanumParams
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.params_mecanum import MecanumParams
 
 CHASSIS_HEIGHT = 0.04
 HUB_RADIUS_FACTOR = 0.6

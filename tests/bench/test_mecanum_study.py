@@ -1,13 +1,12 @@
 """The mecanum design study: one short measurement, the table, the configurations."""
 
-from wmr_mujoco.mecanum_scenarios import MecanumScenario
-from wmr_mujoco.mecanum_study import COUNTS, measure, study_configs, table
-from wmr_mujoco.params_mecanum import MecanumParams
+from wmr_mujoco.bench.mecanum_study import COUNTS, measure, study_configs, study_scenarios, table
+from wmr_mujoco.models.params_mecanum import MecanumParams
 
 
 def test_measure_splits_ramps_and_steps_and_marks_the_default():
-    scen = [MecanumScenario("fwd ramp", (0.3, 0.0, 0.0), duration=1.0),
-            MecanumScenario("fwd step", (0.3, 0.0, 0.0), duration=1.0, ramp=0.0)]
+    scen = [s for s in study_scenarios(1.0)
+            if s.name in ("translate 0° (ramp)", "translate 0° (step)")]
     s = measure(MecanumParams(), scen, "ellipsoid, 16")
     assert set(s.tracking) == {"ramp", "step"}
     # A step lags more than a ramp of the same run (friction-limited acceleration).

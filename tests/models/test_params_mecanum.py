@@ -5,7 +5,7 @@ import math
 
 import pytest
 
-from wmr_mujoco.params_mecanum import MecanumParams
+from wmr_mujoco.models.params_mecanum import MecanumParams
 
 
 def test_derived_geometry():

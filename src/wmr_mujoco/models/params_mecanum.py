@@ -1,6 +1,6 @@
 """Parameters of the four-mecanum-wheel platform (``mecanum4``), a frozen validated dataclass.
 
-Lengths in metres, masses in kilograms, angles in radians (see :mod:`wmr_mujoco.params`).
+Lengths in metres, masses in kilograms, angles in radians (see :mod:`wmr_mujoco.models.params`).
 The roller geometry is derived in ``docs/mecanum.md``.
 """
 
@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from wmr_mujoco.params import DriveParams, SimParams, _check_positive_fields, _check_range
+from wmr_mujoco.models.params import DriveParams, SimParams, _check_positive_fields, _check_range
 
 
 @dataclass(frozen=True)
