@@ -38,10 +38,13 @@ renders: $(STAMP)
 	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 200 --height 150 --fps 8 --duration 5
 	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
 	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
+	$(BIN)/wmr render mecanum4 --scenario "translate+rotate (ramp)" --out renders/mecanum4.gif --width 200 --height 150 --fps 8 --duration 10
 
-# The roller design study and peer comparison in models/omni3/README.md.
+# The roller design studies: omni3's (and the peer comparison) in models/omni3/README.md,
+# mecanum4's in models/mecanum4/README.md.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
+	$(BIN)/python -m wmr_mujoco.bench.mecanum_study
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

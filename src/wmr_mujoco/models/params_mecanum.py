@@ -58,9 +58,9 @@ class MecanumParams:
     roller_overlap: float = 0.1
     roller_armature: float = 0.0
     roller_damping: float = 0.0
-    drive: DriveParams = DriveParams(  # noqa: RUF009
+    drive: DriveParams = DriveParams(
         wheel_kv=2.0, wheel_armature=0.004, wheel_torque_limit=3.0, wheel_rate_limit=60.0)
-    sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)  # noqa: RUF009
+    sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
 

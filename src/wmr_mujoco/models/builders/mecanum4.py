@@ -132,7 +132,7 @@ def _add_wheel(chassis: mjcf.Element, root: mjcf.RootElement, params: MecanumPar
     common.add_wheel_actuator(root, name, p.drive, joint=joint)
 
 
-def build(params: MecanumParams = MecanumParams()) -> mjcf.RootElement:  # noqa: B008
+def build(params: MecanumParams) -> mjcf.RootElement:
     """Four-mecanum-wheel platform on a free joint.
 
     Kinematic tree::

@@ -32,6 +32,8 @@ from wmr_mujoco.validation.metrics import Metric, Target, Trace
 from wmr_mujoco.validation.omni_wheels import dynamics_from_model
 from wmr_mujoco.validation.scenarios import Scenario
 
+#: Gravity, m/s².
+GRAVITY = 9.81
 #: Key of the body-velocity target of torque runs.
 VELOCITY_PCT = "body velocity error % of peak"
 #: Runs whose name starts with this are judged; the others are reported.
@@ -45,6 +47,7 @@ class MecanumDynamicsAdapter:
     """``x = (X, Y, ψ, u, v, r)`` under the reduced Lagrange equations; controls = torques."""
 
     dynamics: OmniDynamics
+    friction: float = 1.0
     mode: ActuationMode = ActuationMode.TORQUE
     state_names: tuple[str, ...] = ("x", "y", "heading", "u", "v", "r")
     state_units: tuple[str, ...] = (*POSE_UNITS, "m/s", "m/s", "rad/s")
@@ -69,7 +72,7 @@ def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
     """The reduced Lagrange model, parameters from the compiled model."""
     p = params_or_default(params, MecanumParams)
     return MecanumDynamicsAdapter(dynamics_from_model(model, layout(p), "chassis",
-                                                      WHEEL_NAMES[0]))
+                                                      WHEEL_NAMES[0]), p.sim.friction)
 
 
 def judge_torques(scenario: Scenario, trace: Trace, adapter: MecanumDynamicsAdapter,
@@ -95,4 +98,27 @@ def judge_torques(scenario: Scenario, trace: Trace, adapter: MecanumDynamicsAdap
         if abs(ana[-1, i]) > 1e-6:
             out.append(Metric(f"final {name}: MuJoCo / Lagrange", sim[-1, i] / ana[-1, i],
                               "ratio"))
+    out.append(roller_force_ratio(scenario, trace, adapter))
     return out
+
+
+def roller_force_ratio(scenario: Scenario, trace: Trace, adapter: MecanumDynamicsAdapter
+                       ) -> Metric:
+    """Largest roller-axis force of the reduced model over the run, over μ N.
+
+    A wheel's traction ``F_t`` along its drive direction
+    (:meth:`~wmr_mujoco.analytic.omni_dynamics.OmniDynamics.traction_forces`) is the drive
+    component of a force along its contact roller's axis, ``F = F_t / cos γ``; the contact
+    transmits it without slipping while ``|F| ≤ μ N``, ``N = M g / 4``. Above 1 the
+    reduced (rolling) model does not apply to the run.
+    """
+    dyn = adapter.dynamics
+    tr = trace.arrays()
+    cos_g = np.cos(dyn.layout.roller_angles)
+    forces = [np.max(np.abs(dyn.traction_forces(x[3:6], scenario.input_at(t)) / cos_g))
+              for t, x in zip(tr["time"], tr["analytic"], strict=True)]
+    limit = adapter.friction * dyn.mass * GRAVITY / dyn.layout.n
+    return Metric("largest roller-axis force / μN", float(np.max(forces)) / limit, "",
+                  Target.derived(1.0, "Coulomb friction: a roller contact transmits its "
+                                      "axial force |F| = |F_t|/cos γ without slip while "
+                                      "|F| ≤ μ N, N = M g / 4 on each of four wheels"))
