@@ -17,20 +17,20 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
-from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose, body_twist
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
 from wmr_mujoco.validation.omni_wheels import (
     DIRECTIONS_DEG,
     ROLLER_RATE_PCT,
     SPEED,
     YAW_RATE,
+    OmniDynamicsAdapter,
     dynamics_from_model,
     omni_probes,
     translation,
@@ -92,31 +92,6 @@ class OmniKinematics:
         return base_pose(model, data)
 
 
-@dataclass(frozen=True)
-class OmniDynamicsAdapter:
-    """Omni robot under wheel torques: ``x = (X, Y, ψ, u, v, r)``, reduced Lagrange EOM."""
-
-    dynamics: OmniDynamics
-    friction: float = 1.0
-    mode: ActuationMode = ActuationMode.TORQUE
-    state_names: tuple[str, ...] = ("x", "y", "heading", "u", "v", "r")
-    state_units: tuple[str, ...] = (*POSE_UNITS, "m/s", "m/s", "rad/s")
-    wheel_joints: tuple[str, ...] = WHEELS
-    lateral_wheels: tuple[str, ...] = ()
-
-    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
-        """Torques as given."""
-        return np.asarray(u, float)
-
-    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
-        """Reduced Lagrange equations (:meth:`OmniDynamics.state_derivative`)."""
-        return self.dynamics.state_derivative(x, u)
-
-    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-        """Pose and body twist of the ``base`` site."""
-        return np.concatenate([base_pose(model, data), body_twist(model, data)])
-
-
 def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
                       params: RobotParams | None) -> OmniKinematics:
     """The ideal omni kinematics."""
@@ -130,7 +105,7 @@ def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
     p = params_or_default(params, OmniParams)
     layout = ok.symmetric_layout(p.wheel_radius, p.wheel_distance)
     return OmniDynamicsAdapter(dynamics_from_model(model, layout, "platform", WHEELS[0]),
-                               friction=p.sim.friction)
+                               WHEELS, friction=p.sim.friction)
 
 
 def judge_torques(scenario: Scenario, trace: Trace, adapter: OmniDynamicsAdapter,

@@ -93,14 +93,7 @@ def _add_wheel(chassis: mjcf.Element, root: mjcf.RootElement, params: MecanumPar
     joint = wheel.add("joint", name=name, type="hinge", axis=(0, 1, 0),
                       armature=p.drive.wheel_armature)
     hub_r, hub_w = HUB_RADIUS_FACTOR * R, 1.2 * p.wheel_half_width
-    wheel.add("inertial", pos=(0, 0, 0), mass=p.hub_mass,
-              diaginertia=(p.hub_mass * (hub_r**2 / 4 + hub_w**2 / 12),
-                           p.hub_mass * hub_r**2 / 2,
-                           p.hub_mass * (hub_r**2 / 4 + hub_w**2 / 12)))
-    wheel.add("geom", dclass="visual", type="cylinder", size=(hub_r, hub_w / 2.0),
-              zaxis=(0, 1, 0), rgba=common.WHEEL_RGBA)
-    wheel.add("geom", dclass="visual", type="box", size=(0.9 * hub_r, hub_w / 2 + 0.001,
-                                                           0.1 * hub_r), rgba=common.MARK_RGBA)
+    common.add_hub(wheel, p.hub_mass, hub_r, hub_w)
     c, s = math.cos(p.roller_angle), sg * math.sin(p.roller_angle)
     t_m = roller_axis_span(p)
     sig, rho = mr.ideal_profile(R, b, p.roller_angle, np.linspace(-t_m, t_m, 9))
@@ -149,21 +142,8 @@ def build(params: MecanumParams) -> mjcf.RootElement:
     p = params
     R = p.wheel_radius
     root = common.new_root("mecanum4", p.sim)
-    roller = root.default.add("default", dclass="roller")
-    roller.joint.type = "hinge"
-    roller.joint.axis = (0, 0, 1)
-    roller.joint.damping = p.roller_damping
-    roller.joint.armature = p.roller_armature
+    roller = common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
     roller.joint.frictionloss = 0.0
-    roller.geom.group = 3
-    roller.geom.condim = 3
-    roller.geom.priority = 1
-    roller.geom.friction = (p.sim.friction, 0.005, 0.0001)
-    roller.geom.solref = (p.sim.contact_timeconst, 1.0)
-    roller.geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
-    # Rollers touch the floor only: contype 0 so that no two robot geoms collide.
-    roller.geom.contype = 0
-    roller.geom.conaffinity = 1
     if p.roller_shape == "profile":
         root.asset.add("mesh", name="roller_profile", vertex=profile_vertices(p).ravel())
     chassis = root.worldbody.add("body", name="chassis", pos=(0, 0, R))

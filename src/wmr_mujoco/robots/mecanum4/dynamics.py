@@ -16,20 +16,16 @@ chassis slower than the reduced model (roller hand-overs, the pitch effect of
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
-from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4.geometry import layout
-from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose, body_twist
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
-from wmr_mujoco.validation.omni_wheels import dynamics_from_model
+from wmr_mujoco.validation.omni_wheels import OmniDynamicsAdapter, dynamics_from_model
 from wmr_mujoco.validation.scenarios import Scenario
 
 #: Gravity, m/s².
@@ -42,40 +38,16 @@ JUDGED_PREFIX = "torque ahead"
 JUDGED_AFTER = 0.5
 
 
-@dataclass(frozen=True)
-class MecanumDynamicsAdapter:
-    """``x = (X, Y, ψ, u, v, r)`` under the reduced Lagrange equations; controls = torques."""
-
-    dynamics: OmniDynamics
-    friction: float = 1.0
-    mode: ActuationMode = ActuationMode.TORQUE
-    state_names: tuple[str, ...] = ("x", "y", "heading", "u", "v", "r")
-    state_units: tuple[str, ...] = (*POSE_UNITS, "m/s", "m/s", "rad/s")
-    wheel_joints: tuple[str, ...] = WHEEL_NAMES
-    lateral_wheels: tuple[str, ...] = ()
-
-    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
-        """The torques themselves (FL, FR, RL, RR), N·m."""
-        return np.asarray(u, float)
-
-    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
-        """Reduced Lagrange equations with the world pose."""
-        return self.dynamics.state_derivative(x, u)
-
-    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-        """Pose and body twist of the ``base`` site."""
-        return np.concatenate([base_pose(model, data), body_twist(model, data)])
-
-
 def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
-                    params: RobotParams | None) -> MecanumDynamicsAdapter:
+                    params: RobotParams | None) -> OmniDynamicsAdapter:
     """The reduced Lagrange model, parameters from the compiled model."""
     p = params_or_default(params, MecanumParams)
-    return MecanumDynamicsAdapter(dynamics_from_model(model, layout(p), "chassis",
-                                                      WHEEL_NAMES[0]), p.sim.friction)
+    return OmniDynamicsAdapter(dynamics_from_model(model, layout(p), "chassis",
+                                                   WHEEL_NAMES[0]), WHEEL_NAMES,
+                               friction=p.sim.friction)
 
 
-def judge_torques(scenario: Scenario, trace: Trace, adapter: MecanumDynamicsAdapter,
+def judge_torques(scenario: Scenario, trace: Trace, adapter: OmniDynamicsAdapter,
                   targets: Mapping[str, Target]) -> list[Metric]:
     """Body-velocity error against the reduced model, worst over the run after 0.5 s.
 
@@ -102,7 +74,7 @@ def judge_torques(scenario: Scenario, trace: Trace, adapter: MecanumDynamicsAdap
     return out
 
 
-def roller_force_ratio(scenario: Scenario, trace: Trace, adapter: MecanumDynamicsAdapter
+def roller_force_ratio(scenario: Scenario, trace: Trace, adapter: OmniDynamicsAdapter
                        ) -> Metric:
     """Largest roller-axis force of the reduced model over the run, over μ N.
 
