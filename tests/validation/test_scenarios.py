@@ -18,8 +18,7 @@ def test_every_robot_has_its_scenarios():
                                             "mecanum4"}
     assert {s.robot for s in scenarios if s.kind is ScenarioKind.DYNAMIC} == {
         "disc", "omni3", "mecanum4"}
-    # 8 directions: omni3 once, mecanum4 with ramps and with steps.
-    assert sum(s.name.startswith("translate ") for s in scenarios) == 8 + 2 * 8
+    assert sum(s.name.startswith("translate ") for s in scenarios) == 8
 
 
 def test_selection_and_bad_robot():

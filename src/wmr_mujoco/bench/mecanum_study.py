@@ -29,7 +29,7 @@ from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import mecanum4, omni3
 from wmr_mujoco.robots.mecanum4 import kinematics, ripple
-from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.scenarios import Scenario
 
 README = MODELS_DIR / mecanum4.NAME / "README.md"
 COUNTS = (8, 12, 16, 20, 24)
@@ -62,8 +62,7 @@ class Summary:
 
 def study_scenarios(duration: float = STUDY_DURATION) -> list[Scenario]:
     """``mecanum4``'s kinematic scenarios, each lasting ``duration`` seconds."""
-    return [dataclasses.replace(s, duration=duration) for s in mecanum4.SCENARIOS
-            if s.kind is ScenarioKind.KINEMATIC]
+    return [dataclasses.replace(s, duration=duration) for s in mecanum4.kinematic_runs()]
 
 
 def sideways_shortfall_pct(params: MecanumParams) -> float:
@@ -160,7 +159,8 @@ def long_runs_table(params: MecanumParams, duration: float = LONG_DURATION) -> s
     lines = ["| run (10 s) | metric | pitch-averaged model | target | ideal model |",
              "|---|---|---|---|---|"]
     for name in LONG_RUNS:
-        s = dataclasses.replace(mecanum4.SPEC.scenario(name), duration=duration)
+        s = dataclasses.replace(next(k for k in mecanum4.kinematic_runs() if k.name == name),
+                                duration=duration)
         rows = run_trial(s, params).result.rows
         for metric, unit in (POSITION, HEADING):
             judged = next((r for r in rows if (r.metric, r.unit) == (metric, unit)), None)
@@ -180,9 +180,18 @@ def main(argv: Sequence[str] | None = None) -> None:
     parser.add_argument("--no-write", action="store_true", help="print only")
     parser.add_argument("--duration", type=float, default=STUDY_DURATION,
                         help="seconds per study run")
+    parser.add_argument("--timing-only", action="store_true",
+                        help="only the mecanum4 / omni3 timing table (best of 5 rounds)")
     args = parser.parse_args(argv)
-    scenarios = study_scenarios(args.duration)
     default = MecanumParams()
+    if args.timing_only:
+        timing = timing_table(default, rounds=5, duration=args.duration)
+        print(timing)
+        if not args.no_write:
+            replace_between(README, "mecanum timing", timing)
+            print(f"wrote {README}")
+        return
+    scenarios = study_scenarios(args.duration)
     default_label = f"{default.roller_shape}, {default.rollers_per_wheel}"
     study = []
     for label, params in study_configs():

@@ -8,13 +8,17 @@ import pytest
 
 from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.robots.mecanum4 import SPEC, TARGETS
+from wmr_mujoco.robots.mecanum4 import TARGETS, kinematic_runs
 from wmr_mujoco.robots.mecanum4.kinematics import MecanumKinematics, is_step, step_targets
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.runner import run_scenario
 
 P = MecanumParams()
 K = pa.mean_secant(math.pi / P.rollers_per_wheel)
+
+
+def run(name):
+    return next(s for s in kinematic_runs() if s.name == name)
 
 
 def rows(result):
@@ -38,7 +42,7 @@ def test_rhs_carries_both_models():
 
 
 def test_step_targets_add_the_lag_to_the_requirement():
-    s = SPEC.scenario("translate 0° (step)")
+    s = run("translate 0° (step)")
     adapter = MecanumKinematics(P, accel_time=0.04, timestep=0.004)
     path = 0.5
     got = step_targets(s, adapter, path, TARGETS)
@@ -46,7 +50,7 @@ def test_step_targets_add_the_lag_to_the_requirement():
     assert got[mt.POSITION_PCT].value == pytest.approx(1.0 + lag_pct, rel=1e-12)
     assert got[mt.POSITION_PCT].kind == "derived bound"
     assert got[mt.HEADING_DEG].value == pytest.approx(1.0)  # no turn, no heading lag
-    ramp = SPEC.scenario("translate 0° (ramp)")
+    ramp = run("translate 0° (ramp)")
     assert not is_step(ramp) and is_step(s)
     assert step_targets(ramp, MecanumKinematics(P), path, TARGETS) == dict(TARGETS)
 
@@ -61,7 +65,7 @@ def test_steady_shortfall_is_the_pitch_averaged_one(name, column, derived):
     # model by the derived fraction: sideways 1 − 1/k, turning 1 − (a + w)/(a k + w)
     # (k = ⟨sec φ⟩, analytic/pitch_averaged.py). Tolerance ±25 %: the hand-over impacts
     # and the four wheels' different roller phases are not in the averaged model.
-    s = dataclasses.replace(SPEC.scenario(name), duration=2.0)
+    s = dataclasses.replace(run(name), duration=2.0)
     tr = run_scenario(s).trace.arrays()
     i = np.searchsorted(tr["time"], 1.0)
     moved = tr["sim"][-1, column] - tr["sim"][i, column]
@@ -70,7 +74,7 @@ def test_steady_shortfall_is_the_pitch_averaged_one(name, column, derived):
 
 
 def test_step_run_is_judged_on_the_derived_bound():
-    s = dataclasses.replace(SPEC.scenario("translate 0° (step)"), duration=1.0)
+    s = dataclasses.replace(run("translate 0° (step)"), duration=1.0)
     r = rows(run_scenario(s))
     pos = r[("worst position error", "% of path")]
     assert pos.basis.startswith("derived bound")

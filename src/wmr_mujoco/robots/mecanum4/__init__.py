@@ -16,6 +16,7 @@ import mujoco
 from wmr_mujoco.models.builders import mecanum4 as builder
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import dynamics, kinematics, ripple
+from wmr_mujoco.robots.mecanum4.grouped import Group
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import Adapter
@@ -60,19 +61,37 @@ TARGETS: Mapping[str, Target] = {
 }
 
 
-def _manoeuvres() -> list[tuple[str, tuple[float, float, float], float]]:
-    out = [(f"translate {deg}°", translation(deg), TRANSLATE_DURATION)
-           for deg in DIRECTIONS_DEG]
-    out += [("rotate", (0.0, 0.0, YAW_RATE), TURN_DURATION),
-            ("translate+rotate", (SPEED, 0.0, 0.5 * YAW_RATE), TURN_DURATION)]
-    return out
+TAGS = ((RAMP, "ramp"), (0.0, "step"))
+
+
+def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
+    """The eight translations at 0.3 m/s (a ramp of ``ramp`` seconds; 0: a step)."""
+    return tuple(Scenario(NAME, f"translate {deg}° ({tag})",
+                          twist_inputs(translation(deg), ramp), duration=TRANSLATE_DURATION)
+                 for deg in DIRECTIONS_DEG)
+
+
+def turning(ramp: float, tag: str) -> tuple[Scenario, ...]:
+    """Rotation on the spot at 1 rad/s and translation+rotation (0.3 m/s, 0.5 rad/s)."""
+    return (Scenario(NAME, f"rotate ({tag})", twist_inputs((0.0, 0.0, YAW_RATE), ramp),
+                     duration=TURN_DURATION),
+            Scenario(NAME, f"translate+rotate ({tag})",
+                     twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE), ramp), duration=TURN_DURATION))
+
+
+def kinematic_runs() -> tuple[Scenario, ...]:
+    """Every kinematic run, the grouped translations included (e.g. for the study)."""
+    return tuple(s for ramp, tag in TAGS for s in (*translations(ramp, tag),
+                                                   *turning(ramp, tag)))
 
 
 def _scenarios() -> tuple[Scenario, ...]:
     out = []
-    for ramp, tag in ((RAMP, "ramp"), (0.0, "step")):
-        out += [Scenario(NAME, f"{name} ({tag})", twist_inputs(twist, ramp), duration=dur)
-                for name, twist, dur in _manoeuvres()]
+    for ramp, tag in TAGS:
+        out.append(Scenario(NAME, f"8 translations ({tag})", kind=ScenarioKind.MEASUREMENT,
+                            evaluate=Group(translations(ramp, tag)),
+                            description="eight kinematic runs, each judged over the run"))
+        out += turning(ramp, tag)
     out += [Scenario(NAME, f"{dynamics.JUDGED_PREFIX}", tuple(const(t) for t in TORQUE_AHEAD),
                      duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC),
             Scenario(NAME, "torque mixed", tuple(const(t) for t in TORQUE_MIXED),
