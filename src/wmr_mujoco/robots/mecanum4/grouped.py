@@ -43,15 +43,37 @@ def evaluate_group(members: Sequence[Scenario], params: RobotParams | None
                    ) -> MeasurementResult:
     """Each member through the runner's stages, simulated in one batch.
 
-    Metric names carry the member's name; every member's judged metrics keep their
-    targets. Series: the position error in % of the member's path over time.
-    """
-    from wmr_mujoco.validation.runner import measure_metrics, prepare
+    The members share the first one's model and settled start (as a rollout batch of
+    the runner does). Metric names carry the member's name; every member's judged
+    metrics keep their targets. Series: the position error in % of the member's path
+    over time.
 
-    prepared = [prepare(s, params) for s in members]
-    first = prepared[0]
+    Raises:
+        ValueError: members that differ in robot, kind or settle time.
+    """
+    from wmr_mujoco.validation.runner import (
+        Prepared,
+        make_adapter,
+        measure_metrics,
+        prepare,
+        schedule,
+    )
+
+    first = prepare(members[0], params)
+    model, data = first.model, first.data
+    prepared = [first]
+    for s in members[1:]:
+        if (s.robot, s.kind, s.settle) != (first.scenario.robot, first.scenario.kind,
+                                           first.scenario.settle):
+            raise ValueError(f"{s.key}: a group shares one settled start; its members "
+                             "need the same robot, kind and settle")
+        adapter = make_adapter(s, model, params)
+        nstep = round(s.duration / model.opt.timestep)
+        schedule_ = schedule(s, adapter, adapter.sim_state(model, data),
+                             model.opt.timestep, nstep)
+        prepared.append(Prepared(s, model, data, adapter, *schedule_))
     nthread = max(1, (os.cpu_count() or 1) - 1)
-    batch = simulate_batch(first.model, first.data, [p.controls for p in prepared], nthread)
+    batch = simulate_batch(model, data, [p.controls for p in prepared], nthread)
     metrics: list[Metric] = []
     series: list[Series] = []
     for prep, states in zip(prepared, batch, strict=True):
