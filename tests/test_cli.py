@@ -1,6 +1,7 @@
 import pytest
 
 from wmr_mujoco.cli import main
+from wmr_mujoco.robots import get_spec
 
 
 def test_list(capsys):
@@ -14,6 +15,14 @@ def test_info(capsys):
     assert main(["info", "bicycle"]) == 0
     out = capsys.readouterr().out
     assert "total mass: 14.4000 kg" in out and "rear_wheel" in out and "timestep: 0.002" in out
+
+
+def test_info_of_a_model_without_switchable_actuators(capsys):
+    """The Whipple bicycle's motors carry no rate/torque user data: listed, not switched."""
+    assert main(["info", "whipple"]) == 0
+    out = capsys.readouterr().out
+    assert "total mass: 94.0000 kg" in out and "steer_torque" in out
+    assert "without rate/torque switching" in out
 
 
 def test_unknown_robot_is_exit_2(capsys):
@@ -31,7 +40,8 @@ def test_demo(capsys):
 def test_validate_one_robot_writes_report(tmp_path, capsys):
     assert main(["validate", "disc", "--out", str(tmp_path)]) == 0
     assert (tmp_path / "validation.md").is_file() and (tmp_path / "validation.json").is_file()
-    assert "4 of 4 scenarios pass" in capsys.readouterr().out
+    n = len(get_spec("disc").scenarios)
+    assert f"{n} of {n} scenarios pass" in capsys.readouterr().out
 
 
 def test_view_without_display(monkeypatch, capsys):

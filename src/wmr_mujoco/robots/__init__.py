@@ -13,7 +13,18 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-from wmr_mujoco.robots import bicycle, disc, disc_free, mecanum4, omni3, tricycle
+from wmr_mujoco.robots import (
+    bicycle,
+    diffdrive,
+    disc,
+    disc_free,
+    double_steer,
+    mecanum4,
+    omni3,
+    single_steer,
+    tricycle,
+    whipple,
+)
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 
 __all__ = ["ROBOTS", "Picture", "RobotSpec", "get_spec", "register", "registered",
@@ -26,6 +37,10 @@ ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
     tricycle.SPEC,
     omni3.SPEC,
     mecanum4.SPEC,
+    diffdrive.SPEC,
+    single_steer.SPEC,
+    double_steer.SPEC,
+    whipple.SPEC,
 )}
 
 

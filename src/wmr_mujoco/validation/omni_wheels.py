@@ -19,6 +19,7 @@ import numpy as np
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose, body_twist
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -119,33 +120,18 @@ def dynamics_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_bo
 
     ``M``: total mass of the robot; ``I_z``: its composite yaw inertia about the vertical
     through ``centre_body``'s origin; ``I_w``: ``wheel_joint``'s wheel (hub and rollers,
-    with parallel-axis terms) about its axle plus the hinge's armature,
-    ``I = Σ_b (aᵀ R_b I_b R_bᵀ a + m_b |r_b⊥|²)``. The rollers' spin about their own axes
-    is neglected. ``layout`` is the analytic wheel layout the model is judged with.
+    with parallel-axis terms) about its axle plus the hinge's armature
+    (:func:`wmr_mujoco.sim.inertia.hinge_inertia`). The rollers' spin about their own
+    axes is neglected. ``layout`` is the analytic wheel layout the model is judged with.
     """
     data = mujoco.MjData(model)
     mujoco.mj_kinematics(model, data)
     centre = data.xpos[model.body(centre_body).id]
-
-    def inertia_about(bodies: list[int], point: np.ndarray, axis: np.ndarray) -> float:
-        total = 0.0
-        for b in bodies:
-            rot = data.ximat[b].reshape(3, 3)
-            inertia = rot @ np.diag(model.body_inertia[b]) @ rot.T
-            r = data.xipos[b] - point
-            r_perp = r - axis * (r @ axis)
-            total += axis @ inertia @ axis + model.body_mass[b] * (r_perp @ r_perp)
-        return float(total)
-
     robot = list(range(1, model.nbody))
-    wheel = model.joint(wheel_joint)
-    wheel_body = int(wheel.bodyid[0])
-    subtree = [b for b in robot if b == wheel_body or model.body_parentid[b] == wheel_body]
-    i_w = inertia_about(subtree, data.xanchor[wheel.id], data.xaxis[wheel.id]) + float(
-        model.dof_armature[model.jnt_dofadr[wheel.id]])
-    return OmniDynamics(mass=float(sum(model.body_mass[robot])),
-                        yaw_inertia=inertia_about(robot, centre, np.array([0.0, 0.0, 1.0])),
-                        wheel_inertia=i_w, layout=layout)
+    return OmniDynamics(
+        mass=float(sum(model.body_mass[robot])),
+        yaw_inertia=inertia_about_axis(model, data, robot, centre, np.array([0.0, 0.0, 1.0])),
+        wheel_inertia=hinge_inertia(model, wheel_joint), layout=layout)
 
 
 @dataclass(frozen=True)
