@@ -39,6 +39,7 @@ renders: $(STAMP)
 	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 200 --height 150 --fps 8 --duration 5
 	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
 	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
+	$(BIN)/wmr render mecanum4 --scenario "translate+rotate (ramp)" --out renders/mecanum4.gif --width 200 --height 150 --fps 8 --duration 10
 	$(BIN)/wmr render whipple --scenario "push at 5 m/s" --out renders/whipple.gif --width 200 --height 150 --fps 8 --duration 8
 	$(BIN)/wmr render whipple --scenario "push at 3 m/s" --out renders/whipple_fall.gif --width 200 --height 150 --fps 8 --duration 3
 	$(BIN)/wmr render diffdrive --scenario "figure eight" --out renders/diffdrive.gif --width 200 --height 150 --fps 8 --duration 5
@@ -48,11 +49,13 @@ renders: $(STAMP)
 	$(BIN)/wmr render disc_free --scenario "stability sweep" --out renders/disc_free_stability.gif --width 200 --height 150 --fps 8
 
 # The design and fidelity-versus-cost studies in the model READMEs: omni3's roller design
-# and peer table, the Whipple bicycle's eigenvalues, the free disc's settings.
+# and peer table, the Whipple bicycle's eigenvalues, the free disc's settings,
+# mecanum4's roller design.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
 	$(BIN)/python -m wmr_mujoco.bench.whipple_study
 	$(BIN)/python -m wmr_mujoco.bench.disc_study
+	$(BIN)/python -m wmr_mujoco.bench.mecanum_study
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

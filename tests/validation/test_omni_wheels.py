@@ -6,7 +6,13 @@ import pytest
 from wmr_mujoco import load
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.params import OmniParams
-from wmr_mujoco.validation.omni_wheels import layout_from_model, rolling_radius_profile
+from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.robots.mecanum4.geometry import layout
+from wmr_mujoco.validation.omni_wheels import (
+    dynamics_from_model,
+    layout_from_model,
+    rolling_radius_profile,
+)
 
 WHEELS = ("wheel1", "wheel2", "wheel3")
 
@@ -48,3 +54,13 @@ def test_missing_roller_geoms_are_named(omni):
     model, _ = omni
     with pytest.raises(ValueError, match="no collision geoms named 'nothing'"):
         rolling_radius_profile(model, "wheel1", "nothing")
+
+
+def test_dynamics_from_model_reads_mass_and_wheel_inertia():
+    # Independent: the total mass from the parameters; the wheel's inertia at least its
+    # armature plus the rollers' masses at the roller-axis distance d.
+    p = MecanumParams()
+    dyn = dynamics_from_model(load("mecanum4"), layout(p), "chassis", "wheel_fl")
+    assert dyn.mass == pytest.approx(p.total_mass, rel=1e-9)
+    assert dyn.wheel_inertia > p.drive.wheel_armature + (
+        p.rollers_per_wheel * p.roller_mass * p.axis_distance**2)

@@ -17,20 +17,21 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
-from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose, body_twist
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
 from wmr_mujoco.validation.omni_wheels import (
     DIRECTIONS_DEG,
     ROLLER_RATE_PCT,
     SPEED,
     YAW_RATE,
+    OmniDynamicsAdapter,
+    dynamics_from_model,
     omni_probes,
     translation,
     twist_inputs,
@@ -91,66 +92,6 @@ class OmniKinematics:
         return base_pose(model, data)
 
 
-def dynamics_from_model(model: mujoco.MjModel, params: OmniParams) -> OmniDynamics:
-    """Lagrange-model parameters read from the compiled omni model.
-
-    ``M``: total mass; ``I_z``: composite yaw inertia about the centre; ``I_w``: each
-    wheel's inertia about its axle (hub, rollers with parallel-axis terms, and the
-    hinge's armature). The rollers' spin about their own axes is neglected.
-    """
-    data = mujoco.MjData(model)
-    mujoco.mj_kinematics(model, data)
-    centre = data.xpos[model.body("platform").id]
-
-    def inertia_about(bodies: list[int], point: np.ndarray, axis: np.ndarray) -> float:
-        total = 0.0
-        for b in bodies:
-            rot = data.ximat[b].reshape(3, 3)
-            inertia = rot @ np.diag(model.body_inertia[b]) @ rot.T
-            r = data.xipos[b] - point
-            r_perp = r - axis * (r @ axis)
-            total += axis @ inertia @ axis + model.body_mass[b] * (r_perp @ r_perp)
-        return float(total)
-
-    robot = list(range(1, model.nbody))
-    wheel = model.joint(WHEELS[0])
-    wheel_body = int(wheel.bodyid[0])
-    subtree = [b for b in robot if b == wheel_body or model.body_parentid[b] == wheel_body]
-    jid = wheel.id
-    i_w = inertia_about(subtree, data.xanchor[jid], data.xaxis[jid]) + float(
-        model.dof_armature[model.jnt_dofadr[jid]])
-    return OmniDynamics(
-        mass=float(sum(model.body_mass[robot])),
-        yaw_inertia=inertia_about(robot, centre, np.array([0.0, 0.0, 1.0])),
-        wheel_inertia=i_w,
-        layout=ok.symmetric_layout(params.wheel_radius, params.wheel_distance))
-
-
-@dataclass(frozen=True)
-class OmniDynamicsAdapter:
-    """Omni robot under wheel torques: ``x = (X, Y, ψ, u, v, r)``, reduced Lagrange EOM."""
-
-    dynamics: OmniDynamics
-    friction: float = 1.0
-    mode: ActuationMode = ActuationMode.TORQUE
-    state_names: tuple[str, ...] = ("x", "y", "heading", "u", "v", "r")
-    state_units: tuple[str, ...] = (*POSE_UNITS, "m/s", "m/s", "rad/s")
-    wheel_joints: tuple[str, ...] = WHEELS
-    lateral_wheels: tuple[str, ...] = ()
-
-    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
-        """Torques as given."""
-        return np.asarray(u, float)
-
-    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
-        """Reduced Lagrange equations (:meth:`OmniDynamics.state_derivative`)."""
-        return self.dynamics.state_derivative(x, u)
-
-    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-        """Pose and body twist of the ``base`` site."""
-        return np.concatenate([base_pose(model, data), body_twist(model, data)])
-
-
 def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
                       params: RobotParams | None) -> OmniKinematics:
     """The ideal omni kinematics."""
@@ -162,7 +103,9 @@ def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
                     params: RobotParams | None) -> OmniDynamicsAdapter:
     """The reduced Lagrange model, with parameters from the compiled model."""
     p = params_or_default(params, OmniParams)
-    return OmniDynamicsAdapter(dynamics_from_model(model, p), friction=p.sim.friction)
+    layout = ok.symmetric_layout(p.wheel_radius, p.wheel_distance)
+    return OmniDynamicsAdapter(dynamics_from_model(model, layout, "platform", WHEELS[0]),
+                               WHEELS, friction=p.sim.friction)
 
 
 def judge_torques(scenario: Scenario, trace: Trace, adapter: OmniDynamicsAdapter,

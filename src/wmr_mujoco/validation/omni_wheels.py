@@ -17,8 +17,10 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.validation.adapters import Adapter
+from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis
+from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose, body_twist
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Signal, const
@@ -110,6 +112,61 @@ def layout_from_model(model: mujoco.MjModel, wheel_joints: Sequence[str]) -> Omn
     layout = ok.WheelLayout(np.asarray(pos), np.asarray(beta), np.zeros(len(pos)),
                             np.asarray(radii))
     return OmniModelInfo(layout, tuple(joint_ids), tuple(acts), tuple(angle), base)
+
+
+def dynamics_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body: str,
+                        wheel_joint: str) -> OmniDynamics:
+    """Parameters of the reduced Lagrange model read from a compiled omni-wheeled model.
+
+    ``M``: total mass of the robot; ``I_z``: its composite yaw inertia about the vertical
+    through ``centre_body``'s origin; ``I_w``: ``wheel_joint``'s wheel (hub and rollers,
+    with parallel-axis terms) about its axle plus the hinge's armature
+    (:func:`wmr_mujoco.sim.inertia.hinge_inertia`). The rollers' spin about their own
+    axes is neglected. ``layout`` is the analytic wheel layout the model is judged with.
+    """
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    centre = data.xpos[model.body(centre_body).id]
+    robot = list(range(1, model.nbody))
+    return OmniDynamics(
+        mass=float(sum(model.body_mass[robot])),
+        yaw_inertia=inertia_about_axis(model, data, robot, centre, np.array([0.0, 0.0, 1.0])),
+        wheel_inertia=hinge_inertia(model, wheel_joint), layout=layout)
+
+
+@dataclass(frozen=True)
+class OmniDynamicsAdapter:
+    """An omni-wheeled robot under wheel torques: ``x = (X, Y, ψ, u, v, r)``.
+
+    The reduced Lagrange equations
+    (:meth:`~wmr_mujoco.analytic.omni_dynamics.OmniDynamics.state_derivative`) against
+    the ``base`` site's pose and body twist.
+
+    Attributes:
+        dynamics: the reduced model (e.g. from :func:`dynamics_from_model`).
+        wheel_joints: the wheel hinges, in the torques' order.
+        friction: the floor's Coulomb coefficient μ (for traction checks).
+    """
+
+    dynamics: OmniDynamics
+    wheel_joints: tuple[str, ...]
+    friction: float = 1.0
+    mode: ActuationMode = ActuationMode.TORQUE
+    state_names: tuple[str, ...] = ("x", "y", "heading", "u", "v", "r")
+    state_units: tuple[str, ...] = (*POSE_UNITS, "m/s", "m/s", "rad/s")
+    lateral_wheels: tuple[str, ...] = ()
+
+    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Torques as given."""
+        return np.asarray(u, float)
+
+    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Reduced Lagrange equations with the world pose."""
+        return self.dynamics.state_derivative(x, u)
+
+    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """Pose and body twist of the ``base`` site."""
+        return np.concatenate([base_pose(model, data), body_twist(model, data)])
 
 
 def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelInfo,

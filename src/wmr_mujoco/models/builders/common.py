@@ -58,13 +58,55 @@ def new_root(model: str, sim: SimParams) -> mjcf.RootElement:
     visual.geom.group = 2
     visual.geom.density = 0
     collision = main.add("default", dclass="collision")
-    collision.geom.group = 3
-    collision.geom.condim = 3
-    collision.geom.priority = 1
-    collision.geom.friction = (sim.friction, 0.005, 0.0001)
-    collision.geom.solref = (sim.contact_timeconst, 1.0)
-    collision.geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
+    _set_contact(collision.geom, sim)
     return root
+
+
+def _set_contact(geom: mjcf.Element, sim: SimParams) -> None:
+    """Collision group 3, ``condim`` 3, the floor's friction and ``sim``'s softness.
+
+    Contact softness: ``solref`` (time constant, critical damping) and ``solimp``.
+    """
+    geom.group = 3
+    geom.condim = 3
+    geom.priority = 1
+    geom.friction = (sim.friction, 0.005, 0.0001)
+    geom.solref = (sim.contact_timeconst, 1.0)
+    geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
+
+
+def add_roller_default(root: mjcf.RootElement, sim: SimParams, damping: float,
+                       armature: float) -> mjcf.Element:
+    """The ``roller`` default class of passive rollers on free hinges (omni and mecanum).
+
+    Hinges about the local z axis with the given damping and armature; collision geoms in
+    group 3 with ``condim`` 3, the floor friction and contact softness of ``sim``, that
+    touch the floor only (``contype`` 0, ``conaffinity`` 1: no two robot geoms collide).
+    """
+    roller = root.default.add("default", dclass="roller")
+    roller.joint.type = "hinge"
+    roller.joint.axis = (0, 0, 1)
+    roller.joint.damping = damping
+    roller.joint.armature = armature
+    _set_contact(roller.geom, sim)
+    roller.geom.contype = 0
+    roller.geom.conaffinity = 1
+    return roller
+
+
+def add_hub(wheel: mjcf.Element, mass: float, radius: float, width: float) -> None:
+    """A roller wheel's hub: a uniform cylinder's inertia and visual geoms.
+
+    The inertia is about the axle (local y); the geoms are a cylinder and a mark that
+    shows the wheel turning. ``I_y = m r² / 2``, ``I_x = I_z = m (r²/4 + w²/12)``.
+    """
+    diametral = mass * (radius**2 / 4 + width**2 / 12)
+    wheel.add("inertial", pos=(0, 0, 0), mass=mass,
+              diaginertia=(diametral, mass * radius**2 / 2, diametral))
+    wheel.add("geom", dclass="visual", type="cylinder", size=(radius, width / 2.0),
+              zaxis=(0, 1, 0), rgba=WHEEL_RGBA)
+    wheel.add("geom", dclass="visual", type="box", size=(0.9 * radius, width / 2 + 0.001,
+                                                           0.1 * radius), rgba=MARK_RGBA)
 
 
 def box_inertia(mass: float, size: Sequence[float]) -> tuple[float, float, float]:

@@ -77,14 +77,7 @@ def _add_wheel(platform: mjcf.Element, root: mjcf.RootElement, params: OmniParam
     joint = wheel.add("joint", name=name, type="hinge", axis=(0, 1, 0),
                       armature=p.drive.wheel_armature)
     hub_r, hub_w = 0.55 * r, HUB_WIDTH_FACTOR * 2.0 * (p.row_offset + p.roller_half_width)
-    wheel.add("inertial", pos=(0, 0, 0), mass=p.hub_mass,
-              diaginertia=(p.hub_mass * (hub_r**2 / 4 + hub_w**2 / 12),
-                           p.hub_mass * hub_r**2 / 2,
-                           p.hub_mass * (hub_r**2 / 4 + hub_w**2 / 12)))
-    wheel.add("geom", dclass="visual", type="cylinder", size=(hub_r, hub_w / 2.0),
-              zaxis=(0, 1, 0), rgba=common.WHEEL_RGBA)
-    wheel.add("geom", dclass="visual", type="box", size=(0.9 * hub_r, hub_w / 2 + 0.001,
-                                                           0.1 * hub_r), rgba=common.MARK_RGBA)
+    common.add_hub(wheel, p.hub_mass, hub_r, hub_w)
     d, s_max = roller_profile(p)
     n = p.rollers_per_row
     b = p.roller_half_width
@@ -126,20 +119,7 @@ def build(params: OmniParams) -> mjcf.RootElement:
     p = params
     r = p.wheel_radius
     root = common.new_root("omni3", p.sim)
-    roller = root.default.add("default", dclass="roller")
-    roller.joint.type = "hinge"
-    roller.joint.axis = (0, 0, 1)
-    roller.joint.damping = p.roller_damping
-    roller.joint.armature = p.roller_armature
-    roller.geom.group = 3
-    roller.geom.condim = 3
-    roller.geom.priority = 1
-    roller.geom.friction = (p.sim.friction, 0.005, 0.0001)
-    roller.geom.solref = (p.sim.contact_timeconst, 1.0)
-    roller.geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
-    # Rollers touch the floor only: contype 0 so that no two robot geoms collide.
-    roller.geom.contype = 0
-    roller.geom.conaffinity = 1
+    common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
     if p.roller_shape == "barrel":
         root.asset.add("mesh", name="barrel", vertex=barrel_vertices(p).ravel())
     platform = root.worldbody.add("body", name="platform", pos=(0, 0, r))
