@@ -58,3 +58,65 @@ def test_bad_input_is_clear_and_leaves_no_file(tmp_path, monkeypatch, kwargs, ma
     with pytest.raises(ValueError, match=match):
         render_to_file(**args)
     assert list(tmp_path.rglob("*")) == []
+
+
+def _peak_traced_bytes(fn):
+    import tracemalloc
+
+    tracemalloc.start()
+    try:
+        fn()
+        return tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+
+
+def test_render_memory_is_flat_in_clip_length(tmp_path):
+    """Frames stream to the encoder: a clip 6 s longer costs no more frame memory.
+
+    Holding the frames would add (4 − 1) s × 10 frames/s × 320 × 240 × 3 B = 6.9 MB (twice
+    that with the stacked copy); the bound is half of it. What does grow with length —
+    the stored states (1500 steps × about 20 numbers × 8 B ≈ 0.24 MB for the disc) and
+    the trails (30 points) — is far below it.
+    """
+    width, height, fps = 320, 240, 10
+    frame_bytes = width * height * 3
+    peaks = {d: _peak_traced_bytes(lambda d=d: render_to_file(
+        "disc", tmp_path / f"clip{d}.mp4", width=width, height=height, fps=fps,
+        duration=d, hold=True)) for d in (1.0, 4.0)}
+    held = (4.0 - 1.0) * fps * frame_bytes
+    assert peaks[4.0] - peaks[1.0] < 0.5 * held, peaks
+    assert len(_decode(tmp_path / "clip4.0.mp4")) == 40
+
+
+def test_hold_keeps_the_last_input_past_the_scenario():
+    from wmr_mujoco.render.video import clip_scenario
+
+    s = pick_scenario("disc", "straight")
+    held = clip_scenario(s, s.duration + 5.0, hold=True)
+    assert held.duration == s.duration + 5.0
+    np.testing.assert_array_equal(held.input_at(s.duration + 4.0), s.input_at(s.duration))
+    with pytest.raises(ValueError, match=r"valid range is \(0, .*only with hold"):
+        clip_scenario(s, s.duration + 5.0)
+
+
+def test_coinciding_trails_both_show(tmp_path):
+    """Two identical trails: the model's (red) shows as a rim around the simulated (green)."""
+    import mujoco
+
+    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.render import rendering
+
+    model = load("disc")
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    points = np.array([[0.0, -0.6, 0.003], [0.0, 0.6, 0.003]])
+    with rendering.Filmer(model, 160, 120) as filmer:
+        lift = np.array([0.0, 0.0, filmer.trail_width])
+        image = filmer.frame(data, [
+            (points, rendering.MODEL_RGBA, rendering.MODEL_TRAIL_SCALE),
+            (points + lift, rendering.SIM_RGBA, rendering.SIM_TRAIL_SCALE)]).astype(int)
+    r, g, b = image[..., 0], image[..., 1], image[..., 2]
+    red = (r > 150) & (g < 90) & (b < 90)
+    green = (g > 120) & (r < 90) & (b < 90)
+    assert red.sum() > 20 and green.sum() > 20, (red.sum(), green.sum())

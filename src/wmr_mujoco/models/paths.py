@@ -44,12 +44,15 @@ def models_dir(root: Path = REPO_ROOT) -> Path:
         files = importlib.resources.files(MODEL_FILES_PACKAGE)
     except ModuleNotFoundError:
         files = None
-    if files is None or not files.is_dir():
+    # The data package has no __init__.py (it is the models/ folder itself), so files()
+    # gives a namespace package's Traversable; its children are real paths, as wheels
+    # install unzipped.
+    children = list(files.iterdir()) if files is not None and files.is_dir() else []
+    if not children:
         raise FileNotFoundError(f"model files not found: no {root / 'models'} and no "
                                 f"package {MODEL_FILES_PACKAGE} (reinstall wmr-mujoco, or set "
                                 "WMR_MODELS_DIR to a models/ folder)")
-    # Wheels install unzipped, so the resource folder is a real directory.
-    return Path(str(files))
+    return Path(str(children[0])).parent
 
 
 #: Root of the ``models/`` folder (one sub-folder per robot), resolved at import (when

@@ -31,6 +31,8 @@ MAX_SIZE = 4096
 #: and the simulated one narrower and on top of it, so where the two coincide the model's
 #: shows as a red rim around the green (equal capsules z-fight into dashes).
 SIM_TRAIL_SCALE = 0.6
+#: Shadow map size (texels a side) when shadows are off: MuJoCo allocates the map anyway.
+NO_SHADOW_MAP = 16
 MODEL_TRAIL_SCALE = 1.2
 
 
@@ -127,7 +129,6 @@ class Filmer:
         model.vis.global_.offheight = max(model.vis.global_.offheight, height)
         self.model = model
         self.trail_width = 0.02 * robot_size(model)
-        self.renderer = mujoco.Renderer(model, height=height, width=width, max_geom=20000)
         if isinstance(camera, str):
             if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, camera) < 0:
                 names = [model.camera(i).name for i in range(model.ncam)]
@@ -138,6 +139,11 @@ class Filmer:
         else:
             self.camera = tracking_camera(model, camera)
             settings = camera
+        if not settings.shadows:
+            # The shadow map (shadowsize² texels: 64 MB at MuJoCo's default 4096, in main
+            # memory with Mesa) is allocated even when shadows are off.
+            model.vis.quality.shadowsize = min(model.vis.quality.shadowsize, NO_SHADOW_MAP)
+        self.renderer = mujoco.Renderer(model, height=height, width=width, max_geom=20000)
         self.renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = settings.shadows
         self.renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = settings.reflections
 
