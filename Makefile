@@ -38,6 +38,7 @@ renders: $(STAMP)
 	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 200 --height 150 --fps 8 --duration 5
 	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
 	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
+	$(BIN)/wmr render omni3 --scenario "translate+rotate" --out renders/trails.png --width 480 --height 360 --fps 8
 
 # The roller design study and peer comparison in models/omni3/README.md.
 study: $(STAMP)

@@ -164,7 +164,7 @@ def build_parser() -> argparse.ArgumentParser:
     ren.add_argument("robot", help="a robot name (see `wmr list`)")
     ren.add_argument("--scenario", help="scenario name (default: the robot's first)")
     ren.add_argument("--out", type=Path, required=True,
-                     help="output .mp4 or .gif, in an existing folder")
+                     help="output .mp4 or .gif (or .png: the last frame), in an existing folder")
     ren.add_argument("--width", type=int, default=640)
     ren.add_argument("--height", type=int, default=480)
     ren.add_argument("--fps", type=int, default=30)

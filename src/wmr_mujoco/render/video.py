@@ -155,15 +155,23 @@ def render_to_file(robot: str, out: Path, scenario: str | None = None, width: in
                    duration: float | None = None, hold: bool = False) -> Path:
     """Render a scenario of ``robot`` to ``out`` (.mp4 or .gif), streamed and atomic.
 
+    A ``.png`` gets the last frame alone (a still of the whole trail).
+
     Every argument is checked before anything is simulated; frames go to the encoder as
     they are drawn (memory flat in the clip's length); a failure or an interrupt leaves
     no file. ``hold`` allows a ``duration`` past the scenario's end, keeping its last
     input.
     """
-    out = rendering.check_output_path(Path(out), rendering.VIDEO_SUFFIXES)
+    out = rendering.check_output_path(Path(out), rendering.VIDEO_SUFFIXES
+                                      + rendering.IMAGE_SUFFIXES)
     rendering.check_size(width, height)
     _check_fps(fps)
     clip = clip_scenario(pick_scenario(robot, scenario), duration, hold)
+    if out.suffix.lower() in rendering.IMAGE_SUFFIXES:  # a still: the last frame
+        last: list[np.ndarray] = []
+        film_scenario(clip, lambda f: last[:1].clear() or last.append(f.copy()) or None,
+                      width, height, fps, camera)
+        return rendering.write_media(out, last[-1])
     with rendering.video_writer(out, width, height, fps) as write:
         film_scenario(clip, write, width, height, fps, camera)
     return out
