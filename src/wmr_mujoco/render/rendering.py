@@ -71,7 +71,8 @@ def check_output_path(path: Path, suffixes: Sequence[str]) -> Path:
                          f"valid suffixes are {', '.join(suffixes)}")
     folder = path.parent if str(path.parent) else Path(".")
     if not folder.is_dir():
-        raise ValueError(f"output folder {str(folder)!r} does not exist")
+        raise ValueError(f"output folder {str(folder)!r} does not exist; create it first "
+                         "(wmr writes only into existing folders)")
     if not os.access(folder, os.W_OK):
         raise ValueError(f"output folder {str(folder)!r} is not writable")
     return path
