@@ -28,3 +28,13 @@ def test_failed_validate_run_is_an_error_not_a_time(monkeypatch):
 def test_missing_peer_is_left_out_not_fatal(tmp_path):
     assert bench.peer_side_by_side(None, tmp_path / "scene.xml") is None
     assert "Left out: the peer model was not found" in bench._peer_section(None)
+
+
+def test_the_bench_says_where_the_peer_came_from(tmp_path):
+    from wmr_mujoco.bench.trials import PeerModel
+
+    row = {"label": "peer", "worst_position_pct": 1.0, "worst_heading_deg": 2.0,
+           "real_time_factor": 3.0}
+    text = bench._peer_section([row], PeerModel(tmp_path / "scene.xml", "WMR_PEER_SCENE"))
+    assert text.startswith("The peer's scene file came from WMR_PEER_SCENE.")
+    assert str(tmp_path) not in text  # no path of this machine in the report
