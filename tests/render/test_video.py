@@ -120,3 +120,12 @@ def test_coinciding_trails_both_show(tmp_path):
     red = (r > 150) & (g < 90) & (b < 90)
     green = (g > 120) & (r < 90) & (b < 90)
     assert red.sum() > 20 and green.sum() > 20, (red.sum(), green.sum())
+
+
+def test_a_png_is_the_last_frame(tmp_path):
+    import mediapy
+
+    out = render_to_file("disc", tmp_path / "still.png", width=64, height=48, fps=10,
+                         duration=0.5)
+    clip = render_scenario(pick_scenario("disc"), width=64, height=48, fps=10, duration=0.5)
+    np.testing.assert_array_equal(mediapy.read_image(out)[..., :3], clip[-1])

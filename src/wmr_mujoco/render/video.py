@@ -169,8 +169,11 @@ def render_to_file(robot: str, out: Path, scenario: str | None = None, width: in
     clip = clip_scenario(pick_scenario(robot, scenario), duration, hold)
     if out.suffix.lower() in rendering.IMAGE_SUFFIXES:  # a still: the last frame
         last: list[np.ndarray] = []
-        film_scenario(clip, lambda f: last[:1].clear() or last.append(f.copy()) or None,
-                      width, height, fps, camera)
+
+        def keep_last(frame: np.ndarray) -> None:
+            last[:] = [frame.copy()]
+
+        film_scenario(clip, keep_last, width, height, fps, camera)
         return rendering.write_media(out, last[-1])
     with rendering.video_writer(out, width, height, fps) as write:
         film_scenario(clip, write, width, height, fps, camera)
