@@ -26,7 +26,7 @@ def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
     while not list(tmp_path.glob(".clip.*.mp4")) and time.monotonic() < deadline:
         assert proc.poll() is None, proc.communicate()
         time.sleep(0.05)
-    time.sleep(0.5)
+    time.sleep(0.2)
     proc.send_signal(sig)
     _, err = proc.communicate(timeout=30)
     assert proc.returncode == code, err

@@ -74,19 +74,25 @@ def _peak_traced_bytes(fn):
 def test_render_memory_is_flat_in_clip_length(tmp_path):
     """Frames stream to the encoder: a clip 6 s longer costs no more frame memory.
 
-    Holding the frames would add (4 − 1) s × 10 frames/s × 320 × 240 × 3 B = 6.9 MB (twice
-    that with the stacked copy); the bound is half of it. What does grow with length —
-    the stored states (1500 steps × about 20 numbers × 8 B ≈ 0.24 MB for the disc) and
-    the trails (30 points) — is far below it.
+    Holding the frames would add (2 − 0.5) s × 20 frames/s × 320 × 240 × 3 B = 6.9 MB
+    (twice that with the stacked copy); the bound is half of it. What does grow with
+    length — the stored states (750 steps × about 20 numbers × 8 B ≈ 0.12 MB for the
+    disc) and the trails (30 points) — is far below it.
     """
-    width, height, fps = 320, 240, 10
+    width, height, fps = 320, 240, 20
     frame_bytes = width * height * 3
+    # A first render outside the measurement takes the one-time costs (imports, the GL
+    # context's first use), which would otherwise hide growth in the shorter clip's peak.
+    render_to_file("disc", tmp_path / "warm.mp4", width=width, height=height, fps=fps,
+                   duration=0.2)
     peaks = {d: _peak_traced_bytes(lambda d=d: render_to_file(
         "disc", tmp_path / f"clip{d}.mp4", width=width, height=height, fps=fps,
-        duration=d, hold=True)) for d in (1.0, 4.0)}
-    held = (4.0 - 1.0) * fps * frame_bytes
-    assert peaks[4.0] - peaks[1.0] < 0.5 * held, peaks
-    assert len(_decode(tmp_path / "clip4.0.mp4")) == 40
+        duration=d, hold=True)) for d in (0.5, 2.0)}
+    held = (2.0 - 0.5) * fps * frame_bytes
+    # Measured: 0.13 MB streamed; 7.0 MB with the frames held (the writer patched to
+    # collect them), above the bound, so the test fails on a renderer that keeps frames.
+    assert peaks[2.0] - peaks[0.5] < 0.5 * held, peaks
+    assert len(_decode(tmp_path / "clip2.0.mp4")) == 40
 
 
 def test_hold_keeps_the_last_input_past_the_scenario():
