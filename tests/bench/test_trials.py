@@ -82,6 +82,23 @@ def _importer(module):
     return importer
 
 
+def test_peer_through_the_package_spec_when_its_handle_has_no_path(tmp_path):
+    """The documented route: ``spec(entry)`` (a MjSpec) and the file in its folder."""
+    import types
+
+    from wmr_mujoco.bench.trials import find_peer
+
+    scene = tmp_path / "robot_soccer_kit" / "scene.xml"
+    scene.parent.mkdir()
+    scene.write_text("<mujoco/>")
+    robot = types.SimpleNamespace(
+        default_scene="scene",
+        spec=lambda entry: types.SimpleNamespace(modelfiledir=str(scene.parent) + "/"))
+    module = types.SimpleNamespace(get=lambda name: robot)
+    found = find_peer({}, _importer(module), tmp_path / "none.xml")
+    assert found.scene == scene and "mujoco-menagerie" in found.source
+
+
 def test_peer_order_package_then_variable_then_sibling(tmp_path):
     from wmr_mujoco.bench.trials import find_peer
 

@@ -67,12 +67,18 @@ def _menagerie_scene(module: ModuleType) -> Path | None:
     """The peer's default scene through the ``mujoco-menagerie`` package, if it has one.
 
     ``mm.get(name)`` is the package's handle on a robot (nothing downloaded yet) and
-    ``default_scene`` its scene entry; the entry's file is asked for by ``path(entry)``,
-    which downloads the model on first use. Any failure (offline, no such robot) is None.
+    ``default_scene`` its scene entry. The entry's file: ``path(entry)`` where the handle
+    has it, else the folder of the entry's ``mujoco.MjSpec`` (``spec(entry)``, which
+    downloads the model on first use) and ``<entry>.xml`` in it. Any failure (offline, no
+    such robot) is None.
     """
     try:
         robot = module.get(PEER_NAME)
-        scene = Path(robot.path(robot.default_scene))
+        entry = robot.default_scene
+        if callable(getattr(robot, "path", None)):
+            scene = Path(robot.path(entry))
+        else:
+            scene = Path(robot.spec(entry).modelfiledir) / f"{entry}.xml"
     except Exception:
         return None
     return scene if scene.is_file() else None
