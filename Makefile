@@ -47,6 +47,7 @@ renders: $(STAMP)
 	$(BIN)/wmr render double_steer --scenario "tight turn ±1 rad" --out renders/double_steer.gif --width 200 --height 150 --fps 8 --duration 3
 	$(BIN)/wmr render disc_free --scenario "steady precession" --out renders/disc_free.gif --width 200 --height 150 --fps 8
 	$(BIN)/wmr render disc_free --scenario "stability sweep" --out renders/disc_free_stability.gif --width 200 --height 150 --fps 8
+	$(BIN)/wmr render omni3 --scenario "translate+rotate" --out renders/trails.png --width 480 --height 360 --fps 8
 
 # The design and fidelity-versus-cost studies in the model READMEs: omni3's roller design
 # and peer table, the Whipple bicycle's eigenvalues, the free disc's settings,

@@ -126,6 +126,33 @@ def add_box_body_geoms(body: mjcf.Element, size: Sequence[float],
              pos=list(pos), rgba=BODY_RGBA)
 
 
+#: Radius of the visual fork blades and axles, as a fraction of the wheel radius (with a
+#: floor of 6 mm), and the gap between a wheel face and a blade, m.
+FORK_RADIUS_RATIO = 0.06
+FORK_MIN_RADIUS = 0.006
+FORK_GAP = 0.008
+
+
+def add_fork(body: mjcf.Element, wheel: WheelParams,
+             tops: Sequence[tuple[float, float]], rgba: Sequence[float] = BODY_RGBA) -> None:
+    """Visual fork holding a wheel whose axle is ``body``'s y axis through its origin.
+
+    An axle across the wheel and both blades, and from each blade end a pair of blades
+    (one each side of the wheel, clear of its faces) up to each ``(x, z)`` in ``tops``,
+    joined there by a crown. Visual class only: no mass, no contact.
+    """
+    radius = max(FORK_RADIUS_RATIO * wheel.radius, FORK_MIN_RADIUS)
+    y = wheel.width / 2.0 + FORK_GAP + radius
+    body.add("geom", dclass="visual", type="capsule", size=(radius,),
+             fromto=(0, -y - radius, 0, 0, y + radius, 0), rgba=rgba)
+    for x, z in tops:
+        for side in (-1.0, 1.0):
+            body.add("geom", dclass="visual", type="capsule", size=(radius,),
+                     fromto=(0, side * y, 0, x, side * y, z), rgba=rgba)
+        body.add("geom", dclass="visual", type="capsule", size=(radius,),
+                 fromto=(x, -y, z, x, y, z), rgba=rgba)
+
+
 def add_wheel(parent: mjcf.Element, name: str, wheel: WheelParams,
               pos: Sequence[float], armature: float = 0.0) -> mjcf.Element:
     """Add a thin-disc wheel body spinning on a hinge about its local +y axis.
