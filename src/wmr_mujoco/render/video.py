@@ -90,8 +90,9 @@ def film_scenario(scenario: Scenario, on_frame: Callable[[np.ndarray], None],
     """Simulate ``scenario`` and hand each frame to ``on_frame``; return the frame count.
 
     Frames are drawn every ``1/fps`` of simulated time, the simulated path of the base in
-    green and the analytic model's in red (a measurement scenario: its ``film``), and handed over at once, never kept: memory
-    does not grow with the clip's length beyond the trails' points. A frame is valid only
+    green and the analytic model's in red (a measurement scenario: the runs of its
+    ``film``), and handed over at once, never kept: memory does not grow with the clip's
+    length beyond the trails' points. A frame is valid only
     during the call (the renderer reuses its buffer). A progress bar runs on a terminal.
 
     Raises:
