@@ -1,0 +1,460 @@
+"""Hybrid dynamics of a three-omni-wheel platform with two staggered roller rows.
+
+Derivations: ``docs/omni-dynamics.md``. Symbols (body frame, z up, centre at wheel-centre
+height): wheel i at ``c_i = L ê_i``, drive direction ``t_i = ẑ × ê_i``, axle (hinge axis,
+positive wheel rate) ``a_i = −ê_i``. Roller k of a wheel sits at angle ``ζ_k`` around the
+axle and axial offset ``y_k = ±e``; at wheel angle θ its angle past the bottom is
+``φ_k = wrap(ζ_k + θ − π)`` (φ > 0: behind the axle). The roller in contact (mode σ_i) is
+the lowest one: ``σ_i = argmin_k |φ_k|``.
+
+Ellipsoid roller (semi-axes b, b, a; axis at d from the axle) at angle φ::
+
+    h(φ) = √(b² cos²φ + a² sin²φ)                 support along the floor normal
+    R(φ) = d cos φ + h(φ)                          axle height over the contact
+    x_c(φ) = R'(φ) = −d sin φ + (a² − b²) sin φ cos φ / h    contact ahead of the axle
+    ρ(φ) = b² cos φ / h(φ)                         contact distance from the roller axis
+
+Continuous phase (mode σ fixed), Lagrange–d'Alembert with constraints
+``θ̇ = H(σ) ν`` and roller spin ``β̇ = k(φ)ᵀ ν``::
+
+    (P + I_w HᵀH + I_r Σ k_i k_iᵀ) ν̇ + c(ν) + I_r Σ k_i (∂k_i/∂φ θ̇_i)ᵀ ν = Hᵀ τ
+    P = diag(M, M, I_z),   c(ν) = r (−M v, M u, 0),
+    H_i = (t_i,x, t_i,y, L − y_σ) / r,   k_i = (a_i,x, a_i,y, x_c(φ_i)) / ρ(φ_i)
+
+Switch (σ_i changes): plastic impact onto the new contact's constraints in the
+12-dimensional velocity ``q̇ = (V, Ω, θ̇, β̇)`` with mass matrix 𝕄::
+
+    q̇⁺ = q̇⁻ − 𝕄⁻¹Aᵀ (A𝕄⁻¹Aᵀ)⁻¹ A q̇⁻,      ΔT = ½ (A q̇⁻)ᵀ (A𝕄⁻¹Aᵀ)⁻¹ (A q̇⁻) ≥ 0
+
+Drive laws: torque (``τ = u``) or rate servo (``τ = clip(k_v (u − θ̇), ±τ_max)``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from wmr_mujoco.analytic.checks import as_array, positive
+
+
+def _finite(name: str, value: float) -> float:
+    if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
+        raise ValueError(f"{name} = {value!r}; must be a finite number")
+    return float(value)
+
+
+@dataclass(frozen=True)
+class RollerGeometry:
+    """Ellipsoid rollers of one wheel.
+
+    Attributes:
+        axis_distance: d, roller axis to the wheel axle, m.
+        half_width: b, roller semi-axes across its axis, m.
+        half_length: a, roller semi-axis along its axis, m.
+        angles: ζ_k, roller positions around the axle (0 at the top, towards +drive), rad.
+        offsets: y_k, axial offsets along the axle direction a_i, m.
+    """
+
+    axis_distance: float
+    half_width: float
+    half_length: float
+    angles: np.ndarray
+    offsets: np.ndarray
+
+    def __post_init__(self) -> None:
+        positive("axis_distance", self.axis_distance)
+        positive("half_width", self.half_width)
+        positive("half_length", self.half_length)
+        ang = as_array("angles", self.angles, (None,))
+        off = as_array("offsets", self.offsets, (ang.size,))
+        if ang.size < 2:
+            raise ValueError(f"angles has {ang.size} rollers; a wheel needs at least 2")
+        for name, arr in (("angles", ang), ("offsets", off)):
+            arr = arr.copy()
+            arr.setflags(write=False)
+            object.__setattr__(self, name, arr)
+
+    def _h(self, phi: float) -> float:
+        b, a = self.half_width, self.half_length
+        return math.sqrt(b * b * math.cos(phi) ** 2 + a * a * math.sin(phi) ** 2)
+
+    def rolling_radius(self, phi: float) -> float:
+        """``R(φ) = d cos φ + h(φ)``."""
+        return self.axis_distance * math.cos(phi) + self._h(phi)
+
+    def contact_ahead(self, phi: float) -> float:
+        """``x_c(φ) = −d sin φ + (a² − b²) sin φ cos φ / h`` (= R'(φ))."""
+        b, a = self.half_width, self.half_length
+        return (-self.axis_distance * math.sin(phi)
+                + (a * a - b * b) * math.sin(phi) * math.cos(phi) / self._h(phi))
+
+    def contact_radius(self, phi: float) -> float:
+        """``ρ(φ) = b² cos φ / h(φ)``: contact point to the roller axis."""
+        return self.half_width ** 2 * math.cos(phi) / self._h(phi)
+
+    def phases(self, theta: float) -> np.ndarray:
+        """``φ_k = wrap(ζ_k + θ − π)`` in (−π, π]."""
+        return np.angle(np.exp(1j * (self.angles + theta - math.pi)))
+
+    def lowest(self, theta: float) -> int:
+        """Index of the roller in contact: the one with the smallest |φ_k|."""
+        return int(np.argmin(np.abs(self.phases(theta))))
+
+
+@dataclass(frozen=True)
+class Drive:
+    """Actuation law of the wheels.
+
+    Attributes:
+        mode: ``"torque"`` (τ = u) or ``"rate"`` (velocity servo τ = k_v (u − θ̇)).
+        gain: k_v, N·m·s/rad (rate mode).
+        torque_limit: τ_max, N·m; |τ| is clamped to it in both modes.
+    """
+
+    mode: str
+    torque_limit: float
+    gain: float = 0.0
+
+    def __post_init__(self) -> None:
+        if self.mode not in ("torque", "rate"):
+            raise ValueError(f"Drive.mode = {self.mode!r}; valid values are 'torque', 'rate'")
+        if not math.isfinite(self.torque_limit) or self.torque_limit <= 0:
+            raise ValueError(f"Drive.torque_limit = {self.torque_limit!r}; valid range is "
+                             f"(0, inf)")
+        if self.mode == "rate" and (not math.isfinite(self.gain) or self.gain <= 0):
+            raise ValueError(f"Drive.gain = {self.gain!r}; a rate servo needs a gain in "
+                             f"(0, inf)")
+
+    def torques(self, u: np.ndarray, rates: np.ndarray) -> np.ndarray:
+        """``τ = clip(u, ±τ_max)`` or ``clip(k_v (u − θ̇), ±τ_max)``."""
+        if self.mode == "torque":
+            return np.clip(u, -self.torque_limit, self.torque_limit)
+        return np.clip(self.gain * (u - rates), -self.torque_limit, self.torque_limit)
+
+
+@dataclass(frozen=True)
+class OmniHybrid:
+    """Three-wheel omni platform with mode-dependent contact rows.
+
+    Attributes:
+        mass: total mass M, kg.
+        inertia: composite 3×3 inertia about the centre, body frame, kg·m².
+        wheel_axial: each wheel subtree's inertia about its axle (no armature), kg·m².
+        wheel_armature: reflected rotor inertia on each wheel hinge, kg·m².
+        roller_axial: each roller's inertia about its own axis (with armature), kg·m².
+        radius: r, nominal wheel radius (used in H), m.
+        distance: L, centre to wheel centres, m.
+        rollers: roller geometry (same for every wheel).
+        wheel_angles: α_i of the wheels, rad.
+        gravity: g, m/s².
+    """
+
+    mass: float
+    inertia: np.ndarray
+    wheel_axial: float
+    wheel_armature: float
+    roller_axial: float
+    radius: float
+    distance: float
+    rollers: RollerGeometry
+    wheel_angles: np.ndarray = field(
+        default_factory=lambda: 2.0 * np.pi * np.arange(3) / 3.0)
+    gravity: float = 9.81
+
+    def __post_init__(self) -> None:
+        positive("mass", self.mass)
+        positive("wheel_axial", self.wheel_axial)
+        positive("radius", self.radius)
+        positive("distance", self.distance)
+        positive("gravity", self.gravity)
+        for name in ("wheel_armature", "roller_axial"):
+            if _finite(name, getattr(self, name)) < 0:
+                raise ValueError(f"{name} = {getattr(self, name)!r}; valid range is [0, inf)")
+        inertia = as_array("inertia", self.inertia, (3, 3))
+        if np.any(np.linalg.eigvalsh(0.5 * (inertia + inertia.T)) <= 0):
+            raise ValueError("inertia must be symmetric positive definite")
+        alpha = as_array("wheel_angles", self.wheel_angles, (3,))
+        object.__setattr__(self, "inertia", inertia.copy())
+        object.__setattr__(self, "wheel_angles", alpha.copy())
+
+    # --- geometry -------------------------------------------------------------------
+    @property
+    def radial(self) -> np.ndarray:
+        """ê_i (3, 3) rows, body frame."""
+        a = self.wheel_angles
+        return np.stack([np.cos(a), np.sin(a), 0.0 * a], axis=1)
+
+    @property
+    def drive_dirs(self) -> np.ndarray:
+        """t_i = ẑ × ê_i."""
+        a = self.wheel_angles
+        return np.stack([-np.sin(a), np.cos(a), 0.0 * a], axis=1)
+
+    def modes(self, thetas: np.ndarray) -> tuple[int, int, int]:
+        """σ_i: roller in contact on each wheel."""
+        return tuple(self.rollers.lowest(float(t)) for t in thetas)
+
+    def contact_point(self, i: int, roller: int, theta: float) -> np.ndarray:
+        """``p = c_i + x_c t_i + y_k a_i − R ẑ`` (body frame)."""
+        phi = float(self.rollers.phases(theta)[roller])
+        g = self.rollers
+        return (self.distance * self.radial[i] + g.contact_ahead(phi) * self.drive_dirs[i]
+                - g.offsets[roller] * self.radial[i]
+                - np.array([0.0, 0.0, g.rolling_radius(phi)]))
+
+    def jacobian(self, modes: tuple[int, ...]) -> np.ndarray:
+        """``H(σ)``: row i = (t_i,x, t_i,y, L − y_σi) / r."""
+        t = self.drive_dirs
+        lever = self.distance - self.rollers.offsets[list(modes)]
+        return np.column_stack([t[:, 0], t[:, 1], lever]) / self.radius
+
+    def roller_rows(self, modes: tuple[int, ...], thetas: np.ndarray
+                    ) -> tuple[np.ndarray, np.ndarray]:
+        """``k_i`` (β̇_i = k_iᵀ ν) and ``∂k_i/∂φ`` (central difference of the closed form)."""
+        a = -self.radial
+        ks, dks = np.zeros((3, 3)), np.zeros((3, 3))
+        g = self.rollers
+        for i, (m, th) in enumerate(zip(modes, thetas, strict=True)):
+            phi = float(g.phases(float(th))[m])
+
+            def k_of(p: float, i: int = i) -> np.ndarray:
+                return np.array([a[i, 0], a[i, 1], g.contact_ahead(p)]) / g.contact_radius(p)
+            ks[i] = k_of(phi)
+            dks[i] = (k_of(phi + 1e-6) - k_of(phi - 1e-6)) / 2e-6
+        return ks, dks
+
+    # --- continuous phase ----------------------------------------------------------------
+    @property
+    def wheel_inertia(self) -> float:
+        """I_w = wheel subtree axial inertia + armature."""
+        return self.wheel_axial + self.wheel_armature
+
+    def planar_mass(self, modes: tuple[int, ...], thetas: np.ndarray) -> np.ndarray:
+        """``P + I_w HᵀH + I_r Σ k kᵀ``."""
+        H = self.jacobian(modes)
+        ks, _ = self.roller_rows(modes, thetas)
+        P = np.diag([self.mass, self.mass, self.inertia[2, 2]])
+        return P + self.wheel_inertia * H.T @ H + self.roller_axial * ks.T @ ks
+
+    def velocity_term(self, nu: np.ndarray) -> np.ndarray:
+        """``c(ν) = r (−M v, M u, 0)``: only the platform's momentum turns with the frame."""
+        u, v, r = nu
+        return np.array([-self.mass * r * v, self.mass * r * u, 0.0])
+
+    def body_acceleration(self, nu: np.ndarray, thetas: np.ndarray, modes: tuple[int, ...],
+                          torques: np.ndarray) -> np.ndarray:
+        """``ν̇`` of the continuous phase in mode σ (module docstring)."""
+        H = self.jacobian(modes)
+        ks, dks = self.roller_rows(modes, thetas)
+        rates = H @ nu
+        roller = self.roller_axial * sum(ks[i] * float(dks[i] @ nu) * rates[i] for i in range(3))
+        return np.linalg.solve(self.planar_mass(modes, thetas),
+                               H.T @ torques - self.velocity_term(nu) - roller)
+
+    def kinetic_energy(self, nu: np.ndarray, modes: tuple[int, ...],
+                       thetas: np.ndarray) -> float:
+        """``½ νᵀ (P + I_w HᵀH + I_r Σ k kᵀ) ν``."""
+        return float(0.5 * nu @ self.planar_mass(modes, thetas) @ nu)
+
+    # --- impact ----------------------------------------------------------------------------
+    def full_mass(self) -> np.ndarray:
+        """𝕄 of ``q̇ = (V, Ω, θ̇, β̇)``: the wheel spin couples to Ω through I_ax a_i."""
+        Mq = np.zeros((12, 12))
+        Mq[:3, :3] = self.mass * np.eye(3)
+        Mq[3:6, 3:6] = self.inertia
+        a = -self.radial
+        for i in range(3):
+            Mq[3:6, 6 + i] = Mq[6 + i, 3:6] = self.wheel_axial * a[i]
+            Mq[6 + i, 6 + i] = self.wheel_inertia
+            Mq[9 + i, 9 + i] = self.roller_axial
+        return Mq
+
+    def constraint_rows(self, modes: tuple[int, ...], thetas: np.ndarray) -> np.ndarray:
+        """A (9×12): for each wheel, contact velocity along t_i, ẑ and a_i (roller)::
+
+            t·(V + Ω×p) − R θ̇ = 0,   ẑ·(V + Ω×p) − x_c θ̇ = 0,   a·(V + Ω×p) − ρ β̇ = 0
+        """
+        A = np.zeros((9, 12))
+        g = self.rollers
+        for i, (m, th) in enumerate(zip(modes, thetas, strict=True)):
+            phi = float(g.phases(float(th))[m])
+            p = self.contact_point(i, m, float(th))
+            skew_p = np.array([[0, -p[2], p[1]], [p[2], 0, -p[0]], [-p[1], p[0], 0]])
+            for row, (d, coef, col) in enumerate((
+                    (self.drive_dirs[i], -g.rolling_radius(phi), 6 + i),
+                    (np.array([0.0, 0.0, 1.0]), -g.contact_ahead(phi), 6 + i),
+                    (-self.radial[i], -g.contact_radius(phi), 9 + i))):
+                A[3 * i + row, :3] = d
+                A[3 * i + row, 3:6] = -d @ skew_p  # d·(Ω × p) = −d·(p × Ω)
+                A[3 * i + row, col] = coef
+        return A
+
+    def lift(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
+             roller_rates: np.ndarray | None = None) -> np.ndarray:
+        """Full velocity in mode σ: the q̇ with planar part ν that satisfies A q̇ = 0.
+
+        If ``roller_rates`` is given those β̇ replace the constrained ones (a roller that
+        has just come into contact still turns at its old rate).
+        """
+        A = self.constraint_rows(modes, thetas)
+        # Unknowns: V_z, Ω_x, Ω_y, θ̇ (3), β̇ (3); knowns: u, v, r.
+        known = [0, 1, 5]
+        unknown = [2, 3, 4, 6, 7, 8, 9, 10, 11]
+        sol = np.linalg.solve(A[:, unknown], -A[:, known] @ nu)
+        q = np.zeros(12)
+        q[known] = nu
+        q[unknown] = sol
+        if roller_rates is not None:
+            q[9:] = roller_rates
+        return q
+
+    def impact(self, q_minus: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray
+               ) -> tuple[np.ndarray, float]:
+        """Plastic impact onto mode σ's constraints: ``(q̇⁺, ΔT)``, ΔT ≥ 0 the energy lost."""
+        Mq = self.full_mass()
+        A = self.constraint_rows(modes, thetas)
+        Minv_At = np.linalg.solve(Mq, A.T)
+        gap = A @ q_minus
+        impulse = np.linalg.solve(A @ Minv_At, gap)
+        q_plus = q_minus - Minv_At @ impulse
+        return q_plus, float(0.5 * gap @ impulse)
+
+    def planar_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
+                      thetas: np.ndarray, spins: np.ndarray) -> tuple[np.ndarray, float]:
+        """Switch from mode ``old`` to ``new`` in the planar model: ``(ν⁺, ΔT)``.
+
+        1. In-plane projection in the metric ``blockdiag(P, I_w 1, I_r 1)`` of
+           ``w = (ν, θ̇, β̇)`` onto ``θ̇ = H_new ν, β̇ = K_new ν``; the pre-impact
+           ``θ̇ = H_old ν`` and ``β̇`` = the contacting rollers' spins ``spins``.
+        2. The vertical impulse ``Λ_z,i`` of the full impact (:meth:`impact`) acts on
+           wheel i's spin through the contact ``x_c`` ahead of the axle: the
+           generalised impulse ``x_c Λ_z,i`` on ``θ_i``, passed to the platform through
+           ``θ̇ = H_new ν``: ``Δν = M_red⁻¹ H_newᵀ (x_c Λ_z)`` (q̇⁺ = q̇⁻ − 𝕄⁻¹Aᵀ Λ and the z-row has −x_c in the θ̇ column).
+        """
+        H_old, H_new = self.jacobian(old), self.jacobian(new)
+        ks, _ = self.roller_rows(new, thetas)
+        P = np.diag([self.mass, self.mass, self.inertia[2, 2]])
+        Mw = np.zeros((9, 9))
+        Mw[:3, :3] = P
+        Mw[3:6, 3:6] = self.wheel_inertia * np.eye(3)
+        Mw[6:, 6:] = self.roller_axial * np.eye(3)
+        w = np.concatenate([nu, H_old @ nu, spins])
+        A = np.hstack([np.vstack([H_new, ks]), -np.eye(6)])
+        Minv_At = np.linalg.solve(Mw, A.T)
+        gap = A @ w
+        lam = np.linalg.solve(A @ Minv_At, gap)
+        nu_plus = (w - Minv_At @ lam)[:3]
+        # Vertical impulses of the full rigid-body impact, as wheel-spin impulses.
+        q = self.lift(nu, old, thetas, roller_rates=spins)
+        Mq = self.full_mass()
+        Af = self.constraint_rows(new, thetas)
+        impulse = np.linalg.solve(Af @ np.linalg.solve(Mq, Af.T), Af @ q)
+        g = self.rollers
+        xc = np.array([g.contact_ahead(float(g.phases(float(th))[m]))
+                       for m, th in zip(new, thetas, strict=True)])
+        J = xc * impulse[1::3]
+        m_red = self.planar_mass(new, thetas)
+        nu_plus = nu_plus + np.linalg.solve(m_red, H_new.T @ J)
+        lost = (self.kinetic_energy(nu, old, thetas) + 0.5 * self.roller_axial * (
+            spins @ spins - (ks @ nu) @ (ks @ nu)) - self.kinetic_energy(nu_plus, new, thetas))
+        return nu_plus, float(lost)
+
+    def full_energy(self, q: np.ndarray) -> float:
+        """``½ q̇ᵀ 𝕄 q̇``."""
+        return float(0.5 * q @ self.full_mass() @ q)
+
+
+@dataclass
+class HybridRun:
+    """Time series of a hybrid simulation.
+
+    Attributes:
+        t: times, s; pose: (N, 3) X, Y, ψ; twist: (N, 3) u, v, r; thetas: (N, 3) wheel
+        angles; torques: (N, 3); switches: (time, wheel, energy lost J) per mode switch.
+    """
+
+    t: np.ndarray
+    pose: np.ndarray
+    twist: np.ndarray
+    thetas: np.ndarray
+    torques: np.ndarray
+    switches: list[tuple[float, int, float]]
+
+
+def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
+             pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
+             roller_rates0: np.ndarray | None = None, substeps: int = 4,
+             impacts: bool = True) -> HybridRun:
+    """Integrate the hybrid model: RK4 on the continuous phase, impact map at switches.
+
+    Args:
+        model: the platform.
+        drive: actuation law.
+        inputs: (N, 3) wheel inputs per output step (rates, rad/s, or torques, N·m).
+        dt: output step, s; each is split into ``substeps`` RK4 steps.
+        pose0, twist0, thetas0: initial (X, Y, ψ), (u, v, r) and wheel angles.
+        roller_rates0: (3, n_rollers) spins of all rollers (zero if None).
+        substeps: RK4 steps per output step.
+        impacts: apply the impact map at switches (False: mode switches change H only,
+            velocity continuous).
+
+    Raises:
+        ValueError: non-finite or mis-shaped inputs, non-positive dt.
+    """
+    inputs = as_array("inputs", inputs, (None, 3))
+    positive("dt", dt)
+    pose = as_array("pose0", pose0, (3,)).copy()
+    nu = as_array("twist0", twist0, (3,)).copy()
+    th = as_array("thetas0", thetas0, (3,)).copy()
+    nrol = model.rollers.angles.size
+    spins = (np.zeros((3, nrol)) if roller_rates0 is None
+             else as_array("roller_rates0", roller_rates0, (3, nrol)).copy())
+    modes = model.modes(th)
+    h = dt / substeps
+    n = inputs.shape[0]
+    out_pose, out_nu, out_th, out_tau = (np.zeros((n + 1, 3)) for _ in range(4))
+    out_pose[0], out_nu[0], out_th[0] = pose, nu, th
+    switches: list[tuple[float, int, float]] = []
+
+    def deriv(state: np.ndarray, u_in: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        ps, v, thv = state[:3], state[3:6], state[6:]
+        H = model.jacobian(modes)
+        tau = drive.torques(u_in, H @ v)
+        c, s = math.cos(ps[2]), math.sin(ps[2])
+        world = np.array([c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]])
+        return np.concatenate([world, model.body_acceleration(v, thv, modes, tau),
+                               H @ v]), tau
+
+    for k in range(n):
+        u_in = inputs[k]
+        tau = np.zeros(3)
+        for _ in range(substeps):
+            x = np.concatenate([pose, nu, th])
+            k1, tau = deriv(x, u_in)
+            k2, _ = deriv(x + 0.5 * h * k1, u_in)
+            k3, _ = deriv(x + 0.5 * h * k2, u_in)
+            k4, _ = deriv(x + h * k3, u_in)
+            x = x + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+            pose, nu, th = x[:3], x[3:6], x[6:]
+            new = model.modes(th)
+            if new != modes:
+                ks_old, _ = model.roller_rows(modes, th)
+                current = ks_old @ nu
+                for i in range(3):  # leaving rollers keep their spin
+                    spins[i, modes[i]] = current[i]
+                entering = np.array([spins[i, new[i]] for i in range(3)])
+                if impacts:
+                    nu, lost = model.planar_impact(nu, modes, new, th, entering)
+                else:
+                    lost = 0.0
+                for i in range(3):
+                    if new[i] != modes[i]:
+                        switches.append(((k + 1) * dt, i, lost))
+                modes = new
+        if not np.all(np.isfinite(nu)):
+            raise FloatingPointError(f"hybrid model diverged at t = {(k + 1) * dt:.3f} s")
+        out_pose[k + 1], out_nu[k + 1], out_th[k + 1], out_tau[k] = pose, nu, th, tau
+    out_tau[-1] = out_tau[-2] if n else 0.0
+    return HybridRun(np.arange(n + 1) * dt, out_pose, out_nu, out_th, out_tau, switches)

@@ -1,0 +1,404 @@
+"""Dynamic scenarios of omni3, judged over the whole run against the model that predicts them.
+
+Each scenario runs the MuJoCo model (physics by contact) and the analytic predictions on
+the same inputs and returns a :class:`ScenarioResult`: judged rows
+``(metric, value, unit, target, basis)`` and time series of the physics, the kinematic
+prediction and the dynamic (hybrid) prediction, for a plot per scenario.
+
+* :func:`step_command` — rate servo, step (no ramp) to a body twist. Dynamic model: the
+  hybrid model with the servo law ``τ = clip(k_v (u − θ̇), ±τ_max)`` read from the model.
+* :func:`torque_input` — constant wheel torques. Dynamic model: hybrid model, torque law.
+* :func:`coasting` — drive at (u, 0, r), then motors off: yaw-rate decay, turn rate of the
+  velocity direction, kinetic energy lost per second; hybrid model with its impact map.
+* :func:`slip_onset` — torque ramp in pure rotation: the torque at which the wheels start
+  to slip, against ``|F_t| = μ N`` with ``F_t = (τ − I_w θ̈)/r``, ``N = M g / 3``.
+
+``python -m wmr_mujoco.omni_dynamic_scenarios`` prints every row.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.actuation import set_actuation_mode
+from wmr_mujoco.adapters import base_pose, body_twist
+from wmr_mujoco.analytic import omni_hybrid as oh
+from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.loading import load
+from wmr_mujoco.omni_hybrid_model import (WHEELS, drive_from_model, hybrid_from_model,
+                                          roller_rates)
+from wmr_mujoco.simulation import check_healthy
+
+#: Targets of issue 16 (requirements).
+STEP_PATH_PCT = 0.3
+STEP_HEADING_DEG = 0.2
+TORQUE_COMPONENT_PCT = 1.0
+TORQUE_PATH_PCT = 0.5
+COAST_PCT = 5.0
+SLIP_PCT = 5.0
+SETTLE = 0.5
+
+Row = tuple[str, float, str, float, str]
+
+
+@dataclass
+class ScenarioResult:
+    """Judged rows and time series of one scenario.
+
+    ``series`` holds ``t`` and, for ``physics``, ``kinematic`` and ``dynamic``, the pose
+    ``(X, Y, ψ)`` and twist ``(u, v, r)`` as ``<model>_pose`` / ``<model>_twist``.
+    """
+
+    name: str
+    rows: list[Row]
+    series: dict[str, np.ndarray] = field(default_factory=dict)
+
+    @property
+    def passed(self) -> bool:
+        """All rows with a target meet it (|value| ≤ target)."""
+        return all(abs(v) <= tgt for _, v, _, tgt, _ in self.rows if math.isfinite(tgt))
+
+
+def _finite_vector(name: str, value: object, n: int) -> np.ndarray:
+    arr = np.asarray(value, dtype=float)
+    if arr.shape != (n,):
+        raise ValueError(f"{name} must have shape ({n},), got {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} = {arr}; every entry must be finite")
+    return arr
+
+
+def _duration(value: float) -> float:
+    if not isinstance(value, (int, float)) or not math.isfinite(value) or not 0 < value <= 30:
+        raise ValueError(f"duration = {value!r}; valid range is (0, 30] s")
+    return float(value)
+
+
+def _settled(mode: str) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    model = load("omni3")
+    set_actuation_mode(model, mode)
+    data = mujoco.MjData(model)
+    for _ in range(round(SETTLE / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+    mujoco.mj_forward(model, data)
+    return model, data
+
+
+def _state(model: mujoco.MjModel, data: mujoco.MjData) -> tuple[np.ndarray, ...]:
+    thetas = np.array([data.joint(w).qpos[0] for w in WHEELS])
+    return base_pose(model, data), body_twist(model, data), thetas, roller_rates(model, data)
+
+
+def _physics(model: mujoco.MjModel, data: mujoco.MjData, ctrl: np.ndarray
+             ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Step with ``ctrl[k]`` (N, 3): pose, twist (N + 1, 3) and wheel rates."""
+    acts = [model.actuator(w).id for w in WHEELS]
+    n = ctrl.shape[0]
+    pose, twist, rates = np.zeros((n + 1, 3)), np.zeros((n + 1, 3)), np.zeros((n + 1, 3))
+    pose[0], twist[0] = base_pose(model, data), body_twist(model, data)
+    rates[0] = [data.joint(w).qvel[0] for w in WHEELS]
+    for k in range(n):
+        data.ctrl[acts] = ctrl[k]
+        mujoco.mj_step(model, data)
+        mujoco.mj_forward(model, data)
+        pose[k + 1], twist[k + 1] = base_pose(model, data), body_twist(model, data)
+        rates[k + 1] = [data.joint(w).qvel[0] for w in WHEELS]
+    check_healthy(model, data)
+    return pose, twist, rates
+
+
+def _relative(pose: np.ndarray, start: np.ndarray) -> np.ndarray:
+    """Pose in the start frame (so every model starts at the origin, heading 0)."""
+    d = pose[:, :2] - start[:2]
+    c, s = math.cos(start[2]), math.sin(start[2])
+    heading = np.angle(np.exp(1j * (pose[:, 2] - start[2])))
+    return np.column_stack([c * d[:, 0] + s * d[:, 1], -s * d[:, 0] + c * d[:, 1],
+                            np.unwrap(heading)])
+
+
+def _kinematic_pose(twist: np.ndarray, dt: float) -> np.ndarray:
+    """Integrate a body twist series (N + 1, 3) from the origin (midpoint rule)."""
+    pose = np.zeros_like(twist)
+    for k in range(twist.shape[0] - 1):
+        nu = 0.5 * (twist[k] + twist[k + 1])
+        psi = pose[k, 2] + 0.5 * dt * nu[2]
+        pose[k + 1] = pose[k] + dt * ok.body_to_world(psi, nu)
+    return pose
+
+
+def _path(pose: np.ndarray) -> float:
+    return float(np.sum(np.linalg.norm(np.diff(pose[:, :2], axis=0), axis=1)))
+
+
+def _pose_rows(prefix: str, ref: np.ndarray, other: np.ndarray, path_pct: float,
+               heading_deg: float, basis: str) -> list[Row]:
+    path = max(_path(ref), 1e-9)
+    dist = np.linalg.norm(other[:, :2] - ref[:, :2], axis=1)
+    head = np.degrees(np.abs(other[:, 2] - ref[:, 2]))
+    rows: list[Row] = [
+        (f"{prefix} position error, worst, % of path", 100 * dist.max() / path, "%",
+         path_pct, basis),
+        (f"{prefix} position error, RMS, % of path", 100 * math.sqrt(np.mean(dist ** 2)) / path,
+         "%", math.inf, "report"),
+        (f"{prefix} heading error, worst", head.max(), "deg", heading_deg, basis),
+        (f"{prefix} heading error, RMS", math.sqrt(np.mean(head ** 2)), "deg", math.inf,
+         "report"),
+        (f"{prefix} final position error, % of path", 100 * dist[-1] / path, "%", math.inf,
+         "report"),
+    ]
+    return rows
+
+
+def _twist_rows(prefix: str, ref: np.ndarray, other: np.ndarray, pct: float,
+                distance: float) -> list[Row]:
+    """Max and RMS error of u, v (m/s) and r (rad/s), each also as % of its scale.
+
+    Scale of u and v: the run's peak planar speed; of r: its peak |r|, or peak speed / L
+    when the run does not turn (a yaw error then measured as the wheel-speed it causes).
+    """
+    speed = float(np.max(np.linalg.norm(ref[:, :2], axis=1)))
+    peak_r = float(np.max(np.abs(ref[:, 2])))
+    scales = (speed, speed, peak_r if peak_r > 1e-3 else max(speed, 1e-9) / distance)
+    rows: list[Row] = []
+    for j, (name, unit) in enumerate((("u", "m/s"), ("v", "m/s"), ("r", "rad/s"))):
+        err = np.abs(other[:, j] - ref[:, j])
+        scale = max(scales[j], 1e-9)
+        rows += [(f"{prefix} {name} error, worst", float(err.max()), unit, math.inf, "report"),
+                 (f"{prefix} {name} error, RMS", float(math.sqrt(np.mean(err ** 2))), unit,
+                  math.inf, "report"),
+                 (f"{prefix} {name} error, worst, % of peak", 100 * float(err.max()) / scale,
+                  "%", pct, "requirement (issue 16)")]
+    return rows
+
+
+def _series(t: np.ndarray, **models: tuple[np.ndarray, np.ndarray]) -> dict[str, np.ndarray]:
+    out = {"t": t}
+    for name, (pose, twist) in models.items():
+        out[f"{name}_pose"], out[f"{name}_twist"] = pose, twist
+    return out
+
+
+def step_command(twist: tuple[float, float, float], duration: float = 2.0,
+                 name: str | None = None) -> ScenarioResult:
+    """Rate servo commanded a constant twist from rest, no ramp.
+
+    Raises:
+        ValueError: non-finite twist, or a duration outside (0, 30] s.
+    """
+    nu_cmd = _finite_vector("twist", twist, 3)
+    duration = _duration(duration)
+    model, data = _settled("rate")
+    hy = hybrid_from_model(model)
+    drive = drive_from_model(model, "rate")
+    dt = model.opt.timestep
+    n = round(duration / dt)
+    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
+    rates = np.tile(H @ nu_cmd, (n, 1))
+    if np.any(np.abs(rates) > float(model.actuator(WHEELS[0]).ctrlrange[1])):
+        raise ValueError(f"twist {nu_cmd} needs wheel rates {H @ nu_cmd} beyond the rate "
+                         f"limit ±{model.actuator(WHEELS[0]).ctrlrange[1]:g} rad/s")
+    start, nu0, th0, spins = _state(model, data)
+    pose, tw, _ = _physics(model, data, rates)
+    phys = _relative(pose, start)
+    run = oh.simulate(hy, drive, rates, dt, np.zeros(3), nu0, th0, spins)
+    kin_twist = np.vstack([nu0, np.tile(nu_cmd, (n, 1))])
+    kin = _kinematic_pose(kin_twist, dt)
+    basis = "requirement (issue 16)"
+    rows = (_pose_rows("dynamic", phys, run.pose, STEP_PATH_PCT, STEP_HEADING_DEG, basis)
+            + _twist_rows("dynamic", tw, run.twist, math.inf, hy.distance)
+            + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report"))
+    return ScenarioResult(name or f"step {tuple(nu_cmd)}", rows,
+                          _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
+                                  dynamic=(run.pose, run.twist)))
+
+
+def torque_input(torques: tuple[float, float, float], duration: float = 2.0,
+                 name: str | None = None) -> ScenarioResult:
+    """Constant wheel torques from rest (torque mode).
+
+    Kinematic prediction: the measured wheel rates through ``ν = H⁻¹ θ̇``.
+
+    Raises:
+        ValueError: non-finite torques, torques beyond the torque limit, bad duration.
+    """
+    tau = _finite_vector("torques", torques, 3)
+    duration = _duration(duration)
+    model, data = _settled("torque")
+    limit = float(model.actuator(WHEELS[0]).forcerange[1])
+    if np.any(np.abs(tau) > limit):
+        raise ValueError(f"torques = {tau}; valid range is [−{limit:g}, {limit:g}] N·m")
+    hy = hybrid_from_model(model)
+    dt = model.opt.timestep
+    n = round(duration / dt)
+    inputs = np.tile(tau, (n, 1))
+    start, nu0, th0, spins = _state(model, data)
+    pose, tw, wheel_rates = _physics(model, data, inputs)
+    phys = _relative(pose, start)
+    run = oh.simulate(hy, drive_from_model(model, "torque"), inputs, dt, np.zeros(3), nu0,
+                      th0, spins)
+    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
+    kin_twist = np.linalg.solve(H, wheel_rates.T).T
+    kin = _kinematic_pose(kin_twist, dt)
+    basis = "requirement (issue 16)"
+    rows = (_twist_rows("dynamic", tw, run.twist, TORQUE_COMPONENT_PCT, hy.distance)
+            + _pose_rows("dynamic", phys, run.pose, TORQUE_PATH_PCT, math.inf, basis)
+            + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report"))
+    return ScenarioResult(name or f"torque {tuple(tau)}", rows,
+                          _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
+                                  dynamic=(run.pose, run.twist)))
+
+
+def _coast_figures(pose: np.ndarray, twist: np.ndarray, energy: np.ndarray, span: float
+                   ) -> tuple[float, float, float]:
+    """Yaw-rate decay (rad/s²), turn rate of the world velocity direction (rad/s), energy
+    lost per second (W), from the first and last samples."""
+    c, s = np.cos(pose[:, 2]), np.sin(pose[:, 2])
+    vx = c * twist[:, 0] - s * twist[:, 1]
+    vy = s * twist[:, 0] + c * twist[:, 1]
+    chi = np.unwrap(np.arctan2(vy, vx))
+    return ((twist[0, 2] - twist[-1, 2]) / span, (chi[-1] - chi[0]) / span,
+            (energy[0] - energy[-1]) / span)
+
+
+def coasting(twist: tuple[float, float, float] = (0.3, 0.0, 1.0), drive_time: float = 1.5,
+             duration: float = 3.0, impacts: bool = True) -> ScenarioResult:
+    """Drive at ``twist`` (0.5 s ramp), then motors off (torque mode, τ = 0) and coast.
+
+    Physics and hybrid model start the coast from the same measured state (twist, wheel
+    angles, roller spins). Energy: ``½ νᵀ M(σ, θ) ν`` of the hybrid model's planar
+    mass matrix, evaluated on both. Kinematic prediction: the twist at motor-off, held.
+
+    Raises:
+        ValueError: non-finite twist or a duration outside (0, 30] s.
+    """
+    nu_cmd = _finite_vector("twist", twist, 3)
+    duration = _duration(duration)
+    drive_time = _duration(drive_time)
+    model, data = _settled("rate")
+    hy = hybrid_from_model(model)
+    dt = model.opt.timestep
+    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
+    nd = round(drive_time / dt)
+    ramp = np.clip(np.arange(nd) * dt / 0.5, 0.0, 1.0)[:, None]
+    _physics(model, data, ramp * (H @ nu_cmd))
+    set_actuation_mode(model, "torque")
+    n = round(duration / dt)
+    zeros = np.zeros((n, 3))
+    start, nu0, th0, spins = _state(model, data)
+    pose, tw, wheel_rates = _physics(model, data, zeros)
+    phys = _relative(pose, start)
+    run = oh.simulate(hy, drive_from_model(model, "torque"), zeros, dt, np.zeros(3), nu0,
+                      th0, spins, impacts=impacts)
+    # Wheel angles of the physics, integrated from the measured rates, for M(σ, θ).
+    th_phys = th0 + np.concatenate([[np.zeros(3)], np.cumsum(
+        0.5 * (wheel_rates[1:] + wheel_rates[:-1]) * dt, axis=0)])
+    e_phys = np.array([hy.kinetic_energy(v, hy.modes(th), th) for v, th in zip(tw, th_phys,
+                                                                               strict=True)])
+    e_dyn = np.array([hy.kinetic_energy(v, hy.modes(th), th)
+                      for v, th in zip(run.twist, run.thetas, strict=True)])
+    kin_twist = np.tile(nu0, (n + 1, 1))
+    kin = _kinematic_pose(kin_twist, dt)
+    fp = _coast_figures(phys, tw, e_phys, duration)
+    fd = _coast_figures(run.pose, run.twist, e_dyn, duration)
+    rows: list[Row] = []
+    for name, unit, a, b in (("yaw-rate decay", "rad/s²", fp[0], fd[0]),
+                             ("velocity-direction turn rate", "rad/s", fp[1], fd[1]),
+                             ("energy lost per second", "W", fp[2], fd[2])):
+        rows += [(f"physics {name}", a, unit, math.inf, "report"),
+                 (f"dynamic {name}", b, unit, math.inf, "report"),
+                 (f"dynamic {name} error, % of physics", 100 * abs(b - a) / max(abs(a), 1e-12),
+                  "%", COAST_PCT, "requirement (issue 16)")]
+    rows.append(("impact-map energy, per second", sum(s[2] for s in run.switches) / duration,
+                 "W", math.inf, "report"))
+    series = _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
+                     dynamic=(run.pose, run.twist))
+    series["physics_energy"], series["dynamic_energy"] = e_phys, e_dyn
+    return ScenarioResult(f"coast after {tuple(nu_cmd)}", rows, series)
+
+
+def predicted_slip_torque(hy: oh.OmniHybrid, friction: float) -> float:
+    """Equal torques τ on all wheels (pure rotation): slip when ``F_t = μ M g / 3``.
+
+    ``ṙ = 3 τ ℓ / (r I_red)`` with ``ℓ`` the mean lever of the two rows and
+    ``I_red = I_z + I_w 3 ℓ²/r²``; ``F_t = (τ − I_w ℓ ṙ / r) / r``, linear in τ.
+    """
+    ell = hy.distance - float(np.mean(hy.rollers.offsets))
+    r = hy.radius
+    i_red = hy.inertia[2, 2] + hy.wheel_inertia * 3 * ell ** 2 / r ** 2
+    per_unit = (1.0 - hy.wheel_inertia * ell / r * 3 * ell / (r * i_red)) / r
+    return friction * hy.mass * hy.gravity / 3.0 / per_unit
+
+
+def slip_onset(rate: float = 0.5, duration: float = 2.0, threshold: float = 0.02
+               ) -> ScenarioResult:
+    """Equal wheel torques ramped at ``rate`` N·m/s; onset: contact slip above ``threshold``.
+
+    Slip speed of wheel i: ``|R θ̇_i − R (H(σ) ν)_i|`` (m/s) from the measured wheel rates
+    and twist. The torque reached at the first step where any wheel's slip speed exceeds
+    ``threshold`` is the measured onset; its resolution is ``rate · (time the slip needs
+    to grow past the threshold)``.
+
+    Raises:
+        ValueError: rate or threshold not finite and > 0, bad duration.
+    """
+    for name, value in (("rate", rate), ("threshold", threshold)):
+        if not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
+            raise ValueError(f"{name} = {value!r}; valid range is (0, inf)")
+    duration = _duration(duration)
+    model, data = _settled("torque")
+    hy = hybrid_from_model(model)
+    dt = model.opt.timestep
+    n = round(duration / dt)
+    limit = float(model.actuator(WHEELS[0]).forcerange[1])
+    tau = np.clip(rate * dt * np.arange(1, n + 1), 0.0, limit)
+    start, _, th0, _ = _state(model, data)
+    pose, tw, wheel_rates = _physics(model, data, np.repeat(tau[:, None], 3, axis=1))
+    th = th0 + np.concatenate([[np.zeros(3)], np.cumsum(
+        0.5 * (wheel_rates[1:] + wheel_rates[:-1]) * dt, axis=0)])
+    slip = np.array([np.max(np.abs(hy.radius * (w - hy.jacobian(hy.modes(a)) @ v)))
+                     for w, a, v in zip(wheel_rates, th, tw, strict=True)])
+    over = np.nonzero(slip[1:] > threshold)[0]
+    measured = float(tau[over[0]]) if over.size else math.nan
+    friction = float(model.geom_friction[model.geom("floor").id, 0])
+    predicted = predicted_slip_torque(hy, friction)
+    rows: list[Row] = [
+        ("physics slip-onset torque", measured, "N·m", math.inf, "report"),
+        ("predicted slip-onset torque", predicted, "N·m", math.inf, "report"),
+        ("slip-onset torque error, % of physics",
+         100 * abs(predicted - measured) / measured if over.size else math.inf, "%",
+         SLIP_PCT, "requirement (issue 16)")]
+    phys = _relative(pose, start)
+    series = {"t": np.arange(n + 1) * dt, "torque": np.concatenate([[0.0], tau]),
+              "slip_speed": slip, "physics_pose": phys, "physics_twist": tw}
+    return ScenarioResult("slip onset (pure rotation)", rows, series)
+
+
+def all_scenarios(speed: float = 0.3, yaw_rate: float = 1.0) -> list[ScenarioResult]:
+    """Every scenario of issue 16 (a few minutes)."""
+    out = [step_command((speed * math.cos(math.radians(d)), speed * math.sin(math.radians(d)),
+                         0.0), name=f"step {d}°") for d in range(0, 360, 45)]
+    out.append(step_command((0.0, 0.0, yaw_rate), name="step rotate"))
+    out.append(step_command((speed, 0.0, 0.5 * yaw_rate), name="step translate+rotate"))
+    out += [torque_input((0.0, -0.03, 0.03), name="torque along x"),
+            torque_input((0.04, -0.02, -0.02), name="torque along y"),
+            torque_input((0.02, 0.02, 0.02), name="torque rotate"),
+            torque_input((0.04, -0.03, 0.01), name="torque combined"),
+            coasting(), slip_onset()]
+    return out
+
+
+def main() -> None:  # pragma: no cover - prints the tables
+    """Print every scenario's rows."""
+    for res in all_scenarios():
+        print(f"## {res.name}: {'pass' if res.passed else 'FAIL'}")
+        for metric, value, unit, target, basis in res.rows:
+            tgt = "" if not math.isfinite(target) else f" (target ≤ {target:g})"
+            print(f"  {metric}: {value:.4g} {unit}{tgt} [{basis}]")
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main()
