@@ -10,8 +10,8 @@ prediction and the dynamic (hybrid) prediction, for a plot per scenario.
 * :func:`torque_input` — constant wheel torques. Dynamic model: hybrid model, torque law.
 * :func:`coasting` — drive at (u, 0, r), then motors off: yaw-rate decay, turn rate of the
   velocity direction, kinetic energy lost per second; hybrid model with its impact map.
-* :func:`slip_onset` — torque ramp in pure rotation: the torque at which the wheels start
-  to slip, against ``|F_t| = μ N`` with ``F_t = (τ − I_w θ̈)/r``, ``N = M g / 3``.
+* :func:`slip_onset` — torque ramp (a push along x): the torque at which a wheel
+  starts to slip, against ``|F_t| = μ N`` (:func:`traction_and_load`).
 
 ``python -m wmr_mujoco.omni_dynamic_scenarios`` prints every row.
 """
@@ -320,61 +320,118 @@ def coasting(twist: tuple[float, float, float] = (0.3, 0.0, 1.0), drive_time: fl
     return ScenarioResult(f"coast after {tuple(nu_cmd)}", rows, series)
 
 
-def predicted_slip_torque(hy: oh.OmniHybrid, friction: float) -> float:
-    """Equal torques τ on all wheels (pure rotation): slip when ``F_t = μ M g / 3``.
+def traction_and_load(hy: oh.OmniHybrid, torques: np.ndarray
+                      ) -> tuple[np.ndarray, np.ndarray]:
+    """Traction ``F_t`` (N, along t_i) and normal loads ``N`` (N) under ``torques`` at rest.
 
-    ``ṙ = 3 τ ℓ / (r I_red)`` with ``ℓ`` the mean lever of the two rows and
-    ``I_red = I_z + I_w 3 ℓ²/r²``; ``F_t = (τ − I_w ℓ ṙ / r) / r``, linear in τ.
+    ``ν̇ = (P + I_w HᵀH)⁻¹ Hᵀ τ`` (mean row lever L), ``F_t = (τ − I_w H ν̇)/r``. Loads from
+    the robot's balance about its centre of mass (at wheel-centre height, contacts r
+    below): ``Σ N = M g`` and, horizontally,
+    ``Σ p_i × (N_i ẑ + F_t,i t_i) = Σ I_ax θ̈_i a_i`` (the spinning wheels' angular
+    momentum; the armature is a reflected rotor inertia and carries none in the model).
     """
-    ell = hy.distance - float(np.mean(hy.rollers.offsets))
+    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
+    P = np.diag([hy.mass, hy.mass, hy.inertia[2, 2]])
+    nudot = np.linalg.solve(P + hy.wheel_inertia * H.T @ H, H.T @ torques)
+    thdd = H @ nudot
+    force = (torques - hy.wheel_inertia * thdd) / hy.radius
+    e, t = hy.radial, hy.drive_dirs
+    pos = hy.distance * e[:, :2]
+    axle = -e
+    dL = hy.wheel_axial * (thdd[:, None] * axle).sum(axis=0)
     r = hy.radius
-    i_red = hy.inertia[2, 2] + hy.wheel_inertia * 3 * ell ** 2 / r ** 2
-    per_unit = (1.0 - hy.wheel_inertia * ell / r * 3 * ell / (r * i_red)) / r
-    return friction * hy.mass * hy.gravity / 3.0 / per_unit
+    A = np.vstack([pos[:, 1], -pos[:, 0], np.ones(3)])
+    rhs = np.array([dL[0] - np.sum(r * force * t[:, 1]),
+                    dL[1] + np.sum(r * force * t[:, 0]), hy.mass * hy.gravity])
+    return force, np.linalg.solve(A, rhs)
 
 
-def slip_onset(rate: float = 0.5, duration: float = 2.0, threshold: float = 0.02
-               ) -> ScenarioResult:
-    """Equal wheel torques ramped at ``rate`` N·m/s; onset: contact slip above ``threshold``.
+def predicted_slip_torque(hy: oh.OmniHybrid, pattern: np.ndarray, friction: float) -> float:
+    """Scale s of ``τ = s · pattern`` at which the first wheel reaches ``|F_t| = μ N``.
 
-    Slip speed of wheel i: ``|R θ̇_i − R (H(σ) ν)_i|`` (m/s) from the measured wheel rates
-    and twist. The torque reached at the first step where any wheel's slip speed exceeds
-    ``threshold`` is the measured onset; its resolution is ``rate · (time the slip needs
-    to grow past the threshold)``.
-
-    Raises:
-        ValueError: rate or threshold not finite and > 0, bad duration.
+    ``F_t`` is linear in s and ``N = N₀ + s N₁`` affine (:func:`traction_and_load`), so
+    each wheel's onset solves ``s |F₁| = μ (N₀ + s N₁)``.
     """
-    for name, value in (("rate", rate), ("threshold", threshold)):
-        if not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
-            raise ValueError(f"{name} = {value!r}; valid range is (0, inf)")
-    duration = _duration(duration)
+    f1, n1_total = traction_and_load(hy, pattern)
+    _, n0 = traction_and_load(hy, np.zeros(3))
+    n1 = n1_total - n0
+    onsets = [friction * n0[i] / (abs(f1[i]) - friction * n1[i])
+              for i in range(3) if abs(f1[i]) - friction * n1[i] > 0]
+    return min(onsets) if onsets else math.inf
+
+
+def _slips(pattern: np.ndarray, scale: float, hold: float, threshold: float,
+           torque_limit: float) -> tuple[bool, np.ndarray]:
+    """Apply ``scale · pattern`` from rest for ``hold`` s; True if the mean contact slip
+    speed of any wheel over the second half of the hold exceeds ``threshold``."""
     model, data = _settled("torque")
+    for w in WHEELS:
+        act = model.actuator(w).id
+        model.actuator_forcerange[act] = model.actuator_ctrlrange[act] = (-torque_limit,
+                                                                         torque_limit)
     hy = hybrid_from_model(model)
     dt = model.opt.timestep
-    n = round(duration / dt)
-    limit = float(model.actuator(WHEELS[0]).forcerange[1])
-    tau = np.clip(rate * dt * np.arange(1, n + 1), 0.0, limit)
-    start, _, th0, _ = _state(model, data)
-    pose, tw, wheel_rates = _physics(model, data, np.repeat(tau[:, None], 3, axis=1))
+    n = round(hold / dt)
+    _, _, th0, _ = _state(model, data)
+    _, tw, wheel_rates = _physics(model, data, np.tile(scale * pattern, (n, 1)))
     th = th0 + np.concatenate([[np.zeros(3)], np.cumsum(
         0.5 * (wheel_rates[1:] + wheel_rates[:-1]) * dt, axis=0)])
-    slip = np.array([np.max(np.abs(hy.radius * (w - hy.jacobian(hy.modes(a)) @ v)))
+    slip = np.array([np.abs(hy.radius * (w - hy.jacobian(hy.modes(a)) @ v))
                      for w, a, v in zip(wheel_rates, th, tw, strict=True)])
-    over = np.nonzero(slip[1:] > threshold)[0]
-    measured = float(tau[over[0]]) if over.size else math.nan
+    mean = slip[n // 2:].mean(axis=0)
+    return bool(np.any(mean > threshold)), mean
+
+
+def slip_onset(pattern: tuple[float, float, float] = (0.0, -1.0, 1.0), hold: float = 0.12,
+               threshold: float = 0.01, torque_limit: float = 3.0, low: float = 0.3,
+               high: float = 2.0, iterations: int = 7) -> ScenarioResult:
+    """Torque scale ``s`` of ``τ = s · pattern`` (default: a push along x) at which a
+    wheel starts to slip, found by bisection on constant-torque holds from rest.
+
+    A hold of ``hold`` seconds keeps the robot slow (the hand-over impacts of a fast
+    robot modulate the normal loads and would make slip a dynamic, not a traction,
+    event). Slip speed of wheel i: ``|R (θ̇_i − (H(σ) ν)_i)|`` from the measured rates;
+    a hold slips if its mean over the second half exceeds ``threshold``. The actuators'
+    torque limit is raised to ``torque_limit`` for this scenario. Resolution of the
+    measured onset: ``(high − low) / 2^iterations``.
+
+    Raises:
+        ValueError: a non-finite or zero pattern, non-positive settings, ``low ≥ high``.
+    """
+    pat = _finite_vector("pattern", pattern, 3)
+    if not np.any(pat):
+        raise ValueError("pattern = (0, 0, 0); it must have a nonzero entry")
+    for name, value in (("hold", hold), ("threshold", threshold),
+                        ("torque_limit", torque_limit), ("low", low), ("high", high)):
+        if not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
+            raise ValueError(f"{name} = {value!r}; valid range is (0, inf)")
+    if low >= high or high > torque_limit:
+        raise ValueError(f"low = {low!r}, high = {high!r}; need 0 < low < high ≤ "
+                         f"torque_limit = {torque_limit!r}")
+    if not isinstance(iterations, int) or not 1 <= iterations <= 20:
+        raise ValueError(f"iterations = {iterations!r}; valid range is integers [1, 20]")
+    pat = pat / np.max(np.abs(pat))
+    lo, hi = low, high
+    trace = []
+    for _ in range(iterations):
+        mid = 0.5 * (lo + hi)
+        slipped, mean = _slips(pat, mid, hold, threshold, torque_limit)
+        trace.append((mid, float(mean.max())))
+        lo, hi = (lo, mid) if slipped else (mid, hi)
+    measured = 0.5 * (lo + hi)
+    model = load("omni3")
+    hy = hybrid_from_model(model)
     friction = float(model.geom_friction[model.geom("floor").id, 0])
-    predicted = predicted_slip_torque(hy, friction)
+    predicted = predicted_slip_torque(hy, pat, friction)
     rows: list[Row] = [
-        ("physics slip-onset torque", measured, "N·m", math.inf, "report"),
+        ("physics slip-onset torque", measured, "N·m", math.inf,
+         f"report (± {(high - low) / 2 ** (iterations + 1):.3g})"),
         ("predicted slip-onset torque", predicted, "N·m", math.inf, "report"),
-        ("slip-onset torque error, % of physics",
-         100 * abs(predicted - measured) / measured if over.size else math.inf, "%",
-         SLIP_PCT, "requirement (issue 16)")]
-    phys = _relative(pose, start)
-    series = {"t": np.arange(n + 1) * dt, "torque": np.concatenate([[0.0], tau]),
-              "slip_speed": slip, "physics_pose": phys, "physics_twist": tw}
-    return ScenarioResult("slip onset (pure rotation)", rows, series)
+        ("slip-onset torque error, % of physics", 100 * abs(predicted - measured) / measured,
+         "%", SLIP_PCT, "requirement (issue 16)")]
+    arr = np.asarray(trace)
+    series = {"scale": arr[:, 0], "mean_slip_speed": arr[:, 1]}
+    return ScenarioResult(f"slip onset {tuple(float(x) for x in pat)}", rows, series)
 
 
 def all_scenarios(speed: float = 0.3, yaw_rate: float = 1.0) -> list[ScenarioResult]:
