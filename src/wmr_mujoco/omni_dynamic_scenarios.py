@@ -29,8 +29,7 @@ from wmr_mujoco.adapters import base_pose, body_twist
 from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.loading import load
-from wmr_mujoco.omni_hybrid_model import (WHEELS, drive_from_model, hybrid_from_model,
-                                          roller_rates)
+from wmr_mujoco.omni_hybrid_model import WHEELS, drive_from_model, hybrid_from_model, roller_rates
 from wmr_mujoco.simulation import check_healthy
 
 #: Targets of issue 16 (requirements).
@@ -130,13 +129,20 @@ def _kinematic_pose(twist: np.ndarray, dt: float) -> np.ndarray:
     return pose
 
 
-def _path(pose: np.ndarray) -> float:
-    return float(np.sum(np.linalg.norm(np.diff(pose[:, :2], axis=0), axis=1)))
+def _path(pose: np.ndarray, distance: float) -> float:
+    """Path of a point at radius L on the platform: ``Σ √(|Δp|² + (L Δψ)²)``.
+
+    For a translation this is the centre's path; for a pure rotation (centre at rest) it
+    is the arc the wheels' centres travel, so "% of path" stays defined.
+    """
+    step = np.diff(pose, axis=0)
+    return float(np.sum(np.sqrt(np.sum(step[:, :2] ** 2, axis=1)
+                                + (distance * step[:, 2]) ** 2)))
 
 
 def _pose_rows(prefix: str, ref: np.ndarray, other: np.ndarray, path_pct: float,
-               heading_deg: float, basis: str) -> list[Row]:
-    path = max(_path(ref), 1e-9)
+               heading_deg: float, basis: str, distance: float) -> list[Row]:
+    path = max(_path(ref, distance), 1e-9)
     dist = np.linalg.norm(other[:, :2] - ref[:, :2], axis=1)
     head = np.degrees(np.abs(other[:, 2] - ref[:, 2]))
     rows: list[Row] = [
@@ -157,12 +163,14 @@ def _twist_rows(prefix: str, ref: np.ndarray, other: np.ndarray, pct: float,
                 distance: float) -> list[Row]:
     """Max and RMS error of u, v (m/s) and r (rad/s), each also as % of its scale.
 
-    Scale of u and v: the run's peak planar speed; of r: its peak |r|, or peak speed / L
-    when the run does not turn (a yaw error then measured as the wheel-speed it causes).
+    Scales: u and v: ``max(peak planar speed, L · peak |r|)``; r: ``max(peak |r|, peak
+    speed / L)``: a component that stays zero is judged against the speed the run's
+    motion gives the wheels (L · r is the rim speed of pure rotation).
     """
     speed = float(np.max(np.linalg.norm(ref[:, :2], axis=1)))
     peak_r = float(np.max(np.abs(ref[:, 2])))
-    scales = (speed, speed, peak_r if peak_r > 1e-3 else max(speed, 1e-9) / distance)
+    lin = max(speed, distance * peak_r)
+    scales = (lin, lin, lin / distance)
     rows: list[Row] = []
     for j, (name, unit) in enumerate((("u", "m/s"), ("v", "m/s"), ("r", "rad/s"))):
         err = np.abs(other[:, j] - ref[:, j])
@@ -208,9 +216,10 @@ def step_command(twist: tuple[float, float, float], duration: float = 2.0,
     kin_twist = np.vstack([nu0, np.tile(nu_cmd, (n, 1))])
     kin = _kinematic_pose(kin_twist, dt)
     basis = "requirement (issue 16)"
-    rows = (_pose_rows("dynamic", phys, run.pose, STEP_PATH_PCT, STEP_HEADING_DEG, basis)
+    rows = (_pose_rows("dynamic", phys, run.pose, STEP_PATH_PCT, STEP_HEADING_DEG, basis,
+                       hy.distance)
             + _twist_rows("dynamic", tw, run.twist, math.inf, hy.distance)
-            + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report"))
+            + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report", hy.distance))
     return ScenarioResult(name or f"step {tuple(nu_cmd)}", rows,
                           _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
                                   dynamic=(run.pose, run.twist)))
@@ -245,8 +254,9 @@ def torque_input(torques: tuple[float, float, float], duration: float = 2.0,
     kin = _kinematic_pose(kin_twist, dt)
     basis = "requirement (issue 16)"
     rows = (_twist_rows("dynamic", tw, run.twist, TORQUE_COMPONENT_PCT, hy.distance)
-            + _pose_rows("dynamic", phys, run.pose, TORQUE_PATH_PCT, math.inf, basis)
-            + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report"))
+            + _pose_rows("dynamic", phys, run.pose, TORQUE_PATH_PCT, math.inf, basis,
+                         hy.distance)
+            + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report", hy.distance))
     return ScenarioResult(name or f"torque {tuple(tau)}", rows,
                           _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
                                   dynamic=(run.pose, run.twist)))
@@ -254,8 +264,11 @@ def torque_input(torques: tuple[float, float, float], duration: float = 2.0,
 
 def _coast_figures(pose: np.ndarray, twist: np.ndarray, energy: np.ndarray, span: float
                    ) -> tuple[float, float, float]:
-    """Yaw-rate decay (rad/s²), turn rate of the world velocity direction (rad/s), energy
-    lost per second (W), from the first and last samples."""
+    """Yaw-rate decay (rad/s²), velocity-direction turn rate (rad/s), energy loss (W).
+
+    From the first and last samples: the turn rate is that of the world velocity
+    direction.
+    """
     c, s = np.cos(pose[:, 2]), np.sin(pose[:, 2])
     vx = c * twist[:, 0] - s * twist[:, 1]
     vy = s * twist[:, 0] + c * twist[:, 1]
@@ -362,8 +375,11 @@ def predicted_slip_torque(hy: oh.OmniHybrid, pattern: np.ndarray, friction: floa
 
 def _slips(pattern: np.ndarray, scale: float, hold: float, threshold: float,
            torque_limit: float) -> tuple[bool, np.ndarray]:
-    """Apply ``scale · pattern`` from rest for ``hold`` s; True if the mean contact slip
-    speed of any wheel over the second half of the hold exceeds ``threshold``."""
+    """Apply ``scale · pattern`` from rest for ``hold`` s: does a wheel slip?
+
+    True if the mean contact slip speed of any wheel over the second half of the hold
+    exceeds ``threshold``; also returns those means.
+    """
     model, data = _settled("torque")
     for w in WHEELS:
         act = model.actuator(w).id
@@ -385,8 +401,9 @@ def _slips(pattern: np.ndarray, scale: float, hold: float, threshold: float,
 def slip_onset(pattern: tuple[float, float, float] = (0.0, -1.0, 1.0), hold: float = 0.12,
                threshold: float = 0.01, torque_limit: float = 3.0, low: float = 0.3,
                high: float = 2.0, iterations: int = 7) -> ScenarioResult:
-    """Torque scale ``s`` of ``τ = s · pattern`` (default: a push along x) at which a
-    wheel starts to slip, found by bisection on constant-torque holds from rest.
+    """Torque at which a wheel starts to slip, by bisection on constant-torque holds.
+
+    Torques ``τ = s · pattern`` (default: a push along x), from rest; the result is s.
 
     A hold of ``hold`` seconds keeps the robot slow (the hand-over impacts of a fast
     robot modulate the normal loads and would make slip a dynamic, not a traction,

@@ -27,8 +27,28 @@ def _inertia_about(model: mujoco.MjModel, data: mujoco.MjData, bodies: list[int]
     return frame.T @ total @ frame
 
 
-def hybrid_from_model(model: mujoco.MjModel) -> OmniHybrid:
+def static_penetration(model: mujoco.MjModel, settle: float = 1.0) -> float:
+    """Mean penetration ``δ = −dist`` of the roller contacts of the robot at rest, m.
+
+    A static property of the soft contact (solref/solimp under the robot's weight),
+    measured once at rest: no motion, nothing taken from the runs it is used to predict.
+    """
+    data = mujoco.MjData(model)
+    for _ in range(round(settle / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+    mujoco.mj_forward(model, data)
+    floor = model.geom("floor").id
+    dist = [c.dist for c in data.contact[:data.ncon] if floor in (c.geom1, c.geom2)]
+    if not dist:
+        raise ValueError("the robot does not touch the floor after settling")
+    return float(max(0.0, -np.mean(dist)))
+
+
+def hybrid_from_model(model: mujoco.MjModel, compliant: bool = True) -> OmniHybrid:
     """:class:`OmniHybrid` of a compiled omni3 model (at its reference pose).
+
+    With ``compliant`` the hand-over loss of the soft contact uses the static
+    penetration :func:`static_penetration`; without, contacts are rigid.
 
     Raises:
         ValueError: the model has no wheel joints or rollers that are ellipsoids.
@@ -51,8 +71,9 @@ def hybrid_from_model(model: mujoco.MjModel) -> OmniHybrid:
         x, y, z = model.body_pos[c]
         angles.append(np.arctan2(x, z))
         offsets.append(y)
+        ellipsoid = mujoco.mjtGeom.mjGEOM_ELLIPSOID
         geoms = [g for g in range(model.ngeom) if model.geom_bodyid[g] == c
-                 and model.geom_conaffinity[g] and model.geom_type[g] == mujoco.mjtGeom.mjGEOM_ELLIPSOID]
+                 and model.geom_conaffinity[g] and model.geom_type[g] == ellipsoid]
         if len(geoms) != 1:
             raise ValueError(f"roller body {model.body(c).name!r} has {len(geoms)} ellipsoid "
                              f"colliders; the hybrid model needs exactly one")
@@ -76,7 +97,8 @@ def hybrid_from_model(model: mujoco.MjModel) -> OmniHybrid:
         distance=float(np.mean(np.linalg.norm(wheel_pos[:, :2], axis=1))),
         rollers=rollers,
         wheel_angles=np.arctan2(wheel_pos[:, 1], wheel_pos[:, 0]),
-        gravity=float(-model.opt.gravity[2]))
+        gravity=float(-model.opt.gravity[2]),
+        penetration=static_penetration(model) if compliant else 0.0)
 
 
 def drive_from_model(model: mujoco.MjModel, mode: str) -> Drive:

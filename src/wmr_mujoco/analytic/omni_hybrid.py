@@ -149,6 +149,9 @@ class OmniHybrid:
         rollers: roller geometry (same for every wheel).
         wheel_angles: α_i of the wheels, rad.
         gravity: g, m/s².
+        penetration: δ, static penetration of a loaded contact (0 for rigid contacts), m.
+            A compliant contact stores ``½ N δ`` (N = M g / 3); a hand-over moves the load
+            to an unloaded contact and the stored energy is dissipated (see the docs).
     """
 
     mass: float
@@ -162,6 +165,7 @@ class OmniHybrid:
     wheel_angles: np.ndarray = field(
         default_factory=lambda: 2.0 * np.pi * np.arange(3) / 3.0)
     gravity: float = 9.81
+    penetration: float = 0.0
 
     def __post_init__(self) -> None:
         positive("mass", self.mass)
@@ -169,7 +173,7 @@ class OmniHybrid:
         positive("radius", self.radius)
         positive("distance", self.distance)
         positive("gravity", self.gravity)
-        for name in ("wheel_armature", "roller_axial"):
+        for name in ("wheel_armature", "roller_axial", "penetration"):
             if _finite(name, getattr(self, name)) < 0:
                 raise ValueError(f"{name} = {getattr(self, name)!r}; valid range is [0, inf)")
         inertia = as_array("inertia", self.inertia, (3, 3))
@@ -272,9 +276,10 @@ class OmniHybrid:
         return Mq
 
     def constraint_rows(self, modes: tuple[int, ...], thetas: np.ndarray) -> np.ndarray:
-        """A (9×12): for each wheel, contact velocity along t_i, ẑ and a_i (roller)::
+        """Constraint rows A (9×12) of mode σ: contact velocity along t_i, ẑ and a_i.
 
-            t·(V + Ω×p) − R θ̇ = 0,   ẑ·(V + Ω×p) − x_c θ̇ = 0,   a·(V + Ω×p) − ρ β̇ = 0
+        ``t·(V + Ω×p) − R θ̇ = 0``, ``ẑ·(V + Ω×p) − x_c θ̇ = 0``,
+        ``a·(V + Ω×p) − ρ β̇ = 0`` (the roller takes the slide along the axle).
         """
         A = np.zeros((9, 12))
         g = self.rollers
@@ -321,42 +326,82 @@ class OmniHybrid:
         q_plus = q_minus - Minv_At @ impulse
         return q_plus, float(0.5 * gap @ impulse)
 
-    def planar_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
-                      thetas: np.ndarray, spins: np.ndarray) -> tuple[np.ndarray, float]:
-        """Switch from mode ``old`` to ``new`` in the planar model: ``(ν⁺, ΔT)``.
+    def inplane_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
+                       thetas: np.ndarray, spins: np.ndarray) -> np.ndarray:
+        """Projection of ``w = (ν, θ̇, β̇)`` onto ``θ̇ = H_new ν, β̇ = K_new ν``.
 
-        1. In-plane projection in the metric ``blockdiag(P, I_w 1, I_r 1)`` of
-           ``w = (ν, θ̇, β̇)`` onto ``θ̇ = H_new ν, β̇ = K_new ν``; the pre-impact
-           ``θ̇ = H_old ν`` and ``β̇`` = the contacting rollers' spins ``spins``.
-        2. The vertical impulse ``Λ_z,i`` of the full impact (:meth:`impact`) acts on
-           wheel i's spin through the contact ``x_c`` ahead of the axle: the
-           generalised impulse ``x_c Λ_z,i`` on ``θ_i``, passed to the platform through
-           ``θ̇ = H_new ν``: ``Δν = M_red⁻¹ H_newᵀ (x_c Λ_z)`` (q̇⁺ = q̇⁻ − 𝕄⁻¹Aᵀ Λ and the z-row has −x_c in the θ̇ column).
+        Metric ``blockdiag(P, I_w 1, I_r 1)``; before: ``θ̇ = H_old ν`` and ``β̇`` = the
+        contacting rollers' spins ``spins``. Returns ``ν⁺``.
         """
         H_old, H_new = self.jacobian(old), self.jacobian(new)
         ks, _ = self.roller_rows(new, thetas)
-        P = np.diag([self.mass, self.mass, self.inertia[2, 2]])
         Mw = np.zeros((9, 9))
-        Mw[:3, :3] = P
+        Mw[:3, :3] = np.diag([self.mass, self.mass, self.inertia[2, 2]])
         Mw[3:6, 3:6] = self.wheel_inertia * np.eye(3)
         Mw[6:, 6:] = self.roller_axial * np.eye(3)
         w = np.concatenate([nu, H_old @ nu, spins])
         A = np.hstack([np.vstack([H_new, ks]), -np.eye(6)])
         Minv_At = np.linalg.solve(Mw, A.T)
-        gap = A @ w
-        lam = np.linalg.solve(A @ Minv_At, gap)
-        nu_plus = (w - Minv_At @ lam)[:3]
-        # Vertical impulses of the full rigid-body impact, as wheel-spin impulses.
+        lam = np.linalg.solve(A @ Minv_At, A @ w)
+        return (w - Minv_At @ lam)[:3]
+
+    def vertical_impulses(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
+                          thetas: np.ndarray, spins: np.ndarray) -> np.ndarray:
+        """Generalised impulses ``x_c Λ_z,i`` on the wheel spins of the full impact.
+
+        ``Λ`` from :meth:`impact` on the lifted velocity; the z-row of wheel i has
+        ``−x_c`` in its θ̇ column, so ``q̇⁺ = q̇⁻ − 𝕄⁻¹AᵀΛ`` gives θ_i the impulse
+        ``x_c Λ_z,i``.
+        """
         q = self.lift(nu, old, thetas, roller_rates=spins)
-        Mq = self.full_mass()
-        Af = self.constraint_rows(new, thetas)
-        impulse = np.linalg.solve(Af @ np.linalg.solve(Mq, Af.T), Af @ q)
+        A = self.constraint_rows(new, thetas)
+        impulse = np.linalg.solve(A @ np.linalg.solve(self.full_mass(), A.T), A @ q)
         g = self.rollers
         xc = np.array([g.contact_ahead(float(g.phases(float(th))[m]))
                        for m, th in zip(new, thetas, strict=True)])
-        J = xc * impulse[1::3]
-        m_red = self.planar_mass(new, thetas)
-        nu_plus = nu_plus + np.linalg.solve(m_red, H_new.T @ J)
+        return xc * impulse[1::3]
+
+    def remove_energy(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
+                      wheel: int, energy: float) -> np.ndarray:
+        """Take ``energy`` out of wheel ``wheel``'s rolling by an impulse J along ``H_i``.
+
+        ``T(ν − M⁻¹H_iᵀJ) = T − s J + ½ c J²`` with ``s = H_i ν``, ``c = H_i M⁻¹ H_iᵀ``;
+        J is the root of ``½ c J² − s J + ΔE = 0`` nearer zero (``s/c``, the wheel's
+        share brought to rest, if ΔE exceeds it).
+        """
+        h = self.jacobian(modes)[wheel]
+        m_red = self.planar_mass(modes, thetas)
+        rate = float(h @ nu)
+        c = float(h @ np.linalg.solve(m_red, h))
+        disc = rate * rate - 2.0 * c * energy
+        j = (rate - math.copysign(math.sqrt(disc), rate)) / c if disc > 0 else rate / c
+        return nu - np.linalg.solve(m_red, h * j)
+
+    @property
+    def handover_dissipation(self) -> float:
+        """``½ N δ`` with ``N = M g / 3``: the loaded contact's stored energy, J."""
+        return 0.5 * self.mass * self.gravity / 3.0 * self.penetration
+
+    def planar_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
+                      thetas: np.ndarray, spins: np.ndarray) -> tuple[np.ndarray, float]:
+        """Switch from mode ``old`` to ``new`` in the planar model: ``(ν⁺, ΔT)``.
+
+        1. :meth:`inplane_impact` (row lever L ± e, entering roller spins);
+        2. the vertical impulses of the full rigid impact on the wheel spins
+           (:meth:`vertical_impulses`): ``Δν = M_red⁻¹ H_newᵀ (x_c Λ_z)``;
+        3. compliant contacts: :attr:`handover_dissipation` per switching wheel
+           (:meth:`remove_energy`).
+        """
+        nu_plus = self.inplane_impact(nu, old, new, thetas, spins)
+        J = self.vertical_impulses(nu, old, new, thetas, spins)
+        H_new = self.jacobian(new)
+        nu_plus = nu_plus + np.linalg.solve(self.planar_mass(new, thetas), H_new.T @ J)
+        if self.penetration > 0:
+            for i in range(3):
+                if new[i] != old[i]:
+                    nu_plus = self.remove_energy(nu_plus, new, thetas, i,
+                                                 self.handover_dissipation)
+        ks, _ = self.roller_rows(new, thetas)
         lost = (self.kinetic_energy(nu, old, thetas) + 0.5 * self.roller_axial * (
             spins @ spins - (ks @ nu) @ (ks @ nu)) - self.kinetic_energy(nu_plus, new, thetas))
         return nu_plus, float(lost)
@@ -394,7 +439,9 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
         drive: actuation law.
         inputs: (N, 3) wheel inputs per output step (rates, rad/s, or torques, N·m).
         dt: output step, s; each is split into ``substeps`` RK4 steps.
-        pose0, twist0, thetas0: initial (X, Y, ψ), (u, v, r) and wheel angles.
+        pose0: initial (X, Y, ψ).
+        twist0: initial (u, v, r).
+        thetas0: initial wheel angles, rad.
         roller_rates0: (3, n_rollers) spins of all rollers (zero if None).
         substeps: RK4 steps per output step.
         impacts: apply the impact map at switches (False: mode switches change H only,
