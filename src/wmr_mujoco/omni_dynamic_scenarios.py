@@ -375,7 +375,7 @@ def predicted_slip_torque(hy: oh.OmniHybrid, pattern: np.ndarray, friction: floa
 
 def _slips(pattern: np.ndarray, scale: float, hold: float, threshold: float,
            torque_limit: float) -> tuple[bool, np.ndarray]:
-    """Apply ``scale · pattern`` from rest for ``hold`` s: does a wheel slip?
+    """Apply ``scale · pattern`` from rest for ``hold`` s and report whether a wheel slips.
 
     True if the mean contact slip speed of any wheel over the second half of the hold
     exceeds ``threshold``; also returns those means.
