@@ -320,11 +320,21 @@ class OmniHybrid:
         """Plastic impact onto mode σ's constraints: ``(q̇⁺, ΔT)``, ΔT ≥ 0 the energy lost."""
         Mq = self.full_mass()
         A = self.constraint_rows(modes, thetas)
-        Minv_At = np.linalg.solve(Mq, A.T)
-        gap = A @ q_minus
-        impulse = np.linalg.solve(A @ Minv_At, gap)
+        cols, rows = self._massive(A)
+        Minv_At = np.zeros((12, rows.size))
+        Minv_At[cols] = np.linalg.solve(Mq[np.ix_(cols, cols)], A[np.ix_(rows, cols)].T)
+        gap = A[rows] @ q_minus
+        impulse = np.linalg.solve(A[rows] @ Minv_At, gap)
         q_plus = q_minus - Minv_At @ impulse
+        if cols.size < 12:  # massless rollers follow their constraint
+            q_plus[9:] = self.lift(q_plus[[0, 1, 5]], modes, thetas)[9:]
         return q_plus, float(0.5 * gap @ impulse)
+
+    def _massive(self, A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Velocity columns with inertia and the constraint rows acting on them."""
+        if self.roller_axial > 0.0:
+            return np.arange(12), np.arange(A.shape[0])
+        return np.arange(9), np.array([r for r in range(A.shape[0]) if r % 3 != 2])
 
     def inplane_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
                        thetas: np.ndarray, spins: np.ndarray) -> np.ndarray:
@@ -341,6 +351,8 @@ class OmniHybrid:
         Mw[6:, 6:] = self.roller_axial * np.eye(3)
         w = np.concatenate([nu, H_old @ nu, spins])
         A = np.hstack([np.vstack([H_new, ks]), -np.eye(6)])
+        if self.roller_axial == 0.0:  # massless rollers: no spin to project
+            Mw, w, A = Mw[:6, :6], w[:6], A[:3, :6]
         Minv_At = np.linalg.solve(Mw, A.T)
         lam = np.linalg.solve(A @ Minv_At, A @ w)
         return (w - Minv_At @ lam)[:3]
@@ -355,11 +367,15 @@ class OmniHybrid:
         """
         q = self.lift(nu, old, thetas, roller_rates=spins)
         A = self.constraint_rows(new, thetas)
-        impulse = np.linalg.solve(A @ np.linalg.solve(self.full_mass(), A.T), A @ q)
+        cols, rows = self._massive(A)
+        Ar = A[np.ix_(rows, cols)]
+        impulse = np.linalg.solve(Ar @ np.linalg.solve(self.full_mass()[np.ix_(cols, cols)],
+                                                        Ar.T), Ar @ q[cols])
         g = self.rollers
         xc = np.array([g.contact_ahead(float(g.phases(float(th))[m]))
                        for m, th in zip(new, thetas, strict=True)])
-        return xc * impulse[1::3]
+        step = 3 if cols.size == 12 else 2
+        return xc * impulse[1::step]
 
     def remove_energy(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
                       wheel: int, energy: float) -> np.ndarray:
