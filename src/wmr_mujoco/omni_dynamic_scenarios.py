@@ -77,8 +77,22 @@ def _duration(value: float) -> float:
     return float(value)
 
 
-def _settled(mode: str) -> tuple[mujoco.MjModel, mujoco.MjData]:
+def _settled(mode: str, contact_timeconst: float | None = None
+             ) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    """omni3 in ``mode``, settled on the floor.
+
+    ``contact_timeconst`` (optional) stiffens the roller contacts: their solref time
+    constant, with the timestep set to half of it (MuJoCo needs ≥ 2 steps per constant).
+    """
     model = load("omni3")
+    if contact_timeconst is not None:
+        if not math.isfinite(contact_timeconst) or not 0 < contact_timeconst <= 0.1:
+            raise ValueError(f"contact_timeconst = {contact_timeconst!r}; valid range is "
+                             f"(0, 0.1] s")
+        rollers = [g for g in range(model.ngeom)
+                   if model.geom_conaffinity[g] and model.geom_bodyid[g] != 0]
+        model.geom_solref[rollers, 0] = contact_timeconst
+        model.opt.timestep = contact_timeconst / 2.0
     set_actuation_mode(model, mode)
     data = mujoco.MjData(model)
     for _ in range(round(SETTLE / model.opt.timestep)):
@@ -117,6 +131,11 @@ def _relative(pose: np.ndarray, start: np.ndarray) -> np.ndarray:
     heading = np.angle(np.exp(1j * (pose[:, 2] - start[2])))
     return np.column_stack([c * d[:, 0] + s * d[:, 1], -s * d[:, 0] + c * d[:, 1],
                             np.unwrap(heading)])
+
+
+def _substeps(dt: float) -> int:
+    """RK4 steps per output step: at most 1 ms each (the servo's time constant is ~4 ms)."""
+    return max(1, math.ceil(dt / 1e-3 - 1e-9))
 
 
 def _kinematic_pose(twist: np.ndarray, dt: float) -> np.ndarray:
@@ -278,12 +297,15 @@ def _coast_figures(pose: np.ndarray, twist: np.ndarray, energy: np.ndarray, span
 
 
 def coasting(twist: tuple[float, float, float] = (0.3, 0.0, 1.0), drive_time: float = 1.5,
-             duration: float = 3.0, impacts: bool = True) -> ScenarioResult:
+             duration: float = 3.0, impacts: bool = True,
+             contact_timeconst: float | None = None) -> ScenarioResult:
     """Drive at ``twist`` (0.5 s ramp), then motors off (torque mode, τ = 0) and coast.
 
     Physics and hybrid model start the coast from the same measured state (twist, wheel
     angles, roller spins). Energy: ``½ νᵀ M(σ, θ) ν`` of the hybrid model's planar
     mass matrix, evaluated on both. Kinematic prediction: the twist at motor-off, held.
+    ``contact_timeconst`` stiffens the contacts (see :func:`_settled`), to check the
+    rigid-limit impact map.
 
     Raises:
         ValueError: non-finite twist or a duration outside (0, 30] s.
@@ -291,7 +313,7 @@ def coasting(twist: tuple[float, float, float] = (0.3, 0.0, 1.0), drive_time: fl
     nu_cmd = _finite_vector("twist", twist, 3)
     duration = _duration(duration)
     drive_time = _duration(drive_time)
-    model, data = _settled("rate")
+    model, data = _settled("rate", contact_timeconst)
     hy = hybrid_from_model(model)
     dt = model.opt.timestep
     H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
@@ -305,7 +327,7 @@ def coasting(twist: tuple[float, float, float] = (0.3, 0.0, 1.0), drive_time: fl
     pose, tw, wheel_rates = _physics(model, data, zeros)
     phys = _relative(pose, start)
     run = oh.simulate(hy, drive_from_model(model, "torque"), zeros, dt, np.zeros(3), nu0,
-                      th0, spins, impacts=impacts)
+                      th0, spins, impacts=impacts, substeps=_substeps(dt))
     # Wheel angles of the physics, integrated from the measured rates, for M(σ, θ).
     th_phys = th0 + np.concatenate([[np.zeros(3)], np.cumsum(
         0.5 * (wheel_rates[1:] + wheel_rates[:-1]) * dt, axis=0)])
