@@ -6,8 +6,13 @@ import pytest
 
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.loading import load
-from wmr_mujoco.omni_hybrid_model import (WHEELS, drive_from_model, hybrid_from_model,
-                                          roller_rates, static_penetration)
+from wmr_mujoco.omni_hybrid_model import (
+    WHEELS,
+    drive_from_model,
+    hybrid_from_model,
+    roller_rates,
+    static_penetration,
+)
 from wmr_mujoco.params import OmniParams
 
 

@@ -281,19 +281,25 @@ def torque_input(torques: tuple[float, float, float], duration: float = 2.0,
                                   dynamic=(run.pose, run.twist)))
 
 
-def _coast_figures(pose: np.ndarray, twist: np.ndarray, energy: np.ndarray, span: float
+def _slope(t: np.ndarray, y: np.ndarray) -> float:
+    """Least-squares slope of ``y(t)`` over the whole run."""
+    return float(np.polyfit(t, y, 1)[0])
+
+
+def _coast_figures(t: np.ndarray, pose: np.ndarray, twist: np.ndarray, energy: np.ndarray
                    ) -> tuple[float, float, float]:
     """Yaw-rate decay (rad/s²), velocity-direction turn rate (rad/s), energy loss (W).
 
-    From the first and last samples: the turn rate is that of the world velocity
-    direction.
+    Each the least-squares slope over the whole coast (the twist and the planar energy
+    ripple within every roller pitch, so two end samples would depend on where in a
+    pitch they fall): ``−dr/dt``, ``dχ/dt`` with χ the world direction of the velocity,
+    ``−dT/dt``.
     """
     c, s = np.cos(pose[:, 2]), np.sin(pose[:, 2])
     vx = c * twist[:, 0] - s * twist[:, 1]
     vy = s * twist[:, 0] + c * twist[:, 1]
     chi = np.unwrap(np.arctan2(vy, vx))
-    return ((twist[0, 2] - twist[-1, 2]) / span, (chi[-1] - chi[0]) / span,
-            (energy[0] - energy[-1]) / span)
+    return -_slope(t, twist[:, 2]), _slope(t, chi), -_slope(t, energy)
 
 
 def coasting(twist: tuple[float, float, float] = (0.3, 0.0, 1.0), drive_time: float = 1.5,
@@ -337,8 +343,8 @@ def coasting(twist: tuple[float, float, float] = (0.3, 0.0, 1.0), drive_time: fl
                       for v, th in zip(run.twist, run.thetas, strict=True)])
     kin_twist = np.tile(nu0, (n + 1, 1))
     kin = _kinematic_pose(kin_twist, dt)
-    fp = _coast_figures(phys, tw, e_phys, duration)
-    fd = _coast_figures(run.pose, run.twist, e_dyn, duration)
+    fp = _coast_figures(run.t, phys, tw, e_phys)
+    fd = _coast_figures(run.t, run.pose, run.twist, e_dyn)
     rows: list[Row] = []
     for name, unit, a, b in (("yaw-rate decay", "rad/s²", fp[0], fd[0]),
                              ("velocity-direction turn rate", "rad/s", fp[1], fd[1]),

@@ -152,6 +152,7 @@ class OmniHybrid:
         penetration: δ, static penetration of a loaded contact (0 for rigid contacts), m.
             A compliant contact stores ``½ N δ`` (N = M g / 3); a hand-over moves the load
             to an unloaded contact and the stored energy is dissipated (see the docs).
+        friction: μ, Coulomb friction of the roller–floor contact (traction limit μ N).
     """
 
     mass: float
@@ -166,6 +167,7 @@ class OmniHybrid:
         default_factory=lambda: 2.0 * np.pi * np.arange(3) / 3.0)
     gravity: float = 9.81
     penetration: float = 0.0
+    friction: float = 1.0
 
     def __post_init__(self) -> None:
         positive("mass", self.mass)
@@ -173,6 +175,7 @@ class OmniHybrid:
         positive("radius", self.radius)
         positive("distance", self.distance)
         positive("gravity", self.gravity)
+        positive("friction", self.friction)
         for name in ("wheel_armature", "roller_axial", "penetration"):
             if _finite(name, getattr(self, name)) < 0:
                 raise ValueError(f"{name} = {getattr(self, name)!r}; valid range is [0, inf)")
@@ -256,6 +259,69 @@ class OmniHybrid:
         roller = self.roller_axial * sum(ks[i] * float(dks[i] @ nu) * rates[i] for i in range(3))
         return np.linalg.solve(self.planar_mass(modes, thetas),
                                H.T @ torques - self.velocity_term(nu) - roller)
+
+    def accelerations(self, nu: np.ndarray, thetas: np.ndarray, modes: tuple[int, ...],
+                      torques: np.ndarray, slipping: np.ndarray, slip_forces: np.ndarray
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(ν̇, θ̈, F_t)`` with some wheels slipping (their traction ``slip_forces`` given).
+
+        Rolling wheels: ``θ̈_i = H_i ν̇`` and ``F_t,i = (τ_i − I_w H_i ν̇)/r``; slipping
+        wheels: ``I_w θ̈_i = τ_i − r F_t,i``. Platform::
+
+            (P + I_r Σ k kᵀ + I_w Σ_rolling H_iᵀH_i) ν̇ = −c(ν) − roller term
+                + Σ_rolling H_iᵀ τ_i + Σ_slipping r H_iᵀ F_t,i
+        """
+        H = self.jacobian(modes)
+        ks, dks = self.roller_rows(modes, thetas)
+        rates = H @ nu
+        roll = ~slipping
+        roller = self.roller_axial * sum(ks[i] * float(dks[i] @ nu) * rates[i] for i in range(3))
+        lhs = (np.diag([self.mass, self.mass, self.inertia[2, 2]])
+               + self.roller_axial * ks.T @ ks + self.wheel_inertia * H[roll].T @ H[roll])
+        rhs = (-self.velocity_term(nu) - roller + H[roll].T @ torques[roll]
+               + self.radius * H[slipping].T @ slip_forces[slipping])
+        nudot = np.linalg.solve(lhs, rhs)
+        thdd = np.where(roll, H @ nudot,
+                        (torques - self.radius * slip_forces) / self.wheel_inertia)
+        forces = np.where(roll, (torques - self.wheel_inertia * H @ nudot) / self.radius,
+                          slip_forces)
+        return nudot, thdd, forces
+
+    def normal_loads(self, forces: np.ndarray, wheel_accels: np.ndarray) -> np.ndarray:
+        """Normal loads N (N) from the robot's balance about its centre of mass.
+
+        Centre of mass at wheel-centre height, contacts r below at ``L ê_i``::
+
+            Σ N_i = M g,   Σ p_i × (N_i ẑ + F_t,i t_i) = Σ I_ax θ̈_i a_i   (horizontal)
+
+        (the spinning wheels' angular momentum; the armature carries none).
+        """
+        e, t = self.radial, self.drive_dirs
+        pos = self.distance * e[:, :2]
+        dL = self.wheel_axial * (wheel_accels[:, None] * -e).sum(axis=0)
+        r = self.radius
+        A = np.vstack([pos[:, 1], -pos[:, 0], np.ones(3)])
+        rhs = np.array([dL[0] - np.sum(r * forces * t[:, 1]),
+                        dL[1] + np.sum(r * forces * t[:, 0]), self.mass * self.gravity])
+        return np.linalg.solve(A, rhs)
+
+    def stick(self, nu: np.ndarray, rates: np.ndarray, modes: tuple[int, ...],
+              thetas: np.ndarray, rolling: np.ndarray) -> np.ndarray:
+        """Plastic re-stick of slipping wheels; returns ``ν⁺``.
+
+        Projects ``(ν, θ̇)`` onto ``θ̇_i = H_i ν`` (the ``rolling`` wheels) in the metric
+        ``blockdiag(P + I_r Σ kkᵀ, I_w 1)``.
+        """
+        H = self.jacobian(modes)
+        ks, _ = self.roller_rows(modes, thetas)
+        Mw = np.zeros((6, 6))
+        Mw[:3, :3] = (np.diag([self.mass, self.mass, self.inertia[2, 2]])
+                      + self.roller_axial * ks.T @ ks)
+        Mw[3:, 3:] = self.wheel_inertia * np.eye(3)
+        A = np.hstack([H, -np.eye(3)])[rolling]
+        w = np.concatenate([nu, rates])
+        Minv_At = np.linalg.solve(Mw, A.T)
+        return (w - Minv_At @ np.linalg.solve(A @ Minv_At, A @ w))[:3]
 
     def kinetic_energy(self, nu: np.ndarray, modes: tuple[int, ...],
                        thetas: np.ndarray) -> float:
@@ -447,8 +513,13 @@ class HybridRun:
 def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
              pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
              roller_rates0: np.ndarray | None = None, substeps: int = 4,
-             impacts: bool = True) -> HybridRun:
+             impacts: bool = True, slip: bool = True) -> HybridRun:
     """Integrate the hybrid model: RK4 on the continuous phase, impact map at switches.
+
+    Wheel modes: rolling, or slipping once ``|F_t,i| > μ N_i`` (then ``F_t,i = μ N_i
+    sign(θ̇_i − H_i ν)``) until the slip speed changes sign, when the wheel sticks again
+    (its rolling constraint restored by a plastic projection). N from
+    :meth:`OmniHybrid.normal_loads` of the previous substep's forces.
 
     Args:
         model: the platform.
@@ -462,12 +533,16 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
         substeps: RK4 steps per output step.
         impacts: apply the impact map at switches (False: mode switches change H only,
             velocity continuous).
+        slip: allow wheels to slip at the traction limit.
 
     Raises:
         ValueError: non-finite or mis-shaped inputs, non-positive dt.
+        FloatingPointError: the integration diverged.
     """
     inputs = as_array("inputs", inputs, (None, 3))
     positive("dt", dt)
+    if not isinstance(substeps, int) or substeps < 1:
+        raise ValueError(f"substeps = {substeps!r}; valid range is integers >= 1")
     pose = as_array("pose0", pose0, (3,)).copy()
     nu = as_array("twist0", twist0, (3,)).copy()
     th = as_array("thetas0", thetas0, (3,)).copy()
@@ -475,32 +550,51 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
     spins = (np.zeros((3, nrol)) if roller_rates0 is None
              else as_array("roller_rates0", roller_rates0, (3, nrol)).copy())
     modes = model.modes(th)
+    thd = model.jacobian(modes) @ nu
+    slipping = np.zeros(3, dtype=bool)
+    slip_dir = np.zeros(3)
+    loads = np.full(3, model.mass * model.gravity / 3.0)
     h = dt / substeps
     n = inputs.shape[0]
     out_pose, out_nu, out_th, out_tau = (np.zeros((n + 1, 3)) for _ in range(4))
     out_pose[0], out_nu[0], out_th[0] = pose, nu, th
     switches: list[tuple[float, int, float]] = []
 
-    def deriv(state: np.ndarray, u_in: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        ps, v, thv = state[:3], state[3:6], state[6:]
-        H = model.jacobian(modes)
-        tau = drive.torques(u_in, H @ v)
+    def deriv(state: np.ndarray, u_in: np.ndarray
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        ps, v, thv, w = state[:3], state[3:6], state[6:9], state[9:]
+        tau = drive.torques(u_in, w)
+        fs = model.friction * loads * slip_dir
+        nudot, thdd, forces = model.accelerations(v, thv, modes, tau, slipping, fs)
         c, s = math.cos(ps[2]), math.sin(ps[2])
         world = np.array([c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]])
-        return np.concatenate([world, model.body_acceleration(v, thv, modes, tau),
-                               H @ v]), tau
+        return np.concatenate([world, nudot, w, thdd]), tau, forces, thdd
 
     for k in range(n):
         u_in = inputs[k]
         tau = np.zeros(3)
         for _ in range(substeps):
-            x = np.concatenate([pose, nu, th])
-            k1, tau = deriv(x, u_in)
-            k2, _ = deriv(x + 0.5 * h * k1, u_in)
-            k3, _ = deriv(x + 0.5 * h * k2, u_in)
-            k4, _ = deriv(x + h * k3, u_in)
+            x = np.concatenate([pose, nu, th, thd])
+            k1, tau, forces, thdd = deriv(x, u_in)
+            k2 = deriv(x + 0.5 * h * k1, u_in)[0]
+            k3 = deriv(x + 0.5 * h * k2, u_in)[0]
+            k4 = deriv(x + h * k3, u_in)[0]
             x = x + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
-            pose, nu, th = x[:3], x[3:6], x[6:]
+            pose, nu, th, thd = x[:3], x[3:6], x[6:9], x[9:]
+            H = model.jacobian(modes)
+            thd = np.where(slipping, thd, H @ nu)  # rolling wheels stay on the constraint
+            if slip:
+                loads = np.maximum(model.normal_loads(forces, thdd), 0.0)
+                limit = model.friction * loads
+                onset = ~slipping & (np.abs(forces) > limit)
+                slip_dir = np.where(onset, np.sign(forces), slip_dir)
+                slipping = slipping | onset
+                stick = slipping & ~onset & (np.sign(thd - H @ nu) != slip_dir)
+                if np.any(stick):
+                    slipping = slipping & ~stick
+                    nu = model.stick(nu, thd, modes, th, ~slipping)
+                    thd = np.where(slipping, thd, model.jacobian(modes) @ nu)
+                slip_dir = np.where(slipping, slip_dir, 0.0)
             new = model.modes(th)
             if new != modes:
                 ks_old, _ = model.roller_rows(modes, th)
@@ -516,6 +610,7 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
                     if new[i] != modes[i]:
                         switches.append(((k + 1) * dt, i, lost))
                 modes = new
+                thd = np.where(slipping, thd, model.jacobian(modes) @ nu)
         if not np.all(np.isfinite(nu)):
             raise FloatingPointError(f"hybrid model diverged at t = {(k + 1) * dt:.3f} s")
         out_pose[k + 1], out_nu[k + 1], out_th[k + 1], out_tau[k] = pose, nu, th, tau
