@@ -10,16 +10,21 @@ prediction and the dynamic (hybrid) prediction, for a plot per scenario.
 * :func:`torque_input` — constant wheel torques. Dynamic model: hybrid model, torque law.
 * :func:`coasting` — drive at (u, 0, r), then motors off: yaw-rate decay, turn rate of the
   velocity direction, kinetic energy lost per second; hybrid model with its impact map.
-* :func:`slip_onset` — torque ramp (a push along x): the torque at which a wheel
-  starts to slip, against ``|F_t| = μ N`` (:func:`traction_and_load`).
+* :func:`slip_onset` — constant-torque holds (a push along x), bisected: the torque at
+  which a wheel starts to slip, against ``|F_t| = μ N`` (:func:`traction_and_load`).
+* :func:`coast_energy_budget` — where a coast's energy goes in the physics (contact
+  work by normal/tangential row, single/double roller contact).
 
-``python -m wmr_mujoco.omni_dynamic_scenarios`` prints every row.
+``python -m wmr_mujoco.omni_dynamic_scenarios`` runs them all (a few minutes), prints the
+tables and pastes them into ``docs/omni-dynamics.md``.
 """
 
 from __future__ import annotations
 
+import argparse
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -28,7 +33,10 @@ from wmr_mujoco.actuation import set_actuation_mode
 from wmr_mujoco.adapters import base_pose, body_twist
 from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.analytic.integrate import integrate
+from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.loading import load
+from wmr_mujoco.markers import replace_between
 from wmr_mujoco.omni_hybrid_model import WHEELS, drive_from_model, hybrid_from_model, roller_rates
 from wmr_mujoco.simulation import check_healthy
 
@@ -131,6 +139,12 @@ def _relative(pose: np.ndarray, start: np.ndarray) -> np.ndarray:
     heading = np.angle(np.exp(1j * (pose[:, 2] - start[2])))
     return np.column_stack([c * d[:, 0] + s * d[:, 1], -s * d[:, 0] + c * d[:, 1],
                             np.unwrap(heading)])
+
+
+def _lagrange(hy: oh.OmniHybrid) -> OmniDynamics:
+    """The reduced Lagrange model (no rows, impacts, rollers or slip) of the same robot."""
+    return OmniDynamics(hy.mass, float(hy.inertia[2, 2]), hy.wheel_inertia,
+                        ok.symmetric_layout(hy.radius, hy.distance))
 
 
 def _substeps(dt: float) -> int:
@@ -271,14 +285,21 @@ def torque_input(torques: tuple[float, float, float], duration: float = 2.0,
     H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
     kin_twist = np.linalg.solve(H, wheel_rates.T).T
     kin = _kinematic_pose(kin_twist, dt)
+    lag = integrate(lambda x, u: _lagrange(hy).state_derivative(x, u),
+                    np.concatenate([np.zeros(3), nu0]), inputs, dt)
+    final = float(np.linalg.norm(lag[-1, 3:] - tw[-1]) / np.linalg.norm(tw[-1]))
     basis = "requirement (issue 16)"
     rows = (_twist_rows("dynamic", tw, run.twist, TORQUE_COMPONENT_PCT, hy.distance)
             + _pose_rows("dynamic", phys, run.pose, TORQUE_PATH_PCT, math.inf, basis,
                          hy.distance)
-            + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report", hy.distance))
+            + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report", hy.distance)
+            + _twist_rows("lagrange", tw, lag[:, 3:], math.inf, hy.distance)
+            + [("lagrange |Δν|/|ν| at the last instant (old metric, mixed units)",
+                100 * final, "%", math.inf, "report: the single-instant figure")])
     return ScenarioResult(name or f"torque {tuple(tau)}", rows,
                           _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
-                                  dynamic=(run.pose, run.twist)))
+                                  dynamic=(run.pose, run.twist),
+                                  lagrange=(lag[:, :3], lag[:, 3:])))
 
 
 def _slope(t: np.ndarray, y: np.ndarray) -> float:
@@ -466,8 +487,7 @@ def slip_onset(pattern: tuple[float, float, float] = (0.0, -1.0, 1.0), hold: flo
     measured = 0.5 * (lo + hi)
     model = load("omni3")
     hy = hybrid_from_model(model)
-    friction = float(model.geom_friction[model.geom("floor").id, 0])
-    predicted = predicted_slip_torque(hy, pat, friction)
+    predicted = predicted_slip_torque(hy, pat, hy.friction)
     rows: list[Row] = [
         ("physics slip-onset torque", measured, "N·m", math.inf,
          f"report (± {(high - low) / 2 ** (iterations + 1):.3g})"),
@@ -477,6 +497,74 @@ def slip_onset(pattern: tuple[float, float, float] = (0.0, -1.0, 1.0), hold: flo
     arr = np.asarray(trace)
     series = {"scale": arr[:, 0], "mean_slip_speed": arr[:, 1]}
     return ScenarioResult(f"slip onset {tuple(float(x) for x in pat)}", rows, series)
+
+
+def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
+                        drive_time: float = 1.5, duration: float = 3.0,
+                        contact_timeconst: float | None = None) -> ScenarioResult:
+    """Where a coast's kinetic energy goes, measured in the physics, step by step.
+
+    The work of every contact constraint force over a step, ``f · J (q̇ₖ + q̇ₖ₊₁)/2 Δt``,
+    split into its normal row (contact damping: the hand-over impacts and the soft
+    contact's own loss) and its tangential rows (slip), and by whether two rollers of
+    that wheel touch at once (the rows' overlap). Their sum is checked against the
+    change of kinetic + potential energy (closure row).
+
+    Raises:
+        ValueError: non-finite twist, bad duration or contact time constant.
+    """
+    nu_cmd = _finite_vector("twist", twist, 3)
+    duration, drive_time = _duration(duration), _duration(drive_time)
+    model, data = _settled("rate", contact_timeconst)
+    model.opt.enableflags |= mujoco.mjtEnableBit.mjENBL_ENERGY
+    hy = hybrid_from_model(model, compliant=False)
+    dt = model.opt.timestep
+    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
+    nd = round(drive_time / dt)
+    ramp = np.clip(np.arange(nd) * dt / 0.5, 0.0, 1.0)[:, None]
+    _physics(model, data, ramp * (H @ nu_cmd))
+    set_actuation_mode(model, "torque")
+    data.ctrl[:] = 0.0
+    mujoco.mj_forward(model, data)
+    energy0 = float(data.energy[0] + data.energy[1])
+    wheel_of = {model.body(w).id: i for i, w in enumerate(WHEELS)}
+    floor = model.geom("floor").id
+    work = {"single normal": 0.0, "single tangential": 0.0, "overlap normal": 0.0,
+            "overlap tangential": 0.0}
+    contact_floor = int(mujoco.mjtConstraint.mjCNSTR_CONTACT_FRICTIONLESS)
+    for _ in range(round(duration / dt)):
+        q0 = data.qvel.copy()
+        mujoco.mj_step(model, data)
+        jv = np.zeros(data.nefc)
+        mujoco.mj_mulJacVec(model, data, jv, 0.5 * (q0 + data.qvel))
+        wheel = np.full(data.ncon, -1)
+        for ci, c in enumerate(data.contact[:data.ncon]):
+            geom = c.geom2 if c.geom1 == floor else c.geom1
+            wheel[ci] = wheel_of.get(int(model.body_parentid[model.geom_bodyid[geom]]), -1)
+        per_wheel = np.bincount(wheel[wheel >= 0], minlength=3)
+        for j in range(data.nefc):
+            ci = int(data.efc_id[j])
+            if data.efc_type[j] < contact_floor or ci >= data.ncon or wheel[ci] < 0:
+                continue
+            normal = j == 0 or data.efc_id[j - 1] != ci or data.efc_type[j - 1] < contact_floor
+            key = ("overlap " if per_wheel[wheel[ci]] >= 2 else "single ") + (
+                "normal" if normal else "tangential")
+            work[key] += float(data.efc_force[j] * jv[j]) * dt
+    check_healthy(model, data)
+    mujoco.mj_forward(model, data)
+    change = float(data.energy[0] + data.energy[1]) - energy0
+    total = sum(work.values())
+    rows: list[Row] = [(f"contact work, {k}, per second", v / duration, "W", math.inf,
+                        "report") for k, v in work.items()]
+    rows += [("contact work, total, per second", total / duration, "W", math.inf, "report"),
+             ("mechanical energy change per second", change / duration, "W", math.inf,
+              "report"),
+             ("closure |work − change| / |change|", abs(total - change) / max(abs(change),
+                                                                               1e-12),
+              "-", math.inf, "report")]
+    tc = "default contacts" if contact_timeconst is None else f"solref {contact_timeconst:g} s"
+    return ScenarioResult(f"coast energy budget {tuple(float(x) for x in nu_cmd)}, {tc}",
+                          rows)
 
 
 def all_scenarios(speed: float = 0.3, yaw_rate: float = 1.0) -> list[ScenarioResult]:
@@ -493,13 +581,37 @@ def all_scenarios(speed: float = 0.3, yaw_rate: float = 1.0) -> list[ScenarioRes
     return out
 
 
-def main() -> None:  # pragma: no cover - prints the tables
-    """Print every scenario's rows."""
-    for res in all_scenarios():
-        print(f"## {res.name}: {'pass' if res.passed else 'FAIL'}")
+DOC = Path(__file__).resolve().parents[2] / "docs" / "omni-dynamics.md"
+
+
+def markdown(results: list[ScenarioResult]) -> str:
+    """One table of every judged and reported row."""
+    lines = ["| scenario | metric | value | unit | target | basis |", "|---|---|---|---|---|---|"]
+    for res in results:
         for metric, value, unit, target, basis in res.rows:
-            tgt = "" if not math.isfinite(target) else f" (target ≤ {target:g})"
-            print(f"  {metric}: {value:.4g} {unit}{tgt} [{basis}]")
+            tgt = f"≤ {target:g}" if math.isfinite(target) else ""
+            mark = "" if not math.isfinite(target) else (" ✓" if abs(value) <= target
+                                                         else " ✗")
+            lines.append(f"| {res.name} | {metric} | {value:.4g}{mark} | {unit} | {tgt} | "
+                         f"{basis} |")
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> None:  # pragma: no cover - a few minutes
+    """Run every scenario and the coasting energy budgets; print and paste the tables."""
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--no-write", action="store_true", help="print only")
+    args = parser.parse_args(argv)
+    results = all_scenarios()
+    budgets = [coast_energy_budget(), coast_energy_budget(contact_timeconst=0.001,
+                                                          duration=2.0),
+               coast_energy_budget((0.3, 0.0, 0.0))]
+    res_md, bud_md = markdown(results), markdown(budgets)
+    print(res_md, "", bud_md, sep="\n")
+    if not args.no_write:
+        replace_between(DOC, "omni dynamics: results", res_md)
+        replace_between(DOC, "omni dynamics: energy budget", bud_md)
+        print(f"wrote {DOC}")
 
 
 if __name__ == "__main__":  # pragma: no cover
