@@ -386,26 +386,15 @@ def traction_and_load(hy: oh.OmniHybrid, torques: np.ndarray
                       ) -> tuple[np.ndarray, np.ndarray]:
     """Traction ``F_t`` (N, along t_i) and normal loads ``N`` (N) under ``torques`` at rest.
 
-    ``ν̇ = (P + I_w HᵀH)⁻¹ Hᵀ τ`` (mean row lever L), ``F_t = (τ − I_w H ν̇)/r``. Loads from
-    the robot's balance about its centre of mass (at wheel-centre height, contacts r
-    below): ``Σ N = M g`` and, horizontally,
-    ``Σ p_i × (N_i ẑ + F_t,i t_i) = Σ I_ax θ̈_i a_i`` (the spinning wheels' angular
-    momentum; the armature is a reflected rotor inertia and carries none in the model).
+    ``ν̇ = (P + I_w HᵀH)⁻¹ Hᵀ τ`` (mean row lever L), ``F_t = (τ − I_w H ν̇)/r``; loads
+    from :meth:`OmniHybrid.normal_loads` (moment balance about the centre of mass).
     """
     H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
     P = np.diag([hy.mass, hy.mass, hy.inertia[2, 2]])
     nudot = np.linalg.solve(P + hy.wheel_inertia * H.T @ H, H.T @ torques)
     thdd = H @ nudot
     force = (torques - hy.wheel_inertia * thdd) / hy.radius
-    e, t = hy.radial, hy.drive_dirs
-    pos = hy.distance * e[:, :2]
-    axle = -e
-    dL = hy.wheel_axial * (thdd[:, None] * axle).sum(axis=0)
-    r = hy.radius
-    A = np.vstack([pos[:, 1], -pos[:, 0], np.ones(3)])
-    rhs = np.array([dL[0] - np.sum(r * force * t[:, 1]),
-                    dL[1] + np.sum(r * force * t[:, 0]), hy.mass * hy.gravity])
-    return force, np.linalg.solve(A, rhs)
+    return force, hy.normal_loads(force, thdd)
 
 
 def predicted_slip_torque(hy: oh.OmniHybrid, pattern: np.ndarray, friction: float) -> float:

@@ -270,3 +270,35 @@ def test_simulate_rejects_non_finite_inputs():
     with pytest.raises(ValueError, match="inputs"):
         simulate(MODEL, Drive("torque", 1.0), bad, 0.004, np.zeros(3), np.zeros(3),
                  np.zeros(3))
+
+
+def test_normal_loads_moment_balance():
+    """A push along x at the ground (r below the centre of mass) pitches the nose up:
+    with ΣF_x the push, N₁ = Mg/3 − 2 r ΣF_x / (3L), N₂ = N₃ = Mg/3 + r ΣF_x / (3L)
+    (moment balance about y with wheel 1 at x = L, wheels 2, 3 at x = −L/2)."""
+    m = dataclasses.replace(MODEL, wheel_axial=1e-12)
+    np.testing.assert_allclose(m.normal_loads(np.zeros(3), np.zeros(3)),
+                               np.full(3, 2.54 * 9.81 / 3), rtol=1e-12)
+    f = 2.0
+    fx = math.sqrt(3) * f
+    loads = m.normal_loads(np.array([0.0, -f, f]), np.zeros(3))
+    w = 2.54 * 9.81 / 3
+    np.testing.assert_allclose(loads, [w - 2 * R_WHEEL * fx / (3 * 0.15),
+                                       w + R_WHEEL * fx / (3 * 0.15),
+                                       w + R_WHEEL * fx / (3 * 0.15)], rtol=1e-9)
+
+
+def test_slip_mode_transmits_coulomb_force():
+    """A slipping wheel passes exactly its μN along its drive direction to the platform:
+    with all wheels slipping, P ν̇ + c = r Hᵀ F (no wheel torque reaches the platform)."""
+    m = dataclasses.replace(MODEL, roller_axial=0.0)
+    modes = (0, 0, 0)
+    nu = np.array([0.2, -0.1, 0.5])
+    F = np.array([3.0, -2.0, 1.0])
+    nudot, thdd, forces = m.accelerations(nu, np.full(3, np.pi), modes, np.full(3, 0.7),
+                                          np.ones(3, dtype=bool), F)
+    P = np.diag([2.54, 2.54, 0.0245])
+    np.testing.assert_allclose(P @ nudot + m.velocity_term(nu),
+                               R_WHEEL * m.jacobian(modes).T @ F, atol=1e-12)
+    np.testing.assert_allclose(thdd, (0.7 - R_WHEEL * F) / m.wheel_inertia)
+    np.testing.assert_allclose(forces, F)
