@@ -548,7 +548,7 @@ def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
     rows += [("contact work, total, per second", total / duration, "W", math.inf, "report"),
              ("mechanical energy change per second", change / duration, "W", math.inf,
               "report"),
-             ("closure |work − change| / |change|", abs(total - change) / max(abs(change),
+             ("closure: (work − change) / change", abs(total - change) / max(abs(change),
                                                                                1e-12),
               "-", math.inf, "report")]
     tc = "default contacts" if contact_timeconst is None else f"solref {contact_timeconst:g} s"

@@ -66,7 +66,7 @@ def hybrid_from_model(model: mujoco.MjModel, compliant: bool = True) -> OmniHybr
     axis = data.xaxis[wheel.id]
     i_axial = float(axis @ _inertia_about(model, data, subtree, data.xanchor[wheel.id],
                                           np.eye(3)) @ axis)
-    angles, offsets, size, friction = [], [], None, 1.0
+    angles, offsets, size, friction, timeconst = [], [], None, 1.0, 0.0
     for c in children:
         x, y, z = model.body_pos[c]
         angles.append(np.arctan2(x, z))
@@ -79,6 +79,7 @@ def hybrid_from_model(model: mujoco.MjModel, compliant: bool = True) -> OmniHybr
                              f"colliders; the hybrid model needs exactly one")
         size = model.geom_size[geoms[0]]
         friction = float(model.geom_friction[geoms[0], 0])  # rollers have priority 1
+        timeconst = float(model.geom_solref[geoms[0], 0])
     if size is None:
         raise ValueError("the wheel has no roller bodies")
     d = float(np.mean(np.hypot(model.body_pos[children, 0], model.body_pos[children, 2])))
@@ -100,7 +101,8 @@ def hybrid_from_model(model: mujoco.MjModel, compliant: bool = True) -> OmniHybr
         wheel_angles=np.arctan2(wheel_pos[:, 1], wheel_pos[:, 0]),
         gravity=float(-model.opt.gravity[2]),
         penetration=static_penetration(model) if compliant else 0.0,
-        friction=friction)
+        friction=friction,
+        contact_timeconst=timeconst if compliant else 0.0)
 
 
 def drive_from_model(model: mujoco.MjModel, mode: str) -> Drive:

@@ -302,3 +302,22 @@ def test_slip_mode_transmits_coulomb_force():
                                R_WHEEL * m.jacobian(modes).T @ F, atol=1e-12)
     np.testing.assert_allclose(thdd, (0.7 - R_WHEEL * F) / m.wheel_inertia)
     np.testing.assert_allclose(forces, F)
+
+
+def test_overlap_impulse_from_window_and_friction():
+    """Both rows touch over Δφ_w = δ/|x_c| of wheel turn; the pair carries μN/4 (Coulomb,
+    fast turning) or the soft contact's (N/g)(2/t_c) e|r| (slow turning) at levers L ± e:
+    yaw impulse 2 e f Δφ_w / |θ̇|. Numbers typed from the geometry above."""
+    delta, tc = 4e-5, 0.008
+    m = dataclasses.replace(MODEL, penetration=delta, contact_timeconst=tc, friction=1.0)
+    th = np.full(3, np.pi + np.pi / 12 + 1e-3)
+    modes = m.modes(th)
+    phi = float(GEOM.phases(th[0])[modes[0]])
+    xc = abs(GEOM.contact_ahead(phi))
+    load = 2.54 * 9.81 / 3
+    for r, rate in ((1.0, 8.0), (0.05, 8.0)):
+        nu = np.array([0.3, 0.0, r])
+        force = min(load / 4, load / 9.81 * 2 / tc * E * r)
+        expect = 2 * E * force * (delta / xc) / rate
+        assert m.overlap_impulse(nu, modes, th, 0, rate) == pytest.approx(expect, rel=1e-9)
+    assert MODEL.overlap_impulse(np.array([0.3, 0.0, 1.0]), modes, th, 0, 8.0) == 0.0

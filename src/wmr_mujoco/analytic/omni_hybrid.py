@@ -153,6 +153,8 @@ class OmniHybrid:
             A compliant contact stores ``½ N δ`` (N = M g / 3); a hand-over moves the load
             to an unloaded contact and the stored energy is dissipated (see the docs).
         friction: μ, Coulomb friction of the roller–floor contact (traction limit μ N).
+        contact_timeconst: t_c of the soft contact (solref), s; its tangential rows damp a
+            slip s with the force ``(N/g)(2/t_c) s`` below the Coulomb limit (0: Coulomb).
     """
 
     mass: float
@@ -168,6 +170,7 @@ class OmniHybrid:
     gravity: float = 9.81
     penetration: float = 0.0
     friction: float = 1.0
+    contact_timeconst: float = 0.0
 
     def __post_init__(self) -> None:
         positive("mass", self.mass)
@@ -459,6 +462,33 @@ class OmniHybrid:
         j = (rate - math.copysign(math.sqrt(disc), rate)) / c if disc > 0 else rate / c
         return nu - np.linalg.solve(m_red, h * j)
 
+    def overlap_impulse(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
+                        wheel: int, rate: float) -> float:
+        """Yaw angular impulse of the two rows' friction while both touch, N·m·s.
+
+        Compliant contacts overlap over ``Δφ_w = δ / |x_c|`` of wheel rotation (the two
+        rollers' heights differ by ``2 |x_c| |φ − φ_s|`` and both touch while that is
+        under δ), i.e. for ``Δt_w = Δφ_w / |θ̇|``. Their levers ``L ± e`` ask rim speeds
+        ``2 e r`` apart; each contact slides at ``e |r|``. The pair carries the Coulomb
+        force ``μ min(N_old, N_new)``, on average ``μ N / 4`` with the load moving
+        linearly across the window, unless the soft contact's tangential damping
+        ``(N/g)(2/t_c) e |r|`` is smaller (slow turning): force ``f``, at levers
+        ``L ± e``: a yaw moment ``2 e f`` against r and no net force. Impulse
+        ``2 e f Δt_w``.
+        """
+        if self.penetration == 0.0 or rate == 0.0:
+            return 0.0
+        g = self.rollers
+        phi = float(g.phases(float(thetas[wheel]))[modes[wheel]])
+        window = self.penetration / max(abs(g.contact_ahead(phi)), 1e-12)
+        e = abs(float(g.offsets[modes[wheel]]))
+        load = self.mass * self.gravity / 3.0
+        force = self.friction * load / 4.0
+        if self.contact_timeconst > 0.0:
+            force = min(force, load / self.gravity * 2.0 / self.contact_timeconst
+                        * e * abs(float(nu[2])))
+        return 2.0 * e * force * window / abs(rate)
+
     @property
     def handover_dissipation(self) -> float:
         """``½ N δ`` with ``N = M g / 3``: the loaded contact's stored energy, J."""
@@ -472,17 +502,25 @@ class OmniHybrid:
         2. the vertical impulses of the full rigid impact on the wheel spins
            (:meth:`vertical_impulses`): ``Δν = M_red⁻¹ H_newᵀ (x_c Λ_z)``;
         3. compliant contacts: :attr:`handover_dissipation` per switching wheel
-           (:meth:`remove_energy`).
+           (:meth:`remove_energy`) and the rows' friction while both touch
+           (:meth:`overlap_impulse`).
         """
         nu_plus = self.inplane_impact(nu, old, new, thetas, spins)
         J = self.vertical_impulses(nu, old, new, thetas, spins)
         H_new = self.jacobian(new)
         nu_plus = nu_plus + np.linalg.solve(self.planar_mass(new, thetas), H_new.T @ J)
         if self.penetration > 0:
+            m_red = self.planar_mass(new, thetas)
             for i in range(3):
                 if new[i] != old[i]:
                     nu_plus = self.remove_energy(nu_plus, new, thetas, i,
                                                  self.handover_dissipation)
+                    rate = float(H_new[i] @ nu_plus)
+                    impulse = self.overlap_impulse(nu_plus, new, thetas, i, rate)
+                    dnu = np.linalg.solve(m_red, np.array([0.0, 0.0, impulse]))
+                    if abs(dnu[2]) >= abs(nu_plus[2]):  # friction stops, never reverses
+                        dnu *= abs(nu_plus[2]) / max(abs(dnu[2]), 1e-300)
+                    nu_plus = nu_plus - math.copysign(1.0, nu_plus[2]) * dnu
         ks, _ = self.roller_rows(new, thetas)
         lost = (self.kinetic_energy(nu, old, thetas) + 0.5 * self.roller_axial * (
             spins @ spins - (ks @ nu) @ (ks @ nu)) - self.kinetic_energy(nu_plus, new, thetas))
