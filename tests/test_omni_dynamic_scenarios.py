@@ -75,3 +75,15 @@ def test_passed_reads_targets():
     res.rows.append(("c", -3.0, "%", 2.0, "r"))
     assert not res.passed
     assert np.isfinite(res.rows[0][1])
+
+
+def test_coasting_energy_and_direction_with_soft_contacts():
+    """Coast after (0.3, 0, 1) with the default contacts: the hybrid model (impacts,
+    compliant hand-over loss, the rows' friction while both touch) gives the energy lost
+    per second and the turn rate of the velocity direction within the 5 % requirement;
+    the Lagrange model would give zero for both."""
+    res = ods.coasting(drive_time=1.0, duration=1.5)
+    assert _row(res, "physics energy lost per second") > 0.005
+    assert _row(res, "dynamic energy lost per second error, % of physics") <= ods.COAST_PCT
+    assert (_row(res, "dynamic velocity-direction turn rate error, % of physics")
+            <= ods.COAST_PCT)
