@@ -70,6 +70,11 @@ class ScenarioResult:
         return all(abs(v) <= tgt for _, v, _, tgt, _ in self.rows if math.isfinite(tgt))
 
 
+def _fmt(values: np.ndarray) -> str:
+    """``(0.3, 0, 1)``: a vector for a scenario name."""
+    return "(" + ", ".join(f"{float(x):g}" for x in values) + ")"
+
+
 def _finite_vector(name: str, value: object, n: int) -> np.ndarray:
     arr = np.asarray(value, dtype=float)
     if arr.shape != (n,):
@@ -253,7 +258,7 @@ def step_command(twist: tuple[float, float, float], duration: float = 2.0,
                        hy.distance)
             + _twist_rows("dynamic", tw, run.twist, math.inf, hy.distance)
             + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report", hy.distance))
-    return ScenarioResult(name or f"step {tuple(nu_cmd)}", rows,
+    return ScenarioResult(name or f"step {_fmt(nu_cmd)}", rows,
                           _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
                                   dynamic=(run.pose, run.twist)))
 
@@ -296,7 +301,7 @@ def torque_input(torques: tuple[float, float, float], duration: float = 2.0,
             + _twist_rows("lagrange", tw, lag[:, 3:], math.inf, hy.distance)
             + [("lagrange |Δν|/|ν| at the last instant (old metric, mixed units)",
                 100 * final, "%", math.inf, "report: the single-instant figure")])
-    return ScenarioResult(name or f"torque {tuple(tau)}", rows,
+    return ScenarioResult(name or f"torque {_fmt(tau)}", rows,
                           _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
                                   dynamic=(run.pose, run.twist),
                                   lagrange=(lag[:, :3], lag[:, 3:])))
@@ -379,7 +384,7 @@ def coasting(twist: tuple[float, float, float] = (0.3, 0.0, 1.0), drive_time: fl
     series = _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
                      dynamic=(run.pose, run.twist))
     series["physics_energy"], series["dynamic_energy"] = e_phys, e_dyn
-    return ScenarioResult(f"coast after {tuple(nu_cmd)}", rows, series)
+    return ScenarioResult(f"coast after {_fmt(nu_cmd)}", rows, series)
 
 
 def traction_and_load(hy: oh.OmniHybrid, torques: np.ndarray
@@ -485,7 +490,7 @@ def slip_onset(pattern: tuple[float, float, float] = (0.0, -1.0, 1.0), hold: flo
          "%", SLIP_PCT, "requirement (issue 16)")]
     arr = np.asarray(trace)
     series = {"scale": arr[:, 0], "mean_slip_speed": arr[:, 1]}
-    return ScenarioResult(f"slip onset {tuple(float(x) for x in pat)}", rows, series)
+    return ScenarioResult(f"slip onset {_fmt(pat)}", rows, series)
 
 
 def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
@@ -552,7 +557,7 @@ def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
                                                                                1e-12),
               "-", math.inf, "report")]
     tc = "default contacts" if contact_timeconst is None else f"solref {contact_timeconst:g} s"
-    return ScenarioResult(f"coast energy budget {tuple(float(x) for x in nu_cmd)}, {tc}",
+    return ScenarioResult(f"coast energy budget {_fmt(nu_cmd)}, {tc}",
                           rows)
 
 
