@@ -188,7 +188,8 @@ def _pose_rows(prefix: str, ref: np.ndarray, other: np.ndarray, path_pct: float,
          path_pct, basis),
         (f"{prefix} position error, RMS, % of path", 100 * math.sqrt(np.mean(dist ** 2)) / path,
          "%", math.inf, "report"),
-        (f"{prefix} heading error, worst", head.max(), "deg", heading_deg, basis),
+        (f"{prefix} heading error, worst", head.max(), "deg", heading_deg,
+         basis if math.isfinite(heading_deg) else "report"),
         (f"{prefix} heading error, RMS", math.sqrt(np.mean(head ** 2)), "deg", math.inf,
          "report"),
         (f"{prefix} final position error, % of path", 100 * dist[-1] / path, "%", math.inf,
@@ -217,7 +218,7 @@ def _twist_rows(prefix: str, ref: np.ndarray, other: np.ndarray, pct: float,
                  (f"{prefix} {name} error, RMS", float(math.sqrt(np.mean(err ** 2))), unit,
                   math.inf, "report"),
                  (f"{prefix} {name} error, worst, % of peak", 100 * float(err.max()) / scale,
-                  "%", pct, "requirement (issue 16)")]
+                  "%", pct, "requirement (issue 16)" if math.isfinite(pct) else "report")]
     return rows
 
 
@@ -299,7 +300,7 @@ def torque_input(torques: tuple[float, float, float], duration: float = 2.0,
                          hy.distance)
             + _pose_rows("kinematic", phys, kin, math.inf, math.inf, "report", hy.distance)
             + _twist_rows("lagrange", tw, lag[:, 3:], math.inf, hy.distance)
-            + [("lagrange |Δν|/|ν| at the last instant (old metric, mixed units)",
+            + [("lagrange norm(Δν) / norm(ν) at the last instant (old metric, mixed units)",
                 100 * final, "%", math.inf, "report: the single-instant figure")])
     return ScenarioResult(name or f"torque {_fmt(tau)}", rows,
                           _series(run.t, physics=(phys, tw), kinematic=(kin, kin_twist),
