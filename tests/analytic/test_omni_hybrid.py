@@ -321,3 +321,26 @@ def test_overlap_impulse_from_window_and_friction():
         expect = 2 * E * force * (delta / xc) / rate
         assert m.overlap_impulse(nu, modes, th, 0, rate) == pytest.approx(expect, rel=1e-9)
     assert MODEL.overlap_impulse(np.array([0.3, 0.0, 1.0]), modes, th, 0, 8.0) == 0.0
+
+
+def test_arc_moment_is_the_weight_potential_gradient():
+    """The normal-load moment −N x_c(φ) on each wheel is −∂V/∂θ_i of the weight's
+    potential V = N Σ R(φ_i) (N = M g / 3): check against a finite difference of V,
+    passed to the platform through Hᵀ."""
+    m = dataclasses.replace(MODEL, roller_axial=0.0)
+    th = np.array([np.pi + 0.1, np.pi - 0.2, np.pi + 0.05])
+    modes = m.modes(th)
+    load = np.full(3, 2.54 * 9.81 / 3)
+    nu, tau, none = np.zeros(3), np.zeros(3), np.zeros(3, dtype=bool)
+    with_arc = m.accelerations(nu, th, modes, tau, none, np.zeros(3), load)[0]
+    grad = np.zeros(3)
+    for i in range(3):
+        d = np.zeros(3)
+        d[i] = 1e-6
+        v_plus = sum(load[k] * GEOM.rolling_radius(float(GEOM.phases((th + d)[k])[modes[k]]))
+                     for k in range(3))
+        v_minus = sum(load[k] * GEOM.rolling_radius(float(GEOM.phases((th - d)[k])[modes[k]]))
+                      for k in range(3))
+        grad[i] = (v_plus - v_minus) / 2e-6
+    expect = np.linalg.solve(m.planar_mass(modes, th), m.jacobian(modes).T @ (-grad))
+    np.testing.assert_allclose(with_arc, expect, atol=1e-6 * np.max(np.abs(expect)))

@@ -264,9 +264,15 @@ class OmniHybrid:
                                H.T @ torques - self.velocity_term(nu) - roller)
 
     def accelerations(self, nu: np.ndarray, thetas: np.ndarray, modes: tuple[int, ...],
-                      torques: np.ndarray, slipping: np.ndarray, slip_forces: np.ndarray
+                      torques: np.ndarray, slipping: np.ndarray, slip_forces: np.ndarray,
+                      loads: np.ndarray | None = None
                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(ν̇, θ̈, F_t)`` with some wheels slipping (their traction ``slip_forces`` given).
+
+        With ``loads`` N, each wheel also feels the moment of its normal force about the
+        axle, ``−N_i x_c(φ_i)`` (the contact is ``x_c`` ahead of the axle): the
+        generalised force of the platform's weight as the wheel rolls over the roller's
+        arc, ``−∂(M g z)/∂θ_i`` with ``z = Σ R(φ_i)/3``.
 
         Rolling wheels: ``θ̈_i = H_i ν̇`` and ``F_t,i = (τ_i − I_w H_i ν̇)/r``; slipping
         wheels: ``I_w θ̈_i = τ_i − r F_t,i``. Platform::
@@ -278,6 +284,11 @@ class OmniHybrid:
         ks, dks = self.roller_rows(modes, thetas)
         rates = H @ nu
         roll = ~slipping
+        if loads is not None:
+            g = self.rollers
+            xc = np.array([g.contact_ahead(float(g.phases(float(th))[m]))
+                           for m, th in zip(modes, thetas, strict=True)])
+            torques = torques - loads * xc
         roller = self.roller_axial * sum(ks[i] * float(dks[i] @ nu) * rates[i] for i in range(3))
         lhs = (np.diag([self.mass, self.mass, self.inertia[2, 2]])
                + self.roller_axial * ks.T @ ks + self.wheel_inertia * H[roll].T @ H[roll])
@@ -551,7 +562,7 @@ class HybridRun:
 def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
              pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
              roller_rates0: np.ndarray | None = None, substeps: int = 4,
-             impacts: bool = True, slip: bool = True) -> HybridRun:
+             impacts: bool = True, slip: bool = True, arc: bool = False) -> HybridRun:
     """Integrate the hybrid model: RK4 on the continuous phase, impact map at switches.
 
     Wheel modes: rolling, or slipping once ``|F_t,i| > μ N_i`` (then ``F_t,i = μ N_i
@@ -572,6 +583,10 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
         impacts: apply the impact map at switches (False: mode switches change H only,
             velocity continuous).
         slip: allow wheels to slip at the traction limit.
+        arc: include the moment of the normal loads about the axles as the wheels roll
+            over the rollers' arcs (:meth:`OmniHybrid.accelerations`). Off by default:
+            with it the torque-combined and coasting figures move in opposite directions
+            (see ``docs/omni-dynamics.md``, "Open").
 
     Raises:
         ValueError: non-finite or mis-shaped inputs, non-positive dt.
@@ -603,7 +618,8 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
         ps, v, thv, w = state[:3], state[3:6], state[6:9], state[9:]
         tau = drive.torques(u_in, w)
         fs = model.friction * loads * slip_dir
-        nudot, thdd, forces = model.accelerations(v, thv, modes, tau, slipping, fs)
+        nudot, thdd, forces = model.accelerations(v, thv, modes, tau, slipping, fs,
+                                                  loads if arc else None)
         c, s = math.cos(ps[2]), math.sin(ps[2])
         world = np.array([c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]])
         return np.concatenate([world, nudot, w, thdd]), tau, forces, thdd
