@@ -26,11 +26,11 @@ lint: $(STAMP)
 
 # Regenerate the checked-in MJCF files from the builders' defaults.
 models: $(STAMP)
-	$(BIN)/python -m wmr_mujoco.export
+	$(BIN)/python -m wmr_mujoco.models.export
 
 # The pictures in models/*/README.md.
 pictures: $(STAMP)
-	$(BIN)/python -m wmr_mujoco.pictures
+	$(BIN)/python -m wmr_mujoco.models.pictures
 
 # The clips in renders/ shown in the README.
 renders: $(STAMP)
@@ -41,14 +41,15 @@ renders: $(STAMP)
 
 # The roller design study and peer comparison in models/omni3/README.md.
 study: $(STAMP)
-	$(BIN)/python -m wmr_mujoco.omni_study
+	$(BIN)/python -m wmr_mujoco.bench.omni_study
 
 bench: $(STAMP)
 	$(BIN)/wmr bench
 
-# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into README.md.
+# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into README.md
+# (a missing report changes nothing; `--only "validation results"` pastes one section).
 readme: $(STAMP)
-	$(BIN)/python -m wmr_mujoco.readme_sync
+	$(BIN)/python -m wmr_mujoco.docs_sync.readme_sync
 
 sysdeps:
 	bash scripts/install-system-deps.sh

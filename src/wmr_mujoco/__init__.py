@@ -1,7 +1,7 @@
 """wmr-mujoco: wheeled mobile robots in MuJoCo, beside their textbook models.
 
 Importing the package does not import MuJoCo: the public names below load lazily, so
-that :mod:`wmr_mujoco.gl_backend` can still choose the OpenGL backend (EGL, else
+that :mod:`wmr_mujoco.render.gl_backend` can still choose the OpenGL backend (EGL, else
 OSMesa) before MuJoCo reads ``MUJOCO_GL``.
 """
 
@@ -19,12 +19,14 @@ os.environ.setdefault("MUJOCO_GL", "egl")
 __version__ = "0.1.0"
 
 _LAZY = {
-    "ROBOTS": "wmr_mujoco.registry",
-    "get_spec": "wmr_mujoco.registry",
-    "load": "wmr_mujoco.loading",
-    "build_scene": "wmr_mujoco.loading",
-    "ActuationMode": "wmr_mujoco.actuation",
-    "set_actuation_mode": "wmr_mujoco.actuation",
+    "ROBOTS": "wmr_mujoco.robots",
+    "RobotSpec": "wmr_mujoco.robots",
+    "get_spec": "wmr_mujoco.robots",
+    "load": "wmr_mujoco.models.loading",
+    "build_scene": "wmr_mujoco.models.loading",
+    "ActuationMode": "wmr_mujoco.models.actuation",
+    "set_actuation_mode": "wmr_mujoco.models.actuation",
+    "ScenarioKind": "wmr_mujoco.validation.scenarios",
 }
 
 __all__ = sorted(_LAZY)

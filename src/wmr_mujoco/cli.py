@@ -17,7 +17,7 @@ RENDERING_COMMANDS = ("render", "bench")
 
 
 def _cmd_list(_: argparse.Namespace) -> int:
-    from wmr_mujoco.registry import ROBOTS
+    from wmr_mujoco.robots import ROBOTS
 
     width = max(map(len, ROBOTS))
     for spec in ROBOTS.values():
@@ -40,9 +40,9 @@ def _cmd_demo(_: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
-    from wmr_mujoco.report import text_table, write_report
-    from wmr_mujoco.scenarios import scenarios_for
-    from wmr_mujoco.validation import run_all
+    from wmr_mujoco.validation.report import text_table, write_report
+    from wmr_mujoco.validation.runner import run_all
+    from wmr_mujoco.validation.scenarios import scenarios_for
 
     scenarios = scenarios_for(args.robots or None)
     results = run_all(scenarios, progress=lambda msg: print(msg, file=sys.stderr, flush=True))
@@ -57,7 +57,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 
 
 def _cmd_render(args: argparse.Namespace) -> int:
-    from wmr_mujoco.video import render_to_file
+    from wmr_mujoco.render.video import render_to_file
 
     path = render_to_file(args.robot, args.out, args.scenario, args.width, args.height,
                           args.fps, args.camera, args.duration)
@@ -73,14 +73,14 @@ def _cmd_view(args: argparse.Namespace) -> int:
               "for an offscreen video instead.", file=sys.stderr)
         return 2
     os.environ["MUJOCO_GL"] = "glfw"
-    from wmr_mujoco.viewer import view
+    from wmr_mujoco.render.viewer import view
 
     view(args.robot, args.scenario)
     return 0
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
-    from wmr_mujoco.bench import main as bench_main
+    from wmr_mujoco.bench.bench import main as bench_main
 
     return bench_main(args)
 
@@ -132,7 +132,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         if args.command in RENDERING_COMMANDS:
-            from wmr_mujoco.gl_backend import select_backend
+            from wmr_mujoco.render.gl_backend import select_backend
 
             select_backend()
         return args.func(args)
@@ -140,8 +140,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"wmr: error: {err}", file=sys.stderr)
         return 2
     except Exception as err:
-        from wmr_mujoco.gl_backend import RenderingUnavailableError
-        from wmr_mujoco.simulation import SimulationDivergedError
+        from wmr_mujoco.render.gl_backend import RenderingUnavailableError
+        from wmr_mujoco.sim.stepping import SimulationDivergedError
 
         if isinstance(err, SimulationDivergedError):
             print(f"wmr: simulation diverged: {err}", file=sys.stderr)

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import dataclasses
-from typing import Any
 
 import mujoco
 
-from wmr_mujoco.actuation import actuation_mode
-from wmr_mujoco.loading import load
-from wmr_mujoco.registry import get_spec
+from wmr_mujoco.models.actuation import actuation_mode
+from wmr_mujoco.models.loading import load
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots import get_spec
 
 _JOINT_TYPES = {int(v): k.removeprefix("mjJNT_").lower()
                 for k, v in mujoco.mjtJoint.__members__.items()}
@@ -17,9 +17,13 @@ _TRN_TYPES = {int(v): k.removeprefix("mjTRN_").lower()
               for k, v in mujoco.mjtTrn.__members__.items()}
 
 
-def flatten_params(params: Any, prefix: str = "") -> dict[str, Any]:
-    """Flatten a nested parameter dataclass into ``{"a.b": value}`` pairs."""
-    out: dict[str, Any] = {}
+def flatten_params(params: RobotParams | object, prefix: str = "") -> dict[str, object]:
+    """Flatten a nested parameter dataclass into ``{"a.b": value}`` pairs.
+
+    Raises:
+        TypeError: ``params`` is not a dataclass instance.
+    """
+    out: dict[str, object] = {}
     for f in dataclasses.fields(params):
         value = getattr(params, f.name)
         if dataclasses.is_dataclass(value):
@@ -37,10 +41,12 @@ def describe(robot: str) -> str:
     """Return the text printed by ``wmr info ROBOT``."""
     spec = get_spec(robot)
     model = load(robot)
-    params = spec.params_type()
     lines = [f"{spec.name}: {spec.description}", f"  scene file: {spec.scene_path}"]
-    lines.append("parameters (SI units, radians):")
-    lines += [f"  {k:<28} {v}" for k, v in flatten_params(params).items()]
+    if spec.params_type is None:
+        lines.append("parameters: none (a model file without a builder)")
+    else:
+        lines.append("parameters (SI units, radians):")
+        lines += [f"  {k:<28} {v}" for k, v in flatten_params(spec.params_type()).items()]
     mass = float(model.body_mass[1:].sum())  # every body but the world
     lines.append(f"total mass: {mass:.4f} kg    degrees of freedom: {model.nv}    "
                  f"timestep: {model.opt.timestep:g} s    integrator: "
@@ -54,9 +60,11 @@ def describe(robot: str) -> str:
         lines.append(f"  {_name(model, mujoco.mjtObj.mjOBJ_JOINT, j):<22} {jtype:<6}"
                      f" body {_name(model, mujoco.mjtObj.mjOBJ_BODY, model.jnt_bodyid[j])}"
                      f"{extra}")
-    if model.nu:
+    if model.nu and spec.build is not None:
         lines.append(f"actuators (mode: {actuation_mode(model).value}; "
                      "switch with wmr_mujoco.set_actuation_mode):")
+    elif model.nu:
+        lines.append("actuators (the model file's own):")
     for a in range(model.nu):
         trn = _TRN_TYPES[int(model.actuator_trntype[a])]
         objtype = (mujoco.mjtObj.mjOBJ_TENDON if trn == "tendon" else mujoco.mjtObj.mjOBJ_JOINT)

@@ -19,6 +19,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from wmr_mujoco.analytic.checks import as_array, positive
+from wmr_mujoco.analytic.integrate import rk4_step
 
 VectorField = Callable[[np.ndarray], np.ndarray]
 
@@ -62,12 +63,9 @@ def flow(field: VectorField, q: np.ndarray, duration: float, steps: int = 200) -
     """Follow ``q̇ = field(q)`` for ``duration`` (negative: backwards) with RK4."""
     q = as_array("q", q, (None,)).copy()
     h = duration / steps
+    no_input = np.zeros(0)
     for _ in range(steps):
-        k1 = field(q)
-        k2 = field(q + 0.5 * h * k1)
-        k3 = field(q + 0.5 * h * k2)
-        k4 = field(q + h * k3)
-        q = q + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+        q = rk4_step(lambda x, _u: np.asarray(field(x)), q, no_input, h)
     return q
 
 

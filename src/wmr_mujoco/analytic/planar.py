@@ -1,0 +1,36 @@
+"""Planar geometry shared by the analytic models and the measurements.
+
+Headings are angles about the world ``z`` axis; a path is a polyline of ``(x, y)`` points.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def wrap_angle(angle: float | np.ndarray) -> float | np.ndarray:
+    """Angle(s) wrapped into ``(-π, π]``: ``arg(exp(i·angle))``."""
+    wrapped = np.angle(np.exp(1j * np.asarray(angle, float)))
+    return float(wrapped) if np.ndim(wrapped) == 0 else wrapped
+
+
+def path_length(xy: np.ndarray) -> float:
+    """Length of the polyline through the rows of ``xy`` (N, 2): ``Σ |p_{k+1} − p_k|``."""
+    return float(cumulative_path(xy)[-1])
+
+
+def cumulative_path(xy: np.ndarray) -> np.ndarray:
+    """Path length from the first point to each point of the polyline (N,), 0 first."""
+    xy = np.asarray(xy, float)
+    steps = np.linalg.norm(np.diff(xy, axis=0), axis=1)
+    return np.concatenate([[0.0], np.cumsum(steps)])
+
+
+def yaw_from_rotation(xmat: np.ndarray) -> float:
+    """Heading ``ψ = atan2(R₁₀, R₀₀)`` of a rotation matrix (3×3, or MuJoCo's flat 9).
+
+    For ``R = R_z(ψ) R_y(θ) R_x(φ)`` the first column is
+    ``(cos ψ cos θ, sin ψ cos θ, −sin θ)``, so the ratio gives ψ for any ``|θ| < π/2``.
+    """
+    m = np.asarray(xmat, float).reshape(3, 3)
+    return float(np.arctan2(m[1, 0], m[0, 0]))

@@ -1,0 +1,1 @@
+"""Benchmarks (``wmr bench``), the omni trials and the omni roller design study."""

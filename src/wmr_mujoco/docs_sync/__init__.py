@@ -1,0 +1,1 @@
+"""Generated sections of Markdown files: markers, and the README's pasted reports."""

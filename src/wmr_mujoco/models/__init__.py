@@ -1,0 +1,1 @@
+"""The robots as MuJoCo models: parameters, builders, files, loading, actuation, export."""

@@ -1,0 +1,207 @@
+"""Pieces shared by every robot builder: root defaults, wheels, actuators, XML export.
+
+Conventions (all robots):
+    * World frame: x forward at the initial pose, y left, z up; floor at z = 0.
+    * Every wheel body has its spin hinge along its local +y axis, so a positive
+      wheel rate θ̇ rolls the wheel forward along its local +x at ``v = R θ̇``.
+    * Geoms use two default classes, ``visual`` (group 2, no contact, no mass) and
+      ``collision`` (group 3); inertia always comes from explicit ``<inertial>``
+      elements so the documented masses are exact.
+    * Actuators carry ``user = [kind, kp, kv, rate_limit]`` so that
+      :func:`wmr_mujoco.models.actuation.set_actuation_mode` can switch a compiled model
+      between servo and torque control without the XML.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from dm_control import mjcf
+from lxml import etree
+
+from wmr_mujoco.models.params import DriveParams, SimParams, WheelParams
+
+#: Actuator ``user[0]`` codes.
+KIND_WHEEL = 0
+KIND_STEER = 1
+#: Number of ``user`` values per actuator.
+NUSER_ACTUATOR = 4
+#: Significant digits written to the checked-in XML.
+XML_PRECISION = 12
+
+WHEEL_RGBA = (0.15, 0.15, 0.17, 1.0)
+MARK_RGBA = (0.95, 0.75, 0.1, 1.0)
+BODY_RGBA = (0.2, 0.45, 0.8, 1.0)
+
+
+def new_root(model: str, sim: SimParams) -> mjcf.RootElement:
+    """Create a robot root with options, sizes and the visual/collision classes.
+
+    Options: implicit-in-velocity integration (``implicitfast``), elliptic friction
+    cones with ``impratio`` (no pyramidal creep), and the Newton solver.
+    """
+    root = mjcf.RootElement(model=model)
+    root.compiler.angle = "radian"
+    root.compiler.autolimits = True
+    root.option.timestep = sim.timestep
+    root.option.integrator = "implicitfast"
+    root.option.cone = "elliptic"
+    root.option.impratio = sim.impratio
+    root.size.nuser_actuator = NUSER_ACTUATOR
+    main = root.default
+    main.joint.damping = 0
+    main.joint.armature = 0
+    main.joint.frictionloss = 0
+    visual = main.add("default", dclass="visual")
+    visual.geom.contype = 0
+    visual.geom.conaffinity = 0
+    visual.geom.group = 2
+    visual.geom.density = 0
+    collision = main.add("default", dclass="collision")
+    collision.geom.group = 3
+    collision.geom.condim = 3
+    collision.geom.priority = 1
+    collision.geom.friction = (sim.friction, 0.005, 0.0001)
+    collision.geom.solref = (sim.contact_timeconst, 1.0)
+    collision.geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
+    return root
+
+
+def box_inertia(mass: float, size: Sequence[float]) -> tuple[float, float, float]:
+    """Principal inertia of a uniform box of full edge lengths ``(a, b, c)``.
+
+    ``I_x = m (b² + c²)/12``, ``I_y = m (a² + c²)/12``, ``I_z = m (a² + b²)/12``.
+    """
+    a, b, c = size
+    return (mass * (b * b + c * c) / 12.0, mass * (a * a + c * c) / 12.0,
+            mass * (a * a + b * b) / 12.0)
+
+
+def add_box_body_geoms(body: mjcf.Element, size: Sequence[float],
+                       pos: Sequence[float] = (0.0, 0.0, 0.0)) -> None:
+    """Add a visual-only box of full edge lengths ``size`` to ``body``."""
+    body.add("geom", dclass="visual", type="box", size=[s / 2.0 for s in size],
+             pos=list(pos), rgba=BODY_RGBA)
+
+
+def add_wheel(parent: mjcf.Element, name: str, wheel: WheelParams,
+              pos: Sequence[float], armature: float = 0.0) -> mjcf.Element:
+    """Add a thin-disc wheel body spinning on a hinge about its local +y axis.
+
+    The collision geom is an ellipsoid with semi-axes ``(R, w/2, R)``: a thin disc with
+    a rounded rim. Against the floor it makes exactly one contact, at its lowest point,
+    which for an upright wheel lies directly below the axle at distance R: the
+    lecture's point contact of a thin disc, with rolling radius R (less half the
+    penetration, a few micrometres). A cylinder would touch at both rim edges and
+    scrub in turns, since the two edges would have to roll at different speeds.
+
+    Args:
+        parent: body the wheel hangs from.
+        name: name of the wheel body and of its hinge.
+        wheel: the disc's parameters.
+        pos: wheel centre in the parent frame.
+        armature: reflected motor inertia on the hinge (driven wheels), kg·m².
+
+    Returns:
+        The wheel body; its hinge joint has the same ``name``.
+
+    """
+    body = parent.add("body", name=name, pos=list(pos))
+    joint = body.add("joint", name=name, type="hinge", axis=(0, 1, 0))
+    if armature:
+        joint.armature = armature
+    add_wheel_geoms(body, name, wheel)
+    return body
+
+
+def add_wheel_geoms(body: mjcf.Element, name: str, wheel: WheelParams) -> None:
+    """Give ``body`` a thin disc's inertia, collision cylinder and visual geoms.
+
+    The disc's axle is the body's y axis.
+    """
+    body.add("inertial", pos=(0, 0, 0), mass=wheel.mass,
+             diaginertia=(wheel.diametral_inertia, wheel.axial_inertia,
+                          wheel.diametral_inertia))
+    half = wheel.width / 2.0
+    body.add("geom", name=f"{name}_collision", dclass="collision", type="ellipsoid",
+             size=(wheel.radius, half, wheel.radius))
+    body.add("geom", dclass="visual", type="cylinder", size=(wheel.radius, half),
+             zaxis=(0, 1, 0), rgba=WHEEL_RGBA)
+    # A radial stripe on each face makes the spin visible in renders.
+    for side in (-1.0, 1.0):
+        body.add("geom", dclass="visual", type="box",
+                 size=(0.08 * wheel.radius, 0.001, 0.45 * wheel.radius),
+                 pos=(0.0, side * (half + 0.001), 0.5 * wheel.radius), rgba=MARK_RGBA)
+
+
+def add_wheel_actuator(root: mjcf.RootElement, name: str, drive: DriveParams,
+                       joint: mjcf.Element | None = None,
+                       tendon: mjcf.Element | None = None) -> mjcf.Element:
+    """Add a wheel velocity servo ``τ = kv (u − θ̇)`` clamped to the torque limit."""
+    target = {"joint": joint} if joint is not None else {"tendon": tendon}
+    return root.actuator.add(
+        "velocity", name=name, kv=drive.wheel_kv,
+        ctrlrange=(-drive.wheel_rate_limit, drive.wheel_rate_limit),
+        forcerange=(-drive.wheel_torque_limit, drive.wheel_torque_limit),
+        user=(KIND_WHEEL, 0.0, drive.wheel_kv, drive.wheel_rate_limit), **target)
+
+
+def add_steer_actuator(root: mjcf.RootElement, name: str, joint: mjcf.Element,
+                       drive: DriveParams, angle_limit: float) -> mjcf.Element:
+    """Add a steering-rate servo (MuJoCo ``intvelocity``).
+
+    The control is the steering rate ω; the actuator state integrates it into a
+    target angle φ* (``φ̇* = ω``) and a PD servo tracks it:
+    ``τ = kp (φ* − φ) − kv φ̇``. The angle therefore does not drift under load.
+    """
+    return root.actuator.add(
+        "intvelocity", name=name, joint=joint, kp=drive.steer_kp, kv=drive.steer_kv,
+        ctrlrange=(-drive.steer_rate_limit, drive.steer_rate_limit),
+        actrange=(-angle_limit, angle_limit),
+        forcerange=(-drive.steer_torque_limit, drive.steer_torque_limit),
+        user=(KIND_STEER, drive.steer_kp, drive.steer_kv, drive.steer_rate_limit))
+
+
+def add_joint_sensors(root: mjcf.RootElement, wheel_joints: Sequence[str],
+                      steer_joints: Sequence[str] = ()) -> None:
+    """Add ``jointvel`` sensors for wheels and ``jointpos`` sensors for steering."""
+    for j in wheel_joints:
+        root.sensor.add("jointvel", name=f"{j}_rate", joint=j)
+    for j in steer_joints:
+        root.sensor.add("jointpos", name=f"{j}_angle", joint=j)
+
+
+def add_frame_sensors(root: mjcf.RootElement, site: mjcf.Element) -> None:
+    """Add world position, orientation and body-frame velocity sensors at ``site``."""
+    root.sensor.add("framepos", name="base_pos", objtype="site", objname=site)
+    root.sensor.add("framequat", name="base_quat", objtype="site", objname=site)
+    root.sensor.add("velocimeter", name="base_linvel", site=site)
+    root.sensor.add("gyro", name="base_angvel", site=site)
+
+
+def to_xml(root: mjcf.RootElement) -> str:
+    """Serialise an mjcf root as clean, Menagerie-style XML.
+
+    dm_control writes the main default class as ``class="/"``, names unnamed elements
+    ``//unnamed_*`` and prints 17 digits; this removes the first two and keeps
+    :data:`XML_PRECISION` digits, which leaves the compiled model unchanged for the
+    builder's parameter values.
+    """
+    text = root.to_xml_string(pretty_print=False, precision=XML_PRECISION)
+    tree = etree.fromstring(text.encode())
+    for el in tree.iter():
+        if el.get("class") == "/":
+            del el.attrib["class"]
+        if el.get("name", "").startswith("//unnamed"):
+            del el.attrib["name"]
+    default = tree.find("default")
+    if default is not None:
+        inner = default.find("default")
+        if inner is not None and inner.get("class") is None:
+            for child in list(inner):
+                default.append(child)
+            default.remove(inner)
+        if len(default) == 0:
+            tree.remove(default)
+    etree.indent(tree, space="  ")
+    return etree.tostring(tree, encoding="unicode") + "\n"

@@ -1,0 +1,98 @@
+"""Builder of the single steerable disc (lecture section 1), mounted or free."""
+
+from __future__ import annotations
+
+import numpy as np
+from dm_control import mjcf
+
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.params import DiscParams
+
+#: Steering of the mounted disc is unlimited in angle; this bounds the integrated
+#: target of the steering-rate servo only.
+STEER_RANGE = 1000.0
+#: Initial speeds of the free-disc keyframes, m/s, and its spin rate, rad/s.
+FREE_ROLL_SPEED = 1.0
+FREE_SPIN_RATE = 15.0
+FREE_LEAN = 0.15
+
+
+def build(params: DiscParams) -> mjcf.RootElement:
+    """Disc on a steering mount that keeps the wheel plane vertical.
+
+    Kinematic tree::
+
+        world ─ carriage [slides x, y, z; hinge steer about z] ─ wheel [hinge about y]
+
+    The slides are frictionless and unactuated: the carriage moves horizontally only
+    through the wheel's contact with the floor, and its weight rests on the wheel.
+    Inputs (lecture): wheel spin θ̇ with ``v = R θ̇`` and steering rate ``ω = φ̇``.
+    """
+    p = params
+    r = p.wheel.radius
+    root = common.new_root("disc", p.sim)
+    carriage = root.worldbody.add("body", name="carriage", pos=(0, 0, r))
+    for axis_name, axis in (("x", (1, 0, 0)), ("y", (0, 1, 0)), ("z", (0, 0, 1))):
+        carriage.add("joint", name=f"mount_{axis_name}", type="slide", axis=axis)
+    steer = carriage.add("joint", name="steer", type="hinge", axis=(0, 0, 1))
+    size = (0.06, 0.04, 0.04)
+    carriage.add("inertial", pos=(0, 0, 0), mass=p.mount_mass,
+                 diaginertia=common.box_inertia(p.mount_mass, size))
+    common.add_box_body_geoms(carriage, (0.02, p.wheel.width + 0.03, 0.02),
+                              pos=(0, 0, 0))
+    carriage.add("geom", dclass="visual", type="box",
+                 size=(0.01, 0.005, 0.12 * r), pos=(0, 0, 1.12 * r),
+                 rgba=common.BODY_RGBA)
+    site = carriage.add("site", name="base", pos=(0, 0, 0))
+    common.add_wheel(carriage, "wheel", p.wheel, pos=(0, 0, 0),
+                     armature=p.drive.wheel_armature)
+    common.add_wheel_actuator(root, "wheel", p.drive, joint="wheel")
+    common.add_steer_actuator(root, "steer", steer, p.drive, STEER_RANGE)
+    common.add_joint_sensors(root, ["wheel"], ["steer"])
+    common.add_frame_sensors(root, site)
+    return root
+
+
+def _quat_about(axis: tuple[float, float, float], angle: float) -> np.ndarray:
+    half = 0.5 * angle
+    return np.concatenate([[np.cos(half)], np.sin(half) * np.asarray(axis, float)])
+
+
+def build_free(params: DiscParams) -> mjcf.RootElement:
+    """Free disc: the same wheel on a free joint, no mount and no actuators.
+
+    Keyframes (free-joint ``qvel`` is world linear velocity then body angular
+    velocity; the disc axle is the body y axis):
+
+    * ``rest``: upright, at rest.
+    * ``rolling``: upright, rolling along +x at ``FREE_ROLL_SPEED``:
+      ``v = (V, 0, 0)``, ``ω_body = (0, V/R, 0)``.
+    * ``spinning``: upright, spinning about the vertical diameter at
+      ``FREE_SPIN_RATE`` (a spinning coin).
+    * ``leaning``: leaning by ``FREE_LEAN`` rad about the rolling direction while
+      rolling at ``FREE_ROLL_SPEED``; contact point on the floor, so it curves.
+    """
+    p = params
+    r = p.wheel.radius
+    root = common.new_root("disc_free", p.sim)
+    root.size.nuser_actuator = 0
+    body = root.worldbody.add("body", name="disc", pos=(0, 0, r))
+    body.add("freejoint", name="disc")
+    site = body.add("site", name="base", pos=(0, 0, 0))
+    common.add_wheel_geoms(body, "disc", p.wheel)
+    common.add_frame_sensors(root, site)
+    up = (0.0, 0.0, r)
+    spin = FREE_ROLL_SPEED / r
+    lean_quat = _quat_about((1.0, 0.0, 0.0), FREE_LEAN)
+    lean_z = r * np.cos(FREE_LEAN) + 0.5 * p.wheel.width * np.sin(FREE_LEAN)
+    keys = {
+        "rest": (up, (1, 0, 0, 0), (0, 0, 0), (0, 0, 0)),
+        "rolling": (up, (1, 0, 0, 0), (FREE_ROLL_SPEED, 0, 0), (0, spin, 0)),
+        "spinning": (up, (1, 0, 0, 0), (0, 0, 0), (0, 0, FREE_SPIN_RATE)),
+        "leaning": ((0, 0, lean_z), lean_quat, (FREE_ROLL_SPEED, 0, 0),
+                    (0, spin, 0)),
+    }
+    for name, (pos, quat, lin, ang) in keys.items():
+        root.keyframe.add("key", name=name, qpos=np.concatenate([pos, quat]),
+                          qvel=np.concatenate([lin, ang]))
+    return root

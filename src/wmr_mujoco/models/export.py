@@ -1,0 +1,78 @@
+"""Write the checked-in MJCF files from the builders' default parameters.
+
+Run ``python -m wmr_mujoco.models.export`` after changing a builder or a default parameter;
+``tests/models/test_loading.py`` fails until the files agree with the builders again.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+from dm_control import mjcf
+from lxml import etree
+
+from wmr_mujoco.atomic import write_text_atomic
+from wmr_mujoco.docs_sync.markers import has_markers, replace_between
+from wmr_mujoco.info import flatten_params
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.builders.scene import add_scene
+from wmr_mujoco.models.params import WheelParams
+from wmr_mujoco.robots import ROBOTS, RobotSpec
+
+
+def scene_xml(spec: RobotSpec) -> str:
+    """The ``scene.xml`` text: an include of the robot file, then the scene elements."""
+    scene = mjcf.RootElement(model=f"{spec.name} scene")
+    add_scene(scene)
+    tree = etree.fromstring(common.to_xml(scene).encode())
+    for el in list(tree):
+        if el.tag in ("compiler", "default") or (len(el) == 0 and not el.attrib):
+            tree.remove(el)
+    tree.insert(0, etree.Element("include", file=spec.robot_file))
+    etree.indent(tree, space="  ")
+    return etree.tostring(tree, encoding="unicode") + "\n"
+
+
+def parameter_table(spec: RobotSpec) -> str:
+    """Markdown table of the robot's default parameters and derived wheel inertias."""
+    params = spec.params_type()
+    rows = ["| parameter | value |", "|---|---|"]
+    rows += [f"| `{k}` | {v} |" for k, v in flatten_params(params).items()]
+    for f in dataclasses.fields(params):
+        value = getattr(params, f.name)
+        if isinstance(value, WheelParams):
+            rows.append(f"| `{f.name}` axial inertia m R²/2 | {value.axial_inertia:.6g} kg·m² |")
+            rows.append(f"| `{f.name}` diametral inertia | {value.diametral_inertia:.6g} kg·m² |")
+    rows.append(f"| total mass | {params.total_mass:.6g} kg |")
+    return "\n".join(rows)
+
+
+def update_readme(spec: RobotSpec) -> Path | None:
+    """Replace the text between the README's table markers with :func:`parameter_table`."""
+    readme = spec.robot_path.parent / "README.md"
+    key = f"{spec.name} parameters"
+    if not has_markers(readme, key):
+        return None
+    replace_between(readme, key, parameter_table(spec))
+    return readme
+
+
+def export_all() -> list[Path]:
+    """Write every robot's robot file, scene file and README parameter table."""
+    written = []
+    for spec in ROBOTS.values():
+        if spec.build is None or spec.params_type is None or not spec.has_files:
+            continue
+        write_text_atomic(spec.robot_path, common.to_xml(spec.build(spec.params_type())))
+        write_text_atomic(spec.scene_path, scene_xml(spec))
+        written += [spec.robot_path, spec.scene_path]
+        readme = update_readme(spec)
+        if readme is not None:
+            written.append(readme)
+    return written
+
+
+if __name__ == "__main__":
+    for p in export_all():
+        print(f"wrote {p}")

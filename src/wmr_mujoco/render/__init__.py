@@ -1,0 +1,1 @@
+"""Offscreen rendering (EGL, else OSMesa), videos with trails, and the interactive viewer."""

@@ -1,0 +1,38 @@
+"""MuJoCo's interactive viewer running a scenario in real time (needs a display)."""
+
+from __future__ import annotations
+
+import time
+
+import mujoco
+import mujoco.viewer
+
+from wmr_mujoco.models.actuation import set_actuation_mode
+from wmr_mujoco.models.loading import load
+from wmr_mujoco.render.video import pick_scenario
+from wmr_mujoco.validation.runner import make_adapter
+
+
+def view(robot: str, scenario: str | None = None) -> None:
+    """Open the viewer on ``robot`` and drive it through a scenario's inputs, looping."""
+    s = pick_scenario(robot, scenario)
+    model = load(robot)
+    adapter = make_adapter(s, model)
+    if adapter.mode is not None:
+        set_actuation_mode(model, adapter.mode)
+    data = mujoco.MjData(model)
+    with mujoco.viewer.launch_passive(model, data) as handle:
+        start = time.perf_counter()
+        while handle.is_running():
+            t = data.time - s.settle
+            if t > s.duration:
+                mujoco.mj_resetData(model, data)
+                start = time.perf_counter()
+                continue
+            u = s.input_at(max(t, 0.0)) if t >= 0 else 0 * s.input_at(0.0)
+            data.ctrl[:] = adapter.controls(u, adapter.sim_state(model, data))
+            mujoco.mj_step(model, data)
+            handle.sync()
+            lag = data.time - (time.perf_counter() - start)
+            if lag > 0:
+                time.sleep(lag)

@@ -1,0 +1,69 @@
+"""The registry of robots: one module per robot, one line per robot below.
+
+Each robot module (``robots/<name>.py``) defines ``SPEC``, a :class:`RobotSpec` holding
+its parameters type, builder, model files, analytic adapters per scenario kind, judges,
+probes, targets and scenarios. Generic code (validation, report, rendering, benchmarks,
+command line) reads robots only from :data:`ROBOTS`, never by name. Adding a robot is its
+own modules and one line in :data:`ROBOTS`; :func:`registered` adds one for a while (tests,
+a foreign model).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+from wmr_mujoco.robots import bicycle, disc, disc_free, omni3, tricycle
+from wmr_mujoco.robots.spec import Picture, RobotSpec
+
+__all__ = ["ROBOTS", "Picture", "RobotSpec", "get_spec", "register", "registered",
+           "unregister"]
+
+ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
+    disc.SPEC,
+    disc_free.SPEC,
+    bicycle.SPEC,
+    tricycle.SPEC,
+    omni3.SPEC,
+)}
+
+
+def get_spec(robot: str) -> RobotSpec:
+    """Look a robot up by name.
+
+    Raises:
+        ValueError: the name is not registered; the message lists the valid names.
+
+    """
+    try:
+        return ROBOTS[robot]
+    except (KeyError, TypeError):
+        raise ValueError(
+            f"unknown robot {robot!r}; valid robots are: {', '.join(ROBOTS)}"
+        ) from None
+
+
+def register(spec: RobotSpec) -> None:
+    """Add a robot to the registry.
+
+    Raises:
+        ValueError: the name is taken.
+    """
+    if spec.name in ROBOTS:
+        raise ValueError(f"robot {spec.name!r} is already registered")
+    ROBOTS[spec.name] = spec
+
+
+def unregister(name: str) -> None:
+    """Remove a robot from the registry (a no-op for an unknown name)."""
+    ROBOTS.pop(name, None)
+
+
+@contextmanager
+def registered(spec: RobotSpec) -> Iterator[RobotSpec]:
+    """Register ``spec`` for the duration of a ``with`` block."""
+    register(spec)
+    try:
+        yield spec
+    finally:
+        unregister(spec.name)

@@ -1,0 +1,154 @@
+"""The single steerable disc on a vertical mount (lecture section 1).
+
+Kinematic inputs ``(v, ω)``: wheel ground speed ``R θ̇`` and steering rate; state
+``(x, y, φ)`` of the unicycle model. Torque inputs ``(τ_wheel, τ_steer)``: state
+``(s, ṡ)``, distance and speed along the heading, against ``s̈ = τR / (J + mR²)``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic import unicycle
+from wmr_mujoco.analytic.wheel_dynamics import WheelDynamics
+from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.models.builders import disc as builder
+from wmr_mujoco.models.params import DiscParams, RobotParams, params_or_default
+from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.metrics import Metric, Target, Trace
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.signals import Sine, const
+
+NAME = "disc"
+#: Key of the rolling-acceleration target.
+ACCELERATION_PCT = "rolling acceleration error %"
+
+
+@dataclass(frozen=True)
+class DiscKinematics:
+    """Disc: ``x = (x, y, φ)``; controls ``(v/R, ω)``."""
+
+    params: DiscParams
+    mode: ActuationMode = ActuationMode.RATE
+    state_names: tuple[str, ...] = ("x", "y", "heading")
+    state_units: tuple[str, ...] = POSE_UNITS
+    wheel_joints: tuple[str, ...] = ("wheel",)
+    lateral_wheels: tuple[str, ...] = ("wheel",)
+
+    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """``(θ̇, ω) = (v / R, ω)``."""
+        return np.array([u[0] / self.params.wheel.radius, u[1]])
+
+    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Unicycle ``(ẋ, ẏ, φ̇) = (v cos φ, v sin φ, ω)``."""
+        return unicycle.rates(x, u)
+
+    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """Pose of the ``base`` site."""
+        return base_pose(model, data)
+
+
+@dataclass(frozen=True)
+class DiscDynamics:
+    """Disc under wheel torque: ``x = (s, ṡ)`` distance and speed along the heading.
+
+    Analytic model :class:`WheelDynamics` with the moving mass (disc + carriage) and the
+    disc's axial inertia.
+    """
+
+    params: DiscParams
+    mode: ActuationMode = ActuationMode.TORQUE
+    state_names: tuple[str, ...] = ("distance", "speed")
+    state_units: tuple[str, ...] = ("m", "m/s")
+    wheel_joints: tuple[str, ...] = ("wheel",)
+    lateral_wheels: tuple[str, ...] = ("wheel",)
+
+    @property
+    def wheel(self) -> WheelDynamics:
+        """The single-wheel model."""
+        p = self.params
+        return WheelDynamics(mass=p.total_mass, inertia=p.wheel.axial_inertia,
+                             radius=p.wheel.radius, friction=p.sim.friction)
+
+    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Torques as given."""
+        return np.asarray(u, float)
+
+    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """``(ṡ, s̈) = (ṡ, τR / (J + mR²))``."""
+        return np.array([x[1], self.wheel.rolling_acceleration(u[0])])
+
+    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """Distance and speed of the carriage along the steering heading."""
+        heading = data.joint("steer").qpos[0]
+        direction = np.array([np.cos(heading), np.sin(heading)])
+        return np.array([data.qpos[:2] @ direction, data.qvel[:2] @ direction])
+
+
+def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
+                      params: RobotParams | None) -> DiscKinematics:
+    """The unicycle model of the disc."""
+    return DiscKinematics(params_or_default(params, DiscParams))
+
+
+def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
+                    params: RobotParams | None) -> DiscDynamics:
+    """The single-wheel Lagrange model of the disc."""
+    return DiscDynamics(params_or_default(params, DiscParams))
+
+
+def judge_rolling(scenario: Scenario, trace: Trace, adapter: DiscDynamics,
+                  targets: Mapping[str, Target]) -> list[Metric]:
+    """Rolling acceleration: slope of the measured speed (after 0.5 s) against the model.
+
+    The slope is a least-squares fit over the whole steady part of the run, so it is
+    judged on every sample, not on one instant.
+    """
+    tr = trace.arrays()
+    t, sim, ana = tr["time"], tr["sim"], tr["analytic"]
+    steady = t > 0.5
+    measured = float(np.polyfit(t[steady], sim[steady, 1], 1)[0])
+    torque = scenario.input_at(0.0)[0]
+    expected = adapter.wheel.rolling_acceleration(torque)
+    return [
+        Metric("rolling acceleration error", 100.0 * (measured - expected) / expected, "%",
+               targets.get(ACCELERATION_PCT)),
+        Metric("rolling acceleration (MuJoCo)", measured, "m/s²"),
+        Metric("rolling acceleration τR/(J+mR²)", expected, "m/s²"),
+        Metric("worst speed error", float(np.max(np.abs(sim[:, 1] - ana[:, 1]))), "m/s"),
+        Metric("traction limit margin", adapter.wheel.max_rolling_torque / abs(torque), "×",
+               note="largest torque without slip, μ N R (J + mR²)/(mR²), over the torque"),
+    ]
+
+
+TARGETS: Mapping[str, Target] = {
+    **req.vehicle_targets(0.5),
+    ACCELERATION_PCT: Target.requirement(1.0, f"{req.SOURCE}: single-wheel acceleration "
+                                              "within 1 % of τR/(J + mR²)"),
+}
+
+SCENARIOS = (
+    Scenario(NAME, "straight", (const(1.0, 0.5), const(0.0))),
+    Scenario(NAME, "constant steering", (const(1.0, 0.5), const(0.5))),
+    Scenario(NAME, "sinusoidal steering", (const(1.0, 0.5), Sine(0.8, 4.0))),
+    Scenario(NAME, "torque", (const(0.3), const(0.0)), duration=2.0,
+             kind=ScenarioKind.DYNAMIC),
+)
+
+SPEC = RobotSpec(
+    name=NAME,
+    description="single steerable thin disc on a vertical mount; inputs wheel rate and "
+                "steering rate",
+    params_type=DiscParams, build=builder.build, folder="disc", robot_file="disc.xml",
+    adapters={ScenarioKind.KINEMATIC: kinematic_adapter,
+              ScenarioKind.DYNAMIC: dynamic_adapter},
+    judges={ScenarioKind.DYNAMIC: judge_rolling},
+    targets=TARGETS, scenarios=SCENARIOS, demo_scenario="constant steering",
+    render_scenario="sinusoidal steering", picture=Picture(joint_angles={"steer": 0.35}),
+)

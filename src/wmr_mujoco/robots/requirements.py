@@ -1,0 +1,31 @@
+"""The required accuracy (issues 3 and 5), shared by the robots judged on it.
+
+Every figure here is a **requirement**: a number asked for, not derived. Robot modules
+pick from these and add their own derived bounds beside them.
+"""
+
+from __future__ import annotations
+
+from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation.metrics import Target
+
+#: Where the requirements come from.
+SOURCE = "issue 5"
+
+
+def position_pct(value: float) -> Target:
+    """Worst position error over the run, % of the analytic path length."""
+    return Target.requirement(value, f"{SOURCE}: position within {value:g} % of path "
+                                     "over the whole run")
+
+
+def vehicle_targets(position: float) -> dict[str, Target]:
+    """Targets of a wheeled vehicle on rate inputs: worst position error and lateral slip."""
+    return {mt.POSITION_PCT: position_pct(position), mt.LATERAL_SLIP_RMS: LATERAL_SLIP_RMS}
+
+
+#: Lateral slip speed at a conventional wheel's contact, RMS over the run, m/s.
+LATERAL_SLIP_RMS = Target.requirement(1e-3, f"{SOURCE}: non-holonomic constraint residual "
+                                            "≤ 1 mm/s RMS")
+#: Worst heading error over the run, degrees.
+HEADING_DEG = Target.requirement(1.0, "issue 3: heading within 1° over the whole run")

@@ -1,0 +1,1 @@
+"""Stepping with divergence checks, the batched rollout engine, timing and thread scaling."""

@@ -1,0 +1,87 @@
+"""What ties a robot's MuJoCo model to its analytic model: the :class:`Adapter` protocol.
+
+An adapter says, for one robot and one kind of input: how the lecture's inputs become
+actuator controls, the analytic state and its derivative, how to read that state from the
+simulation, and which wheels are conventional (for lateral-slip measurement). Each robot
+module (:mod:`wmr_mujoco.robots`) defines its adapters and lists a factory per
+:class:`~wmr_mujoco.validation.scenarios.ScenarioKind`; the runner uses nothing of an
+adapter beyond this protocol.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Protocol
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic.planar import yaw_from_rotation
+from wmr_mujoco.models.actuation import ActuationMode
+
+if TYPE_CHECKING:
+    from wmr_mujoco.models.params import RobotParams
+    from wmr_mujoco.validation.scenarios import Scenario
+
+
+class Adapter(Protocol):
+    """Interface of a robot adapter (see the module docstring).
+
+    Attributes:
+        mode: the actuation mode the controls are meant for; None leaves the model's
+            actuators as they are (a foreign model with its own servos).
+        state_names: names of the analytic state's components; a state that starts
+            with ``("x", "y", "heading")`` is judged on pose tracking.
+        state_units: their units.
+        wheel_joints: the wheel hinges, in input order.
+        lateral_wheels: conventional wheels whose contact's sideways speed is measured.
+    """
+
+    mode: ActuationMode | None
+    state_names: tuple[str, ...]
+    state_units: tuple[str, ...]
+    wheel_joints: tuple[str, ...]
+    lateral_wheels: tuple[str, ...]
+
+    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Actuator controls for input ``u``.
+
+        The analytic state is passed for open-loop schedules that depend on it.
+        """
+        ...
+
+    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """Analytic state derivative ``ẋ = f(x, u)``."""
+        ...
+
+    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """The analytic state's quantities, read from the simulation."""
+        ...
+
+
+#: ``factory(scenario, model, params) -> Adapter`` (params: the robot's, defaults if None).
+AdapterFactory = Callable[["Scenario", mujoco.MjModel, "RobotParams | None"], Adapter]
+
+#: Units of a planar pose state.
+POSE_UNITS = ("m", "m", "rad")
+
+
+def body_pose(model: mujoco.MjModel, data: mujoco.MjData, body: int) -> np.ndarray:
+    """World ``(x, y, heading)`` of a body's frame."""
+    return np.array([data.xpos[body][0], data.xpos[body][1],
+                     yaw_from_rotation(data.xmat[body])])
+
+
+def base_pose(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+    """World ``(x, y, heading)`` of the ``base`` site."""
+    site = model.site("base").id
+    return np.array([data.site_xpos[site][0], data.site_xpos[site][1],
+                     yaw_from_rotation(data.site_xmat[site])])
+
+
+def body_twist(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+    """Body-frame ``(u, v, r)`` of the ``base`` site."""
+    site = model.site("base").id
+    vel = np.zeros(6)
+    mujoco.mj_objectVelocity(model, data, mujoco.mjtObj.mjOBJ_SITE, site, vel, 1)
+    return np.array([vel[3], vel[4], vel[2]])

@@ -1,0 +1,283 @@
+"""Measurements on omni-wheeled models, for any robot whose wheels carry free rollers.
+
+The wheel layout is read from a compiled model (:func:`layout_from_model`), so the same
+probes measure this package's models and a foreign (peer) model alike. The probes
+(:class:`RollerRateProbe`, :class:`WheelRateProbe`, :class:`YawRippleProbe`) take an
+:class:`OmniAdapter`: an :class:`~wmr_mujoco.validation.adapters.Adapter` that also
+gives its wheel layout and the body twist its input commands.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.validation.adapters import Adapter
+from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.signals import Signal, const
+
+#: Probes start after this many seconds (ramps done, transients settled).
+STEADY_AFTER = 1.0
+#: Open-loop manoeuvres of omni-wheeled robots: translation directions (degrees in the
+#: body frame), speed (m/s), yaw rate (rad/s) and the ramp from rest (s).
+DIRECTIONS_DEG = tuple(range(0, 360, 45))
+SPEED = 0.3
+YAW_RATE = 1.0
+RAMP = 0.5
+#: Key of the roller-rate target in a robot's target table.
+ROLLER_RATE_PCT = "roller rate error % (median)"
+
+
+@runtime_checkable
+class OmniAdapter(Adapter, Protocol):
+    """An adapter of an omni-wheeled robot."""
+
+    @property
+    def layout(self) -> ok.WheelLayout:
+        """The analytic model's wheel layout."""
+        ...
+
+    def twist(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Body twist ``ν = (u, v, r)`` commanded by input ``u``."""
+        ...
+
+
+@dataclass(frozen=True)
+class OmniModelInfo:
+    """What the probes need to know about a compiled omni-wheeled model.
+
+    Attributes:
+        layout: wheel layout in the base frame, from the compiled model.
+        wheel_joints: joint ids of the wheels, in layout order.
+        wheel_actuators: actuator id driving each wheel.
+        angle_servo: per wheel, True if the actuator takes a target angle (position
+            servo) rather than a rate.
+        base_body: id of the free-floating base body.
+    """
+
+    layout: ok.WheelLayout
+    wheel_joints: tuple[int, ...]
+    wheel_actuators: tuple[int, ...]
+    angle_servo: tuple[bool, ...]
+    base_body: int
+
+
+def layout_from_model(model: mujoco.MjModel, wheel_joints: Sequence[str]) -> OmniModelInfo:
+    """Read the wheel layout of a settled model from its geometry.
+
+    For each wheel hinge with world axis ``a`` and centre ``c`` (relative to the base),
+    the drive direction is ``a × ẑ`` (a positive rate rolls the centre that way) and the
+    radius is the centre's height above the floor at rest.
+
+    Raises:
+        ValueError: a wheel joint without exactly one actuator.
+    """
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    for _ in range(int(0.5 / model.opt.timestep)):  # settle on the floor
+        mujoco.mj_step(model, data)
+    mujoco.mj_forward(model, data)
+    joint_ids = [model.joint(j).id for j in wheel_joints]
+    base = int(model.jnt_bodyid[joint_ids[0]])
+    while model.body_parentid[base] != 0:
+        base = int(model.body_parentid[base])
+    base_rot = data.xmat[base].reshape(3, 3)
+    pos, beta, radii, acts, angle = [], [], [], [], []
+    for j in joint_ids:
+        axis = data.xaxis[j]
+        centre = data.xanchor[j]
+        drive = np.cross(axis, [0.0, 0.0, 1.0])
+        drive_b = base_rot.T @ drive
+        rel_b = base_rot.T @ (centre - data.xpos[base])
+        pos.append(rel_b[:2])
+        beta.append(np.arctan2(drive_b[1], drive_b[0]))
+        radii.append(centre[2] / np.linalg.norm(drive))
+        act = [a for a in range(model.nu) if model.actuator_trnid[a, 0] == j
+               and model.actuator_trntype[a] == mujoco.mjtTrn.mjTRN_JOINT]
+        if len(act) != 1:
+            raise ValueError(f"wheel joint {model.joint(j).name!r} has {len(act)} actuators; "
+                             f"expected exactly one")
+        acts.append(act[0])
+        angle.append(bool(model.actuator_biasprm[act[0], 1] != 0.0
+                          and model.actuator_dyntype[act[0]] == mujoco.mjtDyn.mjDYN_NONE))
+    layout = ok.WheelLayout(np.asarray(pos), np.asarray(beta), np.zeros(len(pos)),
+                            np.asarray(radii))
+    return OmniModelInfo(layout, tuple(joint_ids), tuple(acts), tuple(angle), base)
+
+
+def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelInfo,
+                       slide_speeds: np.ndarray) -> list[float]:
+    """Relative errors ``|ω_r ρ − s| / s`` of the rollers touching the floor now.
+
+    ``s`` is the slide speed along the roller axis at each wheel's contact implied by the
+    commanded twist, ``ρ`` the contact's distance from the roller axis and ``ω_r`` the
+    roller's measured spin rate. Contacts of wheels sliding slower than 1 mm/s are skipped.
+    """
+    errors = []
+    wheel_bodies = {int(model.jnt_bodyid[j]): i for i, j in enumerate(info.wheel_joints)}
+    for c in data.contact[:data.ncon]:
+        geom = c.geom2 if model.geom_bodyid[c.geom1] == 0 else c.geom1
+        body = int(model.geom_bodyid[geom])
+        parent = int(model.body_parentid[body])
+        if parent not in wheel_bodies or model.body_jntnum[body] != 1:
+            continue
+        jnt = int(model.body_jntadr[body])
+        axis = data.xaxis[jnt]
+        rel = c.pos - data.xanchor[jnt]
+        rho = np.linalg.norm(rel - axis * (rel @ axis))
+        slide = abs(slide_speeds[wheel_bodies[parent]])
+        if slide < 1e-3 or rho < 1e-6:
+            continue
+        omega = abs(data.qvel[model.jnt_dofadr[jnt]])
+        errors.append(abs(omega * rho - slide) / slide)
+    return errors
+
+
+def rolling_radius_profile(model: mujoco.MjModel, wheel_joint: str, roller_prefix: str,
+                           samples: int = 721) -> np.ndarray:
+    """Distance from the wheel axle to the floor-touching point over one revolution.
+
+    Measured on the model's own collision geometry with ``mj_geomDistance`` between the
+    floor and every roller geom (named ``roller_prefix...``), with the wheel axle held
+    horizontal at a fixed height and the wheel turned through 360°.
+
+    Returns:
+        (samples,) rolling radius at wheel angles ``linspace(0, 2π, samples)``.
+    """
+    data = mujoco.MjData(model)
+    floor = model.geom("floor").id
+    jid = model.joint(wheel_joint).id
+    geoms = [g for g in range(model.ngeom)
+             if (model.geom(g).name or "").startswith(roller_prefix)
+             and model.geom_contype[g] | model.geom_conaffinity[g]]
+    if not geoms:
+        raise ValueError(f"no collision geoms named {roller_prefix!r}* in the model")
+    fromto = np.zeros(6)
+    out = np.empty(samples)
+    for i, angle in enumerate(np.linspace(0.0, 2.0 * np.pi, samples)):
+        data.qpos[:] = model.qpos0
+        data.qpos[2] += 0.5  # lift the free base clear of the floor
+        data.qpos[model.jnt_qposadr[jid]] = angle
+        mujoco.mj_kinematics(model, data)
+        gap = min(mujoco.mj_geomDistance(model, data, g, floor, 2.0, fromto) for g in geoms)
+        out[i] = data.xanchor[jid][2] - gap
+    return out
+
+
+@dataclass
+class RollerRateProbe:
+    """Contacting rollers' spin rates against slide speed / ρ, after :data:`STEADY_AFTER`."""
+
+    info: OmniModelInfo
+    adapter: OmniAdapter
+    target: Target | None
+    errors: list[float] = field(default_factory=list)
+
+    def observe(self, sample: Sample) -> None:
+        """Errors of the rollers in contact at this step."""
+        if sample.t > STEADY_AFTER:
+            slide = ok.roller_slide_speeds(self.adapter.layout,
+                                           self.adapter.twist(sample.u, sample.x))
+            self.errors += roller_rate_errors(sample.model, sample.data, self.info, slide)
+
+    def metrics(self) -> list[Metric]:
+        """Median (judged) and 95th percentile, in %."""
+        if not self.errors:
+            return []
+        return [Metric("roller rate error (median)", 100.0 * float(np.median(self.errors)),
+                       "%", self.target),
+                Metric("roller rate error (95th percentile)",
+                       100.0 * float(np.percentile(self.errors, 95)), "%")]
+
+
+@dataclass
+class WheelRateProbe:
+    """Measured wheel rates against the commanded ``θ̇ = H ν`` (rate servos only)."""
+
+    wheel_dofs: tuple[int, ...]
+    errors: list[float] = field(default_factory=list)
+
+    def observe(self, sample: Sample) -> None:
+        """``|θ̇ − θ̇_cmd| / |θ̇_cmd|`` at this step, once the commanded rates exceed 0.5."""
+        if sample.t > STEADY_AFTER and np.linalg.norm(sample.ctrl) > 0.5:
+            rates = sample.data.qvel[list(self.wheel_dofs)]
+            self.errors.append(float(np.linalg.norm(rates - sample.ctrl)
+                                     / np.linalg.norm(sample.ctrl)))
+
+    def metrics(self) -> list[Metric]:
+        """RMS relative error, reported."""
+        return [Metric("wheel rate error vs H ν (RMS)", 100.0 * rms(self.errors), "%")
+                ] if self.errors else []
+
+
+@dataclass
+class YawRippleProbe:
+    """Standard deviation of the base's yaw rate over the steady phase, / |commanded|."""
+
+    base_body: int
+    adapter: OmniAdapter
+    rates: list[float] = field(default_factory=list)
+    commanded: list[float] = field(default_factory=list)
+
+    def observe(self, sample: Sample) -> None:
+        """The base's world yaw rate and the commanded one at this step."""
+        if sample.t > STEADY_AFTER:
+            self.rates.append(float(sample.data.cvel[self.base_body][2]))
+            self.commanded.append(float(self.adapter.twist(sample.u, sample.x)[2]))
+
+    def metrics(self) -> list[Metric]:
+        """``std(r) / |r_cmd|`` in %, where a constant yaw rate is commanded."""
+        cmd = np.asarray(self.commanded)
+        if not cmd.size or np.ptp(cmd) > 1e-9 or abs(cmd[0]) < 1e-9:
+            return []
+        return [Metric("yaw-rate ripple", 100.0 * float(np.std(self.rates)) / abs(cmd[0]),
+                       "% of commanded")]
+
+
+def omni_probes(scenario: Scenario, model: mujoco.MjModel, adapter: Adapter,
+                targets: Mapping[str, Target]) -> _OmniProbes | None:
+    """The roller, wheel-rate and yaw-ripple probes of a kinematic omni-wheel run."""
+    if scenario.kind is not ScenarioKind.KINEMATIC or not isinstance(adapter, OmniAdapter):
+        return None
+    info = layout_from_model(model, adapter.wheel_joints)
+    probes: list[RollerRateProbe | WheelRateProbe | YawRippleProbe] = [
+        RollerRateProbe(info, adapter, targets.get(ROLLER_RATE_PCT)),
+        YawRippleProbe(info.base_body, adapter)]
+    if adapter.mode is ActuationMode.RATE:
+        probes.insert(0, WheelRateProbe(tuple(int(model.jnt_dofadr[j])
+                                              for j in info.wheel_joints)))
+    return _OmniProbes(probes)
+
+
+@dataclass
+class _OmniProbes:
+    """Several probes as one."""
+
+    probes: list[RollerRateProbe | WheelRateProbe | YawRippleProbe]
+
+    def observe(self, sample: Sample) -> None:
+        """Pass the sample to each probe."""
+        for p in self.probes:
+            p.observe(sample)
+
+    def metrics(self) -> list[Metric]:
+        """Every probe's metrics, in order."""
+        return [m for p in self.probes for m in p.metrics()]
+
+
+def twist_inputs(twist: tuple[float, float, float], ramp: float = RAMP) -> tuple[Signal, ...]:
+    """Body twist ``(u, v, r)`` inputs, each reached from rest by a linear ramp."""
+    return tuple(const(c, ramp) if c else const(0.0) for c in twist)
+
+
+def translation(deg: float, speed: float = SPEED) -> tuple[float, float, float]:
+    """Body twist ``(s cos α, s sin α, 0)`` of a translation at ``α`` degrees."""
+    a = np.radians(deg)
+    return (speed * float(np.cos(a)), speed * float(np.sin(a)), 0.0)

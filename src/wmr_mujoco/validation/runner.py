@@ -1,0 +1,291 @@
+"""The one runner: scenarios through MuJoCo and the analytic models, measured and judged.
+
+For each kinematic or dynamic :class:`~wmr_mujoco.validation.scenarios.Scenario` the
+simulation and the analytic model advance together on MuJoCo's time grid: at step k the
+input ``u(t_k)`` becomes actuator controls and is held over the step in the analytic
+model's RK4 step (:func:`wmr_mujoco.analytic.integrate.rk4_step`), from the same settled
+initial state. The robot's adapter, judge, probes and targets come from its registry entry
+(:mod:`wmr_mujoco.robots`); nothing here knows a robot by name. A measurement scenario's
+own ``evaluate`` runs instead, and its metrics are judged the same way.
+
+Metrics are in :mod:`wmr_mujoco.validation.metrics` (pose tracking: worst, RMS and final
+errors over the whole run; lateral slip) and in each robot's module (dynamic judges,
+probes).
+"""
+
+from __future__ import annotations
+
+import os
+import traceback
+from collections.abc import Callable, Sequence
+from concurrent.futures import Future, ThreadPoolExecutor
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic.integrate import rk4_step
+from wmr_mujoco.choices import parse_choice
+from wmr_mujoco.models.actuation import set_actuation_mode
+from wmr_mujoco.models.loading import load
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots import get_spec
+from wmr_mujoco.sim.engine import STATE_SPEC, Engine, simulate, simulate_batch
+from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
+from wmr_mujoco.validation.adapters import Adapter
+from wmr_mujoco.validation.metrics import (
+    RECORD_EVERY,
+    Probe,
+    Row,
+    Sample,
+    Trace,
+    lateral_slip,
+    slip_metrics,
+)
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+
+
+@dataclass
+class ScenarioResult:
+    """Rows and trace of one scenario (``error`` set when it diverged or raised)."""
+
+    scenario: Scenario
+    rows: list[Row]
+    trace: Trace
+    error: str | None = None
+
+    @property
+    def passed(self) -> bool:
+        """No error and no judged row failed."""
+        return self.error is None and all(r.passed is not False for r in self.rows)
+
+
+def make_adapter(scenario: Scenario, model: mujoco.MjModel,
+                 params: RobotParams | None = None) -> Adapter:
+    """The adapter of a scenario's robot and kind (default parameters if None).
+
+    Raises:
+        ValueError: the robot has no analytic model of that kind.
+    """
+    spec = get_spec(scenario.robot)
+    factory = spec.adapters.get(scenario.kind)
+    if factory is None:
+        have = ", ".join(k.value for k in spec.adapters) or "none"
+        raise ValueError(f"no {scenario.kind.value} model for robot {scenario.robot!r}; "
+                         f"it has: {have}")
+    return factory(scenario, model, params)
+
+
+#: Called after every step with ``(model, data, analytic_state, adapter)``.
+Observer = Callable[[mujoco.MjModel, mujoco.MjData, np.ndarray, Adapter], None]
+
+
+def run_scenario(s: Scenario, progress: Callable[[str], None] | None = None,
+                 observer: Observer | None = None, params: RobotParams | None = None,
+                 engine: Engine | str = Engine.ROLLOUT) -> ScenarioResult:
+    """Run one scenario; never raises.
+
+    A diverging or failing run comes back as a result with ``error`` set and a failed
+    row carrying the reason. ``observer`` (e.g. a video recorder) sees every step;
+    ``params`` builds the robot from parameters instead of the checked-in model;
+    ``engine`` picks :func:`~wmr_mujoco.sim.engine.simulate`'s stepping (an observer
+    forces the Python loop).
+    """
+    trace = Trace()
+    try:
+        if s.kind is ScenarioKind.MEASUREMENT:
+            return _evaluate(s, params)
+        prep = prepare(s, params)
+        on_step = None
+        if observer is not None:
+            def on_step(k: int) -> None:
+                observer(prep.model, prep.data, prep.analytic[k + 1], prep.adapter)
+        states = simulate(prep.model, prep.data, prep.controls, engine, on_step)
+        return ScenarioResult(s, measure(prep, states, trace), trace)
+    except SimulationDivergedError as err:
+        reason = f"diverged: {err}"
+    except Exception as err:  # a failed scenario becomes a failed row
+        reason = f"{type(err).__name__}: {err}"
+        if progress:
+            progress(traceback.format_exc())
+    row = Row(s.robot, s.name, "run", float("nan"), "", None, False, reason)
+    return ScenarioResult(s, [row], trace, error=reason)
+
+
+def _evaluate(s: Scenario, params: RobotParams | None) -> ScenarioResult:
+    """A measurement scenario through its own ``evaluate``."""
+    assert s.evaluate is not None  # guaranteed by Scenario for this kind
+    result = s.evaluate(s, params)
+    trace = Trace(series=list(result.series))
+    return ScenarioResult(s, [Row.of(s.robot, s.name, m) for m in result.metrics], trace)
+
+
+def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: int
+             ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Inputs, actuator controls and analytic states on the simulation grid.
+
+    The analytic model does not depend on the simulation, so the whole open-loop schedule
+    is known before MuJoCo runs: ``u_k = u(k Δt)``, ``ctrl_k = controls(u_k, x_k)`` and
+    ``x_{k+1} = RK4(x_k, u_k)``.
+
+    Returns:
+        ``(inputs (N, m), controls (N, nu), analytic (N + 1, n))``.
+    """
+    x = np.asarray(x0, float)
+    inputs, controls, states = [], [], [x]
+    for k in range(nstep):
+        u = s.input_at(k * dt)
+        inputs.append(u)
+        controls.append(adapter.controls(u, x))
+        x = rk4_step(adapter.rhs, x, u, dt)
+        states.append(x)
+    return np.asarray(inputs), np.asarray(controls), np.asarray(states)
+
+
+@dataclass
+class Prepared:
+    """A scenario ready to simulate: settled model and data, and its open-loop schedule."""
+
+    scenario: Scenario
+    model: mujoco.MjModel
+    data: mujoco.MjData
+    adapter: Adapter
+    inputs: np.ndarray
+    controls: np.ndarray
+    analytic: np.ndarray
+
+
+def prepare(s: Scenario, params: RobotParams | None = None) -> Prepared:
+    """Load, settle at rest for ``s.settle`` seconds, and compute the schedule."""
+    model = load(s.robot, params)
+    adapter = make_adapter(s, model, params)
+    if adapter.mode is not None:
+        set_actuation_mode(model, adapter.mode)
+    data = mujoco.MjData(model)
+    dt = model.opt.timestep
+    for _ in range(round(s.settle / dt)):
+        mujoco.mj_step(model, data)
+    check_healthy(model, data)
+    nstep = round(s.duration / dt)
+    inputs, controls, analytic = schedule(s, adapter, adapter.sim_state(model, data), dt, nstep)
+    return Prepared(s, model, data, adapter, inputs, controls, analytic)
+
+
+def measure(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Row]:
+    """Metrics of a simulated scenario from its states (see :func:`simulate`).
+
+    Every :data:`RECORD_EVERY`-th step is redone from its stored start, so that contacts
+    and frames belong to the configuration whose constraints produced the new
+    velocities; the robot's probes and the lateral-slip measurement see it there, and the
+    pose at the step's end is recorded beside the analytic state at the same time.
+
+    Raises:
+        ValueError: the robot has no judge for the scenario's kind.
+    """
+    s, model, data, adapter = prep.scenario, prep.model, prep.data, prep.adapter
+    spec = get_spec(s.robot)
+    judge = spec.judge(s.kind)
+    if judge is None:
+        raise ValueError(f"robot {s.robot!r} has no judge for {s.kind.value} scenarios")
+    probes: list[Probe] = [p for factory in spec.probes
+                           if (p := factory(s, model, adapter, spec.targets)) is not None]
+    trace.state_names, trace.state_units = adapter.state_names, adapter.state_units
+    dt = model.opt.timestep
+    nstep = len(prep.controls)
+    for k in range(nstep):
+        if k % RECORD_EVERY != RECORD_EVERY - 1 and k != nstep - 1:
+            continue
+        # The warm start is not part of the stored state: start the solver from zero so
+        # that the measurement does not depend on how the states were produced.
+        mujoco.mj_setState(model, data, states[k], STATE_SPEC)
+        data.qacc_warmstart[:] = 0.0
+        data.ctrl[:] = prep.controls[k]
+        mujoco.mj_step(model, data)
+        check_healthy(model, data)
+        trace.slip.append(lateral_slip(model, data, adapter.lateral_wheels))
+        sample = Sample(k, k * dt, model, data, prep.inputs[k], prep.controls[k],
+                        prep.analytic[k])
+        for probe in probes:
+            probe.observe(sample)
+        mujoco.mj_setState(model, data, states[k + 1], STATE_SPEC)
+        mujoco.mj_forward(model, data)
+        trace.time.append(data.time - s.settle)
+        trace.sim.append(adapter.sim_state(model, data))
+        trace.analytic.append(prep.analytic[k + 1])
+    metrics = judge(s, trace, adapter, spec.targets)
+    if adapter.lateral_wheels:
+        metrics += slip_metrics(trace, adapter.lateral_wheels, spec.targets)
+    for probe in probes:
+        metrics += probe.metrics()
+    return [Row.of(s.robot, s.name, m) for m in metrics]
+
+
+def batch_key(s: Scenario) -> tuple[str, str, float]:
+    """Scenarios with equal keys share one model and settled start: one rollout batch."""
+    return s.robot, s.kind.value, s.settle
+
+
+def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None = None,
+            engine: Engine | str = Engine.ROLLOUT) -> list[ScenarioResult]:
+    """Run every scenario; a failure does not stop the others.
+
+    With ``engine="rollout"``, kinematic and dynamic scenarios with the same
+    :func:`batch_key` are simulated together in one multi-threaded ``mujoco.rollout``,
+    and the batches are pipelined: while MuJoCo's threads (which release the GIL)
+    simulate one batch, Python computes the next batch's analytic schedule, then measures
+    the finished ones. A batch that fails is rerun one scenario at a time so that each
+    failure is attributed. ``"loop"`` steps each scenario in Python, one after the other.
+    Measurement scenarios run through their own ``evaluate``.
+    """
+    engine = parse_choice(Engine, engine, "engine")
+    results = _run_batched(scenarios, progress) if engine is Engine.ROLLOUT else {}
+    for i, s in enumerate(scenarios):
+        if i not in results:
+            if progress:
+                progress(f"[{i + 1}/{len(scenarios)}] {s.key}")
+            results[i] = run_scenario(s, progress, engine=engine)
+    return [results[i] for i in range(len(scenarios))]
+
+
+def _simulate_prepared(prepared: list[Prepared], nthread: int) -> list[np.ndarray]:
+    first = prepared[0]
+    return simulate_batch(first.model, first.data, [p.controls for p in prepared], nthread)
+
+
+def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None
+                 ) -> dict[int, ScenarioResult]:
+    """The scenarios that ran cleanly in batches, by index; failures are left out."""
+    groups: dict[tuple[str, str, float], list[int]] = {}
+    for i, s in enumerate(scenarios):
+        if s.kind is not ScenarioKind.MEASUREMENT:
+            groups.setdefault(batch_key(s), []).append(i)
+    # One core stays with the Python thread that schedules and measures.
+    nthread = max(1, (os.cpu_count() or 1) - 1)
+    results: dict[int, ScenarioResult] = {}
+    pending: list[tuple[list[tuple[int, Prepared]], Future[list[np.ndarray]]]] = []
+    with ThreadPoolExecutor(max_workers=1, thread_name_prefix="wmr-rollout") as pool:
+        for members in groups.values():
+            prepared = []
+            for i in members:
+                try:
+                    prepared.append((i, prepare(scenarios[i])))
+                except Exception:  # reported by the one-at-a-time rerun
+                    continue
+            if prepared:
+                pending.append((prepared, pool.submit(_simulate_prepared,
+                                                      [p for _, p in prepared], nthread)))
+        for prepared, future in pending:
+            try:
+                batch = future.result()
+            except Exception:
+                continue
+            for (i, prep), states in zip(prepared, batch, strict=True):
+                if progress:
+                    progress(f"[{i + 1}/{len(scenarios)}] {prep.scenario.key}")
+                trace = Trace()
+                try:
+                    results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace),
+                                                trace)
+                except Exception:
+                    continue
+    return results

@@ -1,0 +1,121 @@
+"""Validation scenarios, as data: robot, kind, inputs as signals, duration.
+
+Every robot module (:mod:`wmr_mujoco.robots`) lists its own scenarios. A scenario is one
+of three kinds (:class:`ScenarioKind`):
+
+* ``KINEMATIC``: rate inputs in the lecture's terms, through the physics (servoed wheels
+  and steering) and the robot's kinematic model;
+* ``DYNAMIC``: torque inputs, through the physics and the robot's Lagrange model;
+* ``MEASUREMENT``: the scenario carries its own ``evaluate(scenario, params)`` that
+  measures something in the physics (an eigenvalue, a steady precession, an energy
+  budget) and returns a :class:`MeasurementResult`; the runner judges and reports it
+  like any other.
+"""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from wmr_mujoco.choices import parse_choice
+from wmr_mujoco.validation.metrics import Metric, Series
+from wmr_mujoco.validation.signals import Signal
+
+if TYPE_CHECKING:
+    from wmr_mujoco.models.params import RobotParams
+
+
+class ScenarioKind(str, enum.Enum):
+    """What a scenario compares (see the module docstring)."""
+
+    KINEMATIC = "kinematic"
+    DYNAMIC = "dynamic"
+    MEASUREMENT = "measurement"
+
+
+@dataclass(frozen=True)
+class MeasurementResult:
+    """What a measurement scenario's ``evaluate`` returns.
+
+    Attributes:
+        metrics: the measured quantities, judged against their targets.
+        series: curves for the report's plot (optional).
+    """
+
+    metrics: list[Metric]
+    series: list[Series] = field(default_factory=list)
+
+
+#: ``evaluate(scenario, params)`` of a measurement scenario (params None: defaults).
+Evaluate = Callable[["Scenario", "RobotParams | None"], MeasurementResult]
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """One validation run.
+
+    Attributes:
+        robot: registry name.
+        name: short label, unique per robot.
+        inputs: one signal per input channel (the robot's adapter says which).
+        duration: seconds after the settle.
+        kind: :class:`ScenarioKind` (its string value is accepted).
+        world_frame: inputs are world rates (Ẋ, Ẏ, ψ̇) rather than body rates.
+        settle: seconds at rest before the inputs start.
+        evaluate: a ``MEASUREMENT`` scenario's own measurement (see :data:`Evaluate`).
+        description: one line for the report.
+    """
+
+    robot: str
+    name: str
+    inputs: tuple[Signal, ...] = ()
+    duration: float = 10.0
+    kind: ScenarioKind = ScenarioKind.KINEMATIC
+    world_frame: bool = False
+    settle: float = 0.5
+    evaluate: Evaluate | None = field(default=None, compare=False)
+    description: str = field(default="", compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "kind", parse_choice(ScenarioKind, self.kind, "scenario kind"))
+        if (self.kind is ScenarioKind.MEASUREMENT) != (self.evaluate is not None):
+            raise ValueError(f"{self.key}: a {self.kind.value} scenario "
+                             f"{'needs' if self.evaluate is None else 'takes no'} evaluate")
+        if not (np.isfinite(self.duration) and self.duration > 0):
+            raise ValueError(f"{self.key}: duration = {self.duration!r} s; must be > 0")
+        if not (np.isfinite(self.settle) and self.settle >= 0):
+            raise ValueError(f"{self.key}: settle = {self.settle!r} s; must be >= 0")
+
+    @property
+    def key(self) -> str:
+        """``robot/name``."""
+        return f"{self.robot}/{self.name}"
+
+    def input_at(self, t: float) -> np.ndarray:
+        """Input vector at time ``t`` after the settle."""
+        return np.array([s(t) for s in self.inputs])
+
+
+def scenarios_for(robots: Sequence[str] | None = None) -> list[Scenario]:
+    """Scenarios of the given robots (all registered if None), in registry order.
+
+    Raises:
+        ValueError: an unknown robot or one without scenarios; the message lists those
+            with some.
+    """
+    from wmr_mujoco.robots import ROBOTS, get_spec
+
+    if robots is None:
+        return [s for spec in ROBOTS.values() for s in spec.scenarios]
+    have = [name for name, spec in ROBOTS.items() if spec.scenarios]
+    out = []
+    for r in robots:
+        if not get_spec(r).scenarios:
+            raise ValueError(f"no validation scenarios for robot {r!r}; robots with "
+                             f"scenarios: {', '.join(have)}")
+        out += list(get_spec(r).scenarios)
+    return out

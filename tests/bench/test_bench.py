@@ -1,0 +1,30 @@
+"""The benchmark code runs and reports sane figures (no timing assertions)."""
+
+import subprocess
+
+import pytest
+
+from wmr_mujoco.bench import bench
+from wmr_mujoco.bench.bench import step_speed
+
+
+def test_step_speed_reports_every_path():
+    res = step_speed(["disc", "bicycle"], rounds=1, nstep=200, target_s=0.02)
+    assert set(res) == {"disc", "bicycle"}
+    for figures in res.values():
+        assert set(figures) >= {"loop_steps_per_s", "rollout1_steps_per_s",
+                                "rolloutN_steps_per_s", "rollout_speedup", "loop_rtf",
+                                "process_ceiling"}
+        assert all(v > 0 for v in figures.values())
+
+
+def test_failed_validate_run_is_an_error_not_a_time(monkeypatch):
+    monkeypatch.setattr(bench.subprocess, "run", lambda *a, **k: subprocess.CompletedProcess(
+        a, 1, "24 of 25 scenarios pass", "failed: omni3/torque"))
+    with pytest.raises(RuntimeError, match="exited with 1: .*failed: omni3/torque"):
+        bench.validate_wall_time(1)
+
+
+def test_missing_peer_is_left_out_not_fatal(tmp_path):
+    assert bench.peer_side_by_side(None, tmp_path / "scene.xml") is None
+    assert "Left out: the peer model was not found" in bench._peer_section(None)

@@ -1,0 +1,24 @@
+"""Generated README sections: replaced between their markers, nothing else touched."""
+
+import pytest
+
+from wmr_mujoco.docs_sync.markers import has_markers, markers, replace_between
+
+
+def test_replace_between_keeps_the_rest(tmp_path):
+    begin, end = markers("table")
+    path = tmp_path / "README.md"
+    path.write_text(f"intro\n{begin}\nold\n{end}\noutro\n")
+    replace_between(path, "table", "\nnew | row\n")
+    assert path.read_text() == f"intro\n{begin}\nnew | row\n{end}\noutro\n"
+    assert has_markers(path, "table") and not has_markers(path, "other")
+
+
+@pytest.mark.parametrize("text", ["no markers", "<!-- t: end -->\n<!-- t: begin -->",
+                                  "<!-- t: begin -->\n<!-- t: begin -->\n<!-- t: end -->"])
+def test_bad_markers_are_refused_and_the_file_kept(tmp_path, text):
+    path = tmp_path / "README.md"
+    path.write_text(text)
+    with pytest.raises(ValueError, match="must hold '<!-- t: begin -->' once"):
+        replace_between(path, "t", "x")
+    assert path.read_text() == text

@@ -1,0 +1,53 @@
+"""The README's result and benchmark sections are pasted from the reports."""
+
+import pytest
+
+from wmr_mujoco.docs_sync.markers import markers
+from wmr_mujoco.docs_sync.readme_sync import SECTIONS, main, section_text, sync
+from wmr_mujoco.models.paths import README_PATH
+
+
+def test_the_readme_has_every_section():
+    text = README_PATH.read_text()
+    for key in SECTIONS:
+        begin, end = markers(key)
+        assert text.count(begin) == 1 and text.count(end) == 1
+
+
+def test_section_text_demotes_headings():
+    assert section_text("# Benchmarks\n\nintro\n\n## Speed\n| a |") == "intro\n\n#### Speed\n| a |"
+
+
+def test_sync_pastes_each_report(tmp_path):
+    readme = tmp_path / "README.md"
+    readme.write_text("\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS)))
+    reports = tmp_path / "reports"
+    reports.mkdir()
+    (reports / "summary.md").write_text("| robot | pass |\n|---|---|\n| disc | pass |\n")
+    (reports / "bench.md").write_text("# Benchmarks\n\n## Speed\n\n| x |\n")
+    assert sync(readme, reports) == list(SECTIONS)
+    text = readme.read_text()
+    assert "old" not in text and "| disc | pass |" in text and "#### Speed" in text
+
+
+def test_missing_report_names_the_command(tmp_path, capsys):
+    readme = tmp_path / "README.md"
+    readme.write_text("")
+    with pytest.raises(FileNotFoundError, match="`make demo` writes it"):
+        sync(readme, tmp_path)
+    assert main(["--readme", str(readme), "--reports", str(tmp_path)]) == 2
+    assert "summary.md not found" in capsys.readouterr().err
+
+
+def test_only_the_sections_asked_for_and_nothing_when_one_is_missing(tmp_path):
+    readme = tmp_path / "README.md"
+    original = "\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS))
+    readme.write_text(original)
+    (tmp_path / "summary.md").write_text("| new |\n")
+    with pytest.raises(FileNotFoundError, match="`make bench` writes it"):
+        sync(readme, tmp_path)
+    assert readme.read_text() == original  # nothing written when a report is missing
+    assert sync(readme, tmp_path, ["validation results"]) == ["validation results"]
+    assert readme.read_text().count("old") == 1 and "| new |" in readme.read_text()
+    with pytest.raises(ValueError, match="unknown README sections"):
+        sync(readme, tmp_path, ["results"])

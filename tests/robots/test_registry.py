@@ -1,0 +1,117 @@
+"""The registry: every robot's entry, and a throw-away robot that no generic module knows.
+
+The throw-away robot is the disc with a wider wheel under a new name, built from its
+parameters (no model files), with its own scenario and targets. It goes through the same
+runner, report and renderer as the registered robots.
+"""
+
+import dataclasses
+import json
+
+import numpy as np
+import pytest
+
+from wmr_mujoco.models.builders import disc as disc_builder
+from wmr_mujoco.models.params import DiscParams, WheelParams, params_or_default
+from wmr_mujoco.robots import ROBOTS, RobotSpec, disc, get_spec, register, registered
+from wmr_mujoco.validation.metrics import Metric, Series
+from wmr_mujoco.validation.runner import run_all
+from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind
+from wmr_mujoco.validation.signals import const
+
+NAME = "wide_disc"
+
+
+def test_every_robot_has_files_and_description():
+    for spec in ROBOTS.values():
+        assert spec.robot_path.is_file(), spec.robot_path
+        assert spec.scene_path.is_file(), spec.scene_path
+        assert len(spec.description) > 20
+
+
+def test_unknown_robot_lists_valid_names():
+    with pytest.raises(ValueError, match="unknown robot 'unicycle'.*disc, disc_free, bicycle"):
+        get_spec("unicycle")
+
+
+def test_every_target_says_requirement_or_derived_bound():
+    for spec in ROBOTS.values():
+        for key, target in spec.targets.items():
+            assert target.kind in ("requirement", "derived bound"), key
+            assert len(target.basis) > 10, key
+
+
+@dataclasses.dataclass(frozen=True)
+class WideDiscParams(DiscParams):
+    """The disc's parameters with a wider, larger wheel by default."""
+
+    wheel: WheelParams = dataclasses.field(
+        default_factory=lambda: WheelParams(radius=0.2, width=0.04, mass=2.0))
+
+
+def _measure(scenario, params):
+    """A measurement scenario: the wheel's axial inertia against m R²/2 (closed form)."""
+    p = params_or_default(params, WideDiscParams)
+    expected = 0.5 * p.wheel.mass * p.wheel.radius ** 2
+    return MeasurementResult([Metric("axial inertia / (m R²/2)",
+                                     p.wheel.axial_inertia / expected, "ratio")],
+                             [Series("R", np.array([0.0, 1.0]), np.array([0.0, 1.0]))])
+
+
+def wide_disc_spec() -> RobotSpec:
+    """A disc variant with its own defaults, scenario and targets."""
+    scenarios = (Scenario(NAME, "gentle arc", (const(0.8, 0.5), const(0.2)), duration=1.5),
+                 Scenario(NAME, "inertia", kind=ScenarioKind.MEASUREMENT, evaluate=_measure))
+    return RobotSpec(
+        name=NAME, description="a wider disc, registered by a test only",
+        params_type=WideDiscParams, build=disc_builder.build,
+        adapters={ScenarioKind.KINEMATIC: lambda s, m, p: disc.DiscKinematics(
+            params_or_default(p, WideDiscParams))},
+        targets=disc.TARGETS, scenarios=scenarios, demo_scenario="gentle arc")
+
+
+def test_a_new_robot_runs_through_validate_report_and_render(tmp_path):
+    from wmr_mujoco.render.video import render_scenario
+    from wmr_mujoco.validation.report import write_report
+
+    spec = wide_disc_spec()
+    with registered(spec):
+        assert NAME in ROBOTS
+        results = run_all(spec.scenarios)
+        path = write_report(results, tmp_path)
+        frames = render_scenario(dataclasses.replace(spec.scenarios[0], duration=0.3),
+                                 width=64, height=48, fps=10)
+    assert NAME not in ROBOTS
+    arc, inertia = results
+    assert arc.error is None and arc.passed, arc.rows
+    worst = next(r for r in arc.rows
+                 if r.metric == "worst position error" and r.unit == "% of path")
+    assert worst.target == 0.5 and worst.basis.startswith("requirement")
+    # The wider wheel (R = 0.2 m) is what was simulated: 0.8 m/s for 1.5 s after a
+    # 0.5 s ramp is 1.0 m of path whatever the radius, and the wheel turned v/R.
+    path_m = next(r.value for r in arc.rows if r.metric == "path length")
+    assert path_m == pytest.approx(0.8 * 1.5 - 0.8 * 0.5 / 2, rel=1e-3)
+    assert inertia.rows[0].value == pytest.approx(1.0, rel=1e-12)
+    assert f"{NAME}/gentle arc" in path.read_text()
+    doc = json.loads((tmp_path / "validation.json").read_text())
+    assert [s["robot"] for s in doc["scenarios"]] == [NAME, NAME]
+    assert (tmp_path / "validation" / "wide-disc-inertia.png").stat().st_size > 1000
+    assert frames.shape == (3, 48, 64, 3) and frames.std() > 0
+
+
+def test_a_name_cannot_be_registered_twice():
+    with pytest.raises(ValueError, match="robot 'disc' is already registered"):
+        register(get_spec("disc"))
+
+
+@pytest.mark.parametrize(("change", "match"), [
+    ({"demo_scenario": "nope"}, "demo scenario 'nope' is not one of its scenarios"),
+    ({"scenarios": (Scenario("disc", "a", (const(1.0),)),)}, "scenarios of other robots"),
+    ({"adapters": {}}, "has no kinematic adapter"),
+    ({"build": None}, "give both build and params_type"),
+    ({"scenarios": (Scenario(NAME, "t", (const(1.0),), kind="dynamic"),),
+      "adapters": {ScenarioKind.DYNAMIC: lambda s, m, p: None}}, "has no judge for dynamic"),
+])
+def test_inconsistent_entries_are_refused(change, match):
+    with pytest.raises(ValueError, match=match):
+        dataclasses.replace(wide_disc_spec(), **change)

@@ -1,0 +1,57 @@
+import json
+
+import pytest
+
+from wmr_mujoco.validation.report import slug, text_table, write_report
+from wmr_mujoco.validation.runner import run_all
+from wmr_mujoco.validation.scenarios import Scenario
+from wmr_mujoco.validation.signals import const
+
+
+@pytest.fixture(scope="module")
+def results():
+    return run_all([
+        Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=1.0),
+        Scenario("disc", "nan input", (const(float("nan")), const(0.0)), duration=0.1),
+    ])
+
+
+def test_report_files(results, tmp_path):
+    path = write_report(results, tmp_path)
+    text = path.read_text()
+    assert "1 of 2 scenarios pass" in text and "disc/nan input" in text
+    doc = json.loads((tmp_path / "validation.json").read_text())
+    assert doc["passed"] is False and len(doc["scenarios"]) == 2
+    assert (tmp_path / "validation" / "disc-short.png").stat().st_size > 1000
+    assert not list(tmp_path.rglob(".*"))  # no temporary files left
+
+
+def test_failed_report_write_leaves_no_file(results, tmp_path, monkeypatch):
+    import wmr_mujoco.validation.report as rep
+
+    def boom(_results):
+        raise RuntimeError("disk full")
+
+    monkeypatch.setattr(rep, "markdown_table", boom)
+    with pytest.raises(RuntimeError):
+        write_report(results, tmp_path)
+    assert not (tmp_path / "validation.md").exists()
+    assert not list(tmp_path.glob(".*"))
+
+
+def test_text_table_and_slug(results):
+    table = text_table(results)
+    assert table.splitlines()[0].split()[:3] == ["robot", "scenario", "metric"]
+    assert "FAIL" in table
+    assert slug("omni3/translate 45°") == "omni3-translate-45deg"
+
+
+def test_markdown_cells_escape_pipes():
+    from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
+    from wmr_mujoco.validation.report import markdown_table
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    s = Scenario("disc", "s", (const(1.0),))
+    row = Row.of("disc", "s", Metric("m", 1.0, "", Target.derived(2.0, "|F| ≤ μN"), "|x|"))
+    line = markdown_table([ScenarioResult(s, [row], Trace())]).splitlines()[-1]
+    assert line.count(" | ") + 2 == 9 and "\\|F\\|" in line and "\\|x\\|" in line

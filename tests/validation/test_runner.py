@@ -1,0 +1,158 @@
+"""Every validation scenario through the same code as `wmr validate`, judged on its targets.
+
+The targets are each robot's (``wmr_mujoco.robots.<robot>.TARGETS``, with their basis):
+worst position error over the run ≤ 0.5 % of path (disc, bicycle, tricycle) and ≤ 1 %
+(omni3); lateral slip RMS ≤ 1 mm/s; omni heading ≤ 1° over the run, roller rates within
+5 %; single-wheel acceleration within 1 % of τR/(J + mR²); omni traction below μN.
+"""
+
+import numpy as np
+import pytest
+
+from wmr_mujoco.validation.metrics import lateral_slip
+from wmr_mujoco.validation.runner import run_all, run_scenario
+from wmr_mujoco.validation.scenarios import Scenario, scenarios_for
+from wmr_mujoco.validation.signals import const
+
+SCENARIOS = scenarios_for()
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS, ids=[s.key for s in SCENARIOS])
+def test_scenario_meets_its_targets(scenario):
+    result = run_scenario(scenario)
+    assert result.error is None, result.error
+    judged = [r for r in result.rows if r.passed is not None]
+    assert judged, "every scenario is judged on at least one target"
+    failed = [f"{r.metric} = {r.value:.4g} {r.unit} (target {r.target})" for r in judged
+              if not r.passed]
+    assert not failed, failed
+
+
+def test_diverging_scenario_is_a_failed_row_and_the_rest_still_run(monkeypatch):
+    import wmr_mujoco.validation.runner as validation
+    from wmr_mujoco import load
+
+    def unstable_load(robot, params=None):
+        """Negative damping and a 0.2 s step: the simulation must blow up."""
+        model = load(robot, params)
+        if robot == "bicycle":
+            model.opt.timestep = 0.2
+            model.dof_damping[:] = -1e6
+        return model
+
+    monkeypatch.setattr(validation, "load", unstable_load)
+    bad = Scenario("bicycle", "unstable", (const(1.0), const(0.0)), duration=1.0)
+    good = Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=1.0)
+    results = run_all([bad, good])
+    assert results[0].error is not None and "diverged" in results[0].error
+    assert results[0].rows[0].passed is False and "mjWARN" in results[0].rows[0].note
+    assert results[1].error is None and results[1].passed
+
+
+def test_bad_input_values_are_a_failed_row():
+    result = run_scenario(Scenario("disc", "nan", (const(float("nan")), const(0.0)),
+                                   duration=0.1))
+    assert result.error is not None and not result.passed
+
+
+def test_unknown_model_kind_is_a_failed_row():
+    result = run_scenario(Scenario("bicycle", "torque", (const(1.0), const(0.0)),
+                                   kind="dynamic", duration=0.1))
+    assert result.error and "no dynamic model for robot 'bicycle'" in result.error
+
+
+def test_lateral_slip_measures_a_sideways_push():
+    import mujoco
+
+    from wmr_mujoco import load
+
+    model = load("disc")
+    data = mujoco.MjData(model)
+    for _ in range(50):
+        mujoco.mj_step(model, data)
+    data.qvel[1] = 0.05  # along +y: the wheel's axle (the disc faces +x)
+    mujoco.mj_forward(model, data)
+    assert lateral_slip(model, data, ["wheel"])[0] == pytest.approx(0.05, rel=1e-6)
+
+
+@pytest.mark.parametrize("key", ["disc/sinusoidal steering", "tricycle/figure eight",
+                                 "omni3/square with rotation", "omni3/torque"])
+def test_rollout_and_step_loop_are_identical(key):
+    """mujoco.rollout from the same state and warm start gives bit-identical states, so
+    every metric is the same through either engine."""
+    import mujoco
+
+    from wmr_mujoco import load, set_actuation_mode
+    from wmr_mujoco.sim.engine import simulate
+    from wmr_mujoco.validation.runner import make_adapter, schedule
+
+    scenario = next(s for s in SCENARIOS if s.key == key)
+    model = load(scenario.robot)
+    adapter = make_adapter(scenario, model)
+    set_actuation_mode(model, adapter.mode)
+    data = mujoco.MjData(model)
+    for _ in range(100):
+        mujoco.mj_step(model, data)
+    _, controls, _ = schedule(scenario, adapter, adapter.sim_state(model, data),
+                              model.opt.timestep, 500)
+    start = mujoco.MjData(model)
+    mujoco.mj_copyData(start, model, data)
+    by_loop = simulate(model, data, controls, engine="loop")
+    by_rollout = simulate(model, start, controls, engine="rollout")
+    assert by_loop.shape == (501, mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_FULLPHYSICS))
+    assert np.array_equal(by_loop, by_rollout)
+
+    loop_rows = run_scenario(scenario, engine="loop").rows
+    rollout_rows = run_scenario(scenario, engine="rollout").rows
+    assert [(r.metric, r.value) for r in loop_rows] == [(r.metric, r.value) for r in rollout_rows]
+
+
+def test_unknown_engine():
+    import mujoco
+
+    from wmr_mujoco import load
+    from wmr_mujoco.sim.engine import simulate
+
+    model = load("disc")
+    with pytest.raises(ValueError, match="unknown engine 'gpu'; valid engines are: rollout, loop"):
+        simulate(model, mujoco.MjData(model), np.zeros((3, 2)), engine="gpu")
+
+
+def test_batched_run_all_matches_the_step_loop():
+    """Scenarios of one robot share one threaded rollout; the metrics do not change."""
+    from wmr_mujoco.validation.scenarios import scenarios_for
+
+    scenarios = scenarios_for(["disc"])
+    batched = run_all(scenarios, engine="rollout")
+    looped = run_all(scenarios, engine="loop")
+    for a, b in zip(batched, looped, strict=True):
+        assert [(r.metric, r.value) for r in a.rows] == [(r.metric, r.value) for r in b.rows]
+
+
+def test_batches_split_by_robot_kind_and_settle():
+    """Only scenarios with one model and one settled start may share a rollout."""
+    from wmr_mujoco.validation.runner import batch_key
+
+    a = Scenario("disc", "a", (const(1.0), const(0.0)))
+    assert batch_key(a) == batch_key(Scenario("disc", "b", (const(0.5), const(0.1))))
+    assert batch_key(a) != batch_key(Scenario("disc", "c", a.inputs, settle=0.2))
+    assert batch_key(a) != batch_key(Scenario("disc", "d", a.inputs, kind="dynamic"))
+    assert batch_key(a) != batch_key(Scenario("bicycle", "a", a.inputs))
+
+
+def test_run_all_unknown_engine():
+    with pytest.raises(ValueError, match="unknown engine 'gpu'; valid engines are: rollout, loop"):
+        run_all([], engine="gpu")
+
+
+def test_pipelined_batches_with_different_settles_match_the_loop():
+    """Two batches of one robot (different settles) go through the pipeline; each keeps
+    its own start state, so the metrics equal the step loop's."""
+    scenarios = [Scenario("disc", "settle 0.5", (const(1.0, 0.5), const(0.3)), duration=1.0),
+                 Scenario("disc", "settle 0.2", (const(1.0, 0.5), const(0.3)), duration=1.0,
+                          settle=0.2)]
+    batched = run_all(scenarios, engine="rollout")
+    looped = run_all(scenarios, engine="loop")
+    for a, b in zip(batched, looped, strict=True):
+        assert a.error is None
+        assert [(r.metric, r.value) for r in a.rows] == [(r.metric, r.value) for r in b.rows]
