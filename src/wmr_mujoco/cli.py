@@ -40,7 +40,7 @@ def _cmd_demo(_: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
-    from wmr_mujoco.validation.report import text_table, write_report
+    from wmr_mujoco.validation.report import summary_line, text_table, write_report
     from wmr_mujoco.validation.runner import run_all
     from wmr_mujoco.validation.scenarios import scenarios_for
 
@@ -49,7 +49,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     print(text_table(results, judged_only=not args.all_metrics))
     path = write_report(results, args.out)
     failed = [r.scenario.key for r in results if not r.passed]
-    print(f"\n{len(results) - len(failed)} of {len(results)} scenarios pass; report: {path}")
+    print(f"\n{summary_line(results)}; report: {path}")
     if failed:
         print(f"failed: {', '.join(failed)}", file=sys.stderr)
         return 1

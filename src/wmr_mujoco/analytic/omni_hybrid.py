@@ -31,6 +31,7 @@ Drive laws: torque (``τ = u``) or rate servo (``τ = clip(k_v (u − θ̇), ±�
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -76,23 +77,23 @@ class RollerGeometry:
             arr.setflags(write=False)
             object.__setattr__(self, name, arr)
 
-    def _h(self, phi: float) -> float:
+    def _h(self, phi: float | np.ndarray) -> float | np.ndarray:
         b, a = self.half_width, self.half_length
-        return math.sqrt(b * b * math.cos(phi) ** 2 + a * a * math.sin(phi) ** 2)
+        return np.sqrt(b * b * np.cos(phi) ** 2 + a * a * np.sin(phi) ** 2)
 
-    def rolling_radius(self, phi: float) -> float:
-        """``R(φ) = d cos φ + h(φ)``."""
-        return self.axis_distance * math.cos(phi) + self._h(phi)
+    def rolling_radius(self, phi: float | np.ndarray) -> float | np.ndarray:
+        """``R(φ) = d cos φ + h(φ)`` (elementwise on arrays)."""
+        return self.axis_distance * np.cos(phi) + self._h(phi)
 
-    def contact_ahead(self, phi: float) -> float:
+    def contact_ahead(self, phi: float | np.ndarray) -> float | np.ndarray:
         """``x_c(φ) = −d sin φ + (a² − b²) sin φ cos φ / h`` (= R'(φ))."""
         b, a = self.half_width, self.half_length
-        return (-self.axis_distance * math.sin(phi)
-                + (a * a - b * b) * math.sin(phi) * math.cos(phi) / self._h(phi))
+        return (-self.axis_distance * np.sin(phi)
+                + (a * a - b * b) * np.sin(phi) * np.cos(phi) / self._h(phi))
 
-    def contact_radius(self, phi: float) -> float:
+    def contact_radius(self, phi: float | np.ndarray) -> float | np.ndarray:
         """``ρ(φ) = b² cos φ / h(φ)``: contact point to the roller axis."""
-        return self.half_width ** 2 * math.cos(phi) / self._h(phi)
+        return self.half_width ** 2 * np.cos(phi) / self._h(phi)
 
     def phases(self, theta: float) -> np.ndarray:
         """``φ_k = wrap(ζ_k + θ − π)`` in (−π, π]."""
@@ -190,13 +191,13 @@ class OmniHybrid:
         object.__setattr__(self, "wheel_angles", alpha.copy())
 
     # --- geometry -------------------------------------------------------------------
-    @property
+    @functools.cached_property
     def radial(self) -> np.ndarray:
         """ê_i (3, 3) rows, body frame."""
         a = self.wheel_angles
         return np.stack([np.cos(a), np.sin(a), 0.0 * a], axis=1)
 
-    @property
+    @functools.cached_property
     def drive_dirs(self) -> np.ndarray:
         """t_i = ẑ × ê_i."""
         a = self.wheel_angles
@@ -222,18 +223,9 @@ class OmniHybrid:
 
     def roller_rows(self, modes: tuple[int, ...], thetas: np.ndarray
                     ) -> tuple[np.ndarray, np.ndarray]:
-        """``k_i`` (β̇_i = k_iᵀ ν) and ``∂k_i/∂φ`` (central difference of the closed form)."""
-        a = -self.radial
-        ks, dks = np.zeros((3, 3)), np.zeros((3, 3))
-        g = self.rollers
-        for i, (m, th) in enumerate(zip(modes, thetas, strict=True)):
-            phi = float(g.phases(float(th))[m])
-
-            def k_of(p: float, i: int = i) -> np.ndarray:
-                return np.array([a[i, 0], a[i, 1], g.contact_ahead(p)]) / g.contact_radius(p)
-            ks[i] = k_of(phi)
-            dks[i] = (k_of(phi + 1e-6) - k_of(phi - 1e-6)) / 2e-6
-        return ks, dks
+        """``k_i`` (β̇_i = k_iᵀ ν) and ``∂k_i/∂φ`` (closed forms, see :func:`_geometry`)."""
+        geo = _geometry(self, np.asarray(thetas, float)[None], np.asarray(modes)[None])
+        return geo.ks[0], geo.dks[0]
 
     # --- continuous phase ----------------------------------------------------------------
     @property
@@ -343,8 +335,17 @@ class OmniHybrid:
         return float(0.5 * nu @ self.planar_mass(modes, thetas) @ nu)
 
     # --- impact ----------------------------------------------------------------------------
+    @functools.cached_property
+    def _full_mass(self) -> np.ndarray:
+        Mq = self._build_full_mass()
+        Mq.setflags(write=False)
+        return Mq
+
     def full_mass(self) -> np.ndarray:
         """𝕄 of ``q̇ = (V, Ω, θ̇, β̇)``: the wheel spin couples to Ω through I_ax a_i."""
+        return self._full_mass.copy()
+
+    def _build_full_mass(self) -> np.ndarray:
         Mq = np.zeros((12, 12))
         Mq[:3, :3] = self.mass * np.eye(3)
         Mq[3:6, 3:6] = self.inertia
@@ -563,7 +564,127 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
              pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
              roller_rates0: np.ndarray | None = None, substeps: int = 4,
              impacts: bool = True, slip: bool = True, arc: bool = False) -> HybridRun:
-    """Integrate the hybrid model: RK4 on the continuous phase, impact map at switches.
+    """One run of :func:`simulate_batch` (same arguments without the batch axis)."""
+    inputs = as_array("inputs", inputs, (None, 3))
+    rates0 = None if roller_rates0 is None else np.asarray(roller_rates0, float)[None]
+    return simulate_batch(model, [drive], inputs[None], dt, np.asarray(pose0, float)[None],
+                          np.asarray(twist0, float)[None], np.asarray(thetas0, float)[None],
+                          rates0, substeps, impacts, slip, arc)[0]
+
+
+@dataclass(frozen=True)
+class _Geometry:
+    """Mode-dependent contact geometry of a batch (B runs, 3 wheels).
+
+    ``modes`` (B, 3); ``H``, ``ks``, ``dks`` (B, 3, 3) rows per wheel; ``xc`` (B, 3).
+    """
+
+    modes: np.ndarray
+    H: np.ndarray
+    ks: np.ndarray
+    dks: np.ndarray
+    xc: np.ndarray
+
+
+def _lowest(model: OmniHybrid, thetas: np.ndarray) -> np.ndarray:
+    """``σ = argmin_k |φ_k|`` for (B, 3) wheel angles."""
+    g = model.rollers
+    phases = np.angle(np.exp(1j * (g.angles + thetas[..., None] - math.pi)))
+    return np.argmin(np.abs(phases), axis=-1)
+
+
+def _geometry(model: OmniHybrid, thetas: np.ndarray, modes: np.ndarray | None = None,
+              H: np.ndarray | None = None) -> _Geometry:
+    """``σ`` (lowest roller unless ``modes`` given), ``H(σ)``, ``k_i``, ``∂k_i/∂φ``, ``x_c``.
+
+    Vectorised over (B, 3) wheel angles, with ``φ = wrap(ζ_σ + θ − π)``::
+
+        H_i = (t_i,x, t_i,y, L − y_σ) / r,     k_i = (a_i,x, a_i,y, x_c) / ρ,
+        ∂k_i/∂φ = (0, 0, x_c') / ρ − k_i ρ' / ρ,
+        h' = (a² − b²) sin φ cos φ / h,   h'' = ((a² − b²) cos 2φ − h'²) / h,
+        x_c = −d sin φ + h',   x_c' = −d cos φ + h'',
+        ρ = b² cos φ / h,      ρ' = −b² (sin φ h + cos φ h') / h²
+
+    (the closed forms of the module docstring, differentiated).
+    """
+    g = model.rollers
+    if modes is None:
+        modes = _lowest(model, thetas)
+    phi = np.remainder(g.angles[modes] + thetas, 2.0 * math.pi) - math.pi
+    c, s = np.cos(phi), np.sin(phi)
+    a2b2 = g.half_length ** 2 - g.half_width ** 2
+    h = np.sqrt(g.half_width ** 2 * c * c + g.half_length ** 2 * s * s)
+    dh = a2b2 * s * c / h
+    ddh = (a2b2 * (c * c - s * s) - dh * dh) / h
+    xc = dh - g.axis_distance * s
+    dxc = ddh - g.axis_distance * c
+    rho = g.half_width ** 2 * c / h
+    drho_rho = -(s * h + c * dh) / (c * h)
+    if H is None:
+        H = np.empty(modes.shape + (3,))
+        H[..., :2] = model.drive_dirs[:, :2] / model.radius
+        H[..., 2] = (model.distance - g.offsets[modes]) / model.radius
+    ks = np.empty(modes.shape + (3,))
+    ks[..., :2] = -model.radial[:, :2]
+    ks[..., 2] = xc
+    ks /= rho[..., None]
+    dks = -ks * drho_rho[..., None]
+    dks[..., 2] += dxc / rho
+    return _Geometry(modes, H, ks, dks, xc)
+
+
+def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: np.ndarray,
+                   slipping: np.ndarray, slip_forces: np.ndarray,
+                   loads: np.ndarray | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:meth:`OmniHybrid.accelerations` for a batch: ``ν`` (B, 3), wheel arrays (B, 3)."""
+    H, ks = geo.H, geo.ks
+    Ht = H.transpose(0, 2, 1)
+    rates = (H @ nu[..., None])[..., 0]
+    roll = ~slipping
+    if loads is not None:
+        torques = torques - loads * geo.xc
+    coef = (geo.dks @ nu[..., None])[..., 0] * rates
+    lhs = model.roller_axial * (ks.transpose(0, 2, 1) @ ks)
+    lhs += model.wheel_inertia * (Ht @ (roll[..., None] * H))
+    lhs[:, 0, 0] += model.mass
+    lhs[:, 1, 1] += model.mass
+    lhs[:, 2, 2] += model.inertia[2, 2]
+    gen = np.where(roll, torques, model.radius * slip_forces)
+    rhs = (Ht @ gen[..., None])[..., 0] - model.roller_axial * (
+        ks.transpose(0, 2, 1) @ coef[..., None])[..., 0]
+    rhs[:, 0] += model.mass * nu[:, 2] * nu[:, 1]
+    rhs[:, 1] -= model.mass * nu[:, 2] * nu[:, 0]
+    nudot = np.linalg.solve(lhs, rhs[..., None])[..., 0]
+    hnd = (H @ nudot[..., None])[..., 0]
+    thdd = np.where(slipping, (torques - model.radius * slip_forces) / model.wheel_inertia, hnd)
+    forces = np.where(slipping, slip_forces, (torques - model.wheel_inertia * hnd) / model.radius)
+    return nudot, thdd, forces
+
+
+def _normal_loads(model: OmniHybrid, forces: np.ndarray, wheel_accels: np.ndarray
+                  ) -> np.ndarray:
+    """:meth:`OmniHybrid.normal_loads` for a batch of (B, 3) forces and wheel accelerations."""
+    e, t = model.radial, model.drive_dirs
+    pos = model.distance * e[:, :2]
+    dL = model.wheel_axial * wheel_accels @ -e[:, :2]
+    r = model.radius
+    A = np.vstack([pos[:, 1], -pos[:, 0], np.ones(3)])
+    rhs = np.stack([dL[:, 0] - r * forces @ t[:, 1], dL[:, 1] + r * forces @ t[:, 0],
+                    np.full(forces.shape[0], model.mass * model.gravity)], axis=-1)
+    return np.linalg.solve(A, rhs.T).T
+
+
+def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, dt: float,
+                   pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
+                   roller_rates0: np.ndarray | None = None, substeps: int = 4,
+                   impacts: bool = True, slip: bool = True, arc: bool = False
+                   ) -> list[HybridRun]:
+    """Integrate B runs of the hybrid model at once: RK4 on the continuous phase, impact
+    map at switches.
+
+    The continuous phase is vectorised over the runs (numpy, (B, 3) arrays); the rare
+    events (a roller hand-over, a wheel re-sticking) are applied to the runs that have
+    them, one by one, with the scalar maps of :class:`OmniHybrid`.
 
     Wheel modes: rolling, or slipping once ``|F_t,i| > μ N_i`` (then ``F_t,i = μ N_i
     sign(θ̇_i − H_i ν)``) until the slip speed changes sign, when the wheel sticks again
@@ -572,13 +693,13 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
 
     Args:
         model: the platform.
-        drive: actuation law.
-        inputs: (N, 3) wheel inputs per output step (rates, rad/s, or torques, N·m).
+        drives: actuation law of each run (B).
+        inputs: (B, N, 3) wheel inputs per output step (rates, rad/s, or torques, N·m).
         dt: output step, s; each is split into ``substeps`` RK4 steps.
-        pose0: initial (X, Y, ψ).
-        twist0: initial (u, v, r).
-        thetas0: initial wheel angles, rad.
-        roller_rates0: (3, n_rollers) spins of all rollers (zero if None).
+        pose0: (B, 3) initial (X, Y, ψ).
+        twist0: (B, 3) initial (u, v, r).
+        thetas0: (B, 3) initial wheel angles, rad.
+        roller_rates0: (B, 3, n_rollers) spins of all rollers (zero if None).
         substeps: RK4 steps per output step.
         impacts: apply the impact map at switches (False: mode switches change H only,
             velocity continuous).
@@ -592,81 +713,118 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
         ValueError: non-finite or mis-shaped inputs, non-positive dt.
         FloatingPointError: the integration diverged.
     """
-    inputs = as_array("inputs", inputs, (None, 3))
+    inputs = as_array("inputs", inputs, (None, None, 3))
+    nb, n = inputs.shape[:2]
+    if len(drives) != nb:
+        raise ValueError(f"{len(drives)} drives for {nb} runs; give one drive per run")
     positive("dt", dt)
     if not isinstance(substeps, int) or substeps < 1:
         raise ValueError(f"substeps = {substeps!r}; valid range is integers >= 1")
-    pose = as_array("pose0", pose0, (3,)).copy()
-    nu = as_array("twist0", twist0, (3,)).copy()
-    th = as_array("thetas0", thetas0, (3,)).copy()
+    pose = as_array("pose0", pose0, (nb, 3)).copy()
+    nu = as_array("twist0", twist0, (nb, 3)).copy()
+    th = as_array("thetas0", thetas0, (nb, 3)).copy()
     nrol = model.rollers.angles.size
-    spins = (np.zeros((3, nrol)) if roller_rates0 is None
-             else as_array("roller_rates0", roller_rates0, (3, nrol)).copy())
-    modes = model.modes(th)
-    thd = model.jacobian(modes) @ nu
-    slipping = np.zeros(3, dtype=bool)
-    slip_dir = np.zeros(3)
-    loads = np.full(3, model.mass * model.gravity / 3.0)
+    spins = (np.zeros((nb, 3, nrol)) if roller_rates0 is None
+             else as_array("roller_rates0", roller_rates0, (nb, 3, nrol)).copy())
+    rate_mode = np.array([d.mode == "rate" for d in drives])[:, None]
+    gain = np.array([d.gain for d in drives])[:, None]
+    limit_tau = np.array([d.torque_limit for d in drives])[:, None]
+    geo = _geometry(model, th)
+    thd = (geo.H @ nu[..., None])[..., 0]
+    slipping = np.zeros((nb, 3), dtype=bool)
+    slip_dir = np.zeros((nb, 3))
+    loads = np.full((nb, 3), model.mass * model.gravity / 3.0)
     h = dt / substeps
-    n = inputs.shape[0]
-    out_pose, out_nu, out_th, out_tau = (np.zeros((n + 1, 3)) for _ in range(4))
-    out_pose[0], out_nu[0], out_th[0] = pose, nu, th
-    switches: list[tuple[float, int, float]] = []
+    out_pose, out_nu, out_th, out_tau = (np.zeros((nb, n + 1, 3)) for _ in range(4))
+    out_pose[:, 0], out_nu[:, 0], out_th[:, 0] = pose, nu, th
+    switches: list[list[tuple[float, int, float]]] = [[] for _ in range(nb)]
 
-    def deriv(state: np.ndarray, u_in: np.ndarray
+    def deriv(x: np.ndarray, u_in: np.ndarray, geo: _Geometry
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        ps, v, thv, w = state[:3], state[3:6], state[6:9], state[9:]
-        tau = drive.torques(u_in, w)
+        v, w = x[:, 3:6], x[:, 9:]
+        tau = np.clip(np.where(rate_mode, gain * (u_in - w), u_in), -limit_tau, limit_tau)
         fs = model.friction * loads * slip_dir
-        nudot, thdd, forces = model.accelerations(v, thv, modes, tau, slipping, fs,
-                                                  loads if arc else None)
-        c, s = math.cos(ps[2]), math.sin(ps[2])
-        world = np.array([c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]])
-        return np.concatenate([world, nudot, w, thdd]), tau, forces, thdd
+        nudot, thdd, forces = _accelerations(model, geo, v, tau, slipping, fs,
+                                             loads if arc else None)
+        c, s = np.cos(x[:, 2]), np.sin(x[:, 2])
+        world = np.stack([c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1], v[:, 2]],
+                         axis=-1)
+        return np.concatenate([world, nudot, w, thdd], axis=1), tau, forces, thdd
 
     for k in range(n):
-        u_in = inputs[k]
-        tau = np.zeros(3)
+        u_in = inputs[:, k]
+        tau = np.zeros((nb, 3))
         for _ in range(substeps):
-            x = np.concatenate([pose, nu, th, thd])
-            k1, tau, forces, thdd = deriv(x, u_in)
-            k2 = deriv(x + 0.5 * h * k1, u_in)[0]
-            k3 = deriv(x + 0.5 * h * k2, u_in)[0]
-            k4 = deriv(x + h * k3, u_in)[0]
+            x = np.concatenate([pose, nu, th, thd], axis=1)
+            # Within a substep the modes are fixed; k_i follows φ (the geometry at each
+            # RK4 stage's wheel angles).
+            k1, tau, forces, thdd = deriv(x, u_in, geo)
+            x2 = x + 0.5 * h * k1
+            k2 = deriv(x2, u_in, _geometry(model, x2[:, 6:9], geo.modes, geo.H))[0]
+            x3 = x + 0.5 * h * k2
+            k3 = deriv(x3, u_in, _geometry(model, x3[:, 6:9], geo.modes, geo.H))[0]
+            x4 = x + h * k3
+            k4 = deriv(x4, u_in, _geometry(model, x4[:, 6:9], geo.modes, geo.H))[0]
             x = x + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
-            pose, nu, th, thd = x[:3], x[3:6], x[6:9], x[9:]
-            H = model.jacobian(modes)
-            thd = np.where(slipping, thd, H @ nu)  # rolling wheels stay on the constraint
+            pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
+            new_modes = _lowest(model, th)
+            changed = np.flatnonzero((new_modes != geo.modes).any(axis=1))
+            geo = _geometry(model, th, geo.modes, geo.H)
+            hnu = (geo.H @ nu[..., None])[..., 0]
+            thd = np.where(slipping, thd, hnu)  # rolling wheels stay on the constraint
             if slip:
-                loads = np.maximum(model.normal_loads(forces, thdd), 0.0)
-                limit = model.friction * loads
-                onset = ~slipping & (np.abs(forces) > limit)
+                loads = np.maximum(_normal_loads(model, forces, thdd), 0.0)
+                onset = ~slipping & (np.abs(forces) > model.friction * loads)
                 slip_dir = np.where(onset, np.sign(forces), slip_dir)
                 slipping = slipping | onset
-                stick = slipping & ~onset & (np.sign(thd - H @ nu) != slip_dir)
-                if np.any(stick):
-                    slipping = slipping & ~stick
-                    nu = model.stick(nu, thd, modes, th, ~slipping)
-                    thd = np.where(slipping, thd, model.jacobian(modes) @ nu)
+                stick = slipping & ~onset & (np.sign(thd - hnu) != slip_dir)
+                for b in np.flatnonzero(stick.any(axis=1)):
+                    slipping[b] &= ~stick[b]
+                    nu[b] = model.stick(nu[b], thd[b], tuple(geo.modes[b]), th[b],
+                                        ~slipping[b])
+                    thd[b] = np.where(slipping[b], thd[b], geo.H[b] @ nu[b])
                 slip_dir = np.where(slipping, slip_dir, 0.0)
-            new = model.modes(th)
-            if new != modes:
-                ks_old, _ = model.roller_rows(modes, th)
-                current = ks_old @ nu
+            if changed.size:
+                new = _geometry(model, th, new_modes)
+            for b in changed:
+                old_m, new_m = tuple(int(m) for m in geo.modes[b]), tuple(
+                    int(m) for m in new.modes[b])
+                current = geo.ks[b] @ nu[b]
                 for i in range(3):  # leaving rollers keep their spin
-                    spins[i, modes[i]] = current[i]
-                entering = np.array([spins[i, new[i]] for i in range(3)])
+                    spins[b, i, old_m[i]] = current[i]
+                entering = spins[b, np.arange(3), list(new_m)]
+                lost = 0.0
                 if impacts:
-                    nu, lost = model.planar_impact(nu, modes, new, th, entering)
-                else:
-                    lost = 0.0
+                    nu[b], lost = model.planar_impact(nu[b], old_m, new_m, th[b], entering)
                 for i in range(3):
-                    if new[i] != modes[i]:
-                        switches.append(((k + 1) * dt, i, lost))
-                modes = new
-                thd = np.where(slipping, thd, model.jacobian(modes) @ nu)
+                    if new_m[i] != old_m[i]:
+                        switches[b].append(((k + 1) * dt, i, lost))
+                thd[b] = np.where(slipping[b], thd[b], new.H[b] @ nu[b])
+            if changed.size:
+                geo = new
         if not np.all(np.isfinite(nu)):
             raise FloatingPointError(f"hybrid model diverged at t = {(k + 1) * dt:.3f} s")
-        out_pose[k + 1], out_nu[k + 1], out_th[k + 1], out_tau[k] = pose, nu, th, tau
-    out_tau[-1] = out_tau[-2] if n else 0.0
-    return HybridRun(np.arange(n + 1) * dt, out_pose, out_nu, out_th, out_tau, switches)
+        out_pose[:, k + 1], out_nu[:, k + 1], out_th[:, k + 1] = pose, nu, th
+        out_tau[:, k] = tau
+    if n:
+        out_tau[:, -1] = out_tau[:, -2]
+    t = np.arange(n + 1) * dt
+    return [HybridRun(t, out_pose[b], out_nu[b], out_th[b], out_tau[b], switches[b])
+            for b in range(nb)]
+
+
+def kinetic_energies(model: OmniHybrid, twists: np.ndarray, thetas: np.ndarray) -> np.ndarray:
+    """``½ νᵀ (P + I_w H(σ)ᵀH(σ) + I_r Σ k kᵀ) ν`` of (N, 3) twists at (N, 3) wheel angles
+    (σ the lowest rollers): :meth:`OmniHybrid.kinetic_energy`, vectorised."""
+    geo = _geometry(model, np.asarray(thetas, float))
+    H, ks = geo.H, geo.ks
+    m = (model.wheel_inertia * H.transpose(0, 2, 1) @ H
+         + model.roller_axial * ks.transpose(0, 2, 1) @ ks)
+    m += np.diag([model.mass, model.mass, model.inertia[2, 2]])
+    return 0.5 * np.einsum("ni,nij,nj->n", twists, m, twists)
+
+
+def rolling_rates(model: OmniHybrid, twists: np.ndarray, thetas: np.ndarray) -> np.ndarray:
+    """``θ̇ = H(σ) ν`` of (N, 3) twists at (N, 3) wheel angles (σ the lowest rollers)."""
+    H = _geometry(model, np.asarray(thetas, float)).H
+    return (H @ np.asarray(twists, float)[..., None])[..., 0]

@@ -1,8 +1,10 @@
-"""The hybrid omni model's parameters, read from a compiled omni3 model.
+"""omni3's analytic models' parameters, read from the compiled model (the one reader).
 
 Everything :class:`~wmr_mujoco.analytic.omni_hybrid.OmniHybrid` needs comes from the
 compiled ``MjModel`` (masses, inertias, armatures, roller placement and collider sizes)
-and the drive law from its actuators (gain and ``forcerange``): nothing is fitted.
+and the drive law from its actuators (gain and ``forcerange``): nothing is fitted. The
+reduced Lagrange model (:func:`dynamics_from_model`) is the hybrid model without its rows,
+rollers, slip and impacts (:func:`lagrange`), from the same reading.
 """
 
 from __future__ import annotations
@@ -10,7 +12,10 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
+from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.analytic.omni_hybrid import Drive, OmniHybrid, RollerGeometry
+from wmr_mujoco.models.actuation import ActuationMode
 
 WHEELS = ("wheel1", "wheel2", "wheel3")
 
@@ -105,11 +110,29 @@ def hybrid_from_model(model: mujoco.MjModel, compliant: bool = True) -> OmniHybr
         contact_timeconst=timeconst if compliant else 0.0)
 
 
-def drive_from_model(model: mujoco.MjModel, mode: str) -> Drive:
+def lagrange(hy: OmniHybrid) -> OmniDynamics:
+    """The reduced Lagrange model of the same robot: ``M``, ``I_z``, ``I_w`` (with the
+    armature), mean lever L, no rows, roller spin, slip or impacts."""
+    return OmniDynamics(mass=hy.mass, yaw_inertia=float(hy.inertia[2, 2]),
+                        wheel_inertia=hy.wheel_inertia,
+                        layout=ok.symmetric_layout(hy.radius, hy.distance))
+
+
+def dynamics_from_model(model: mujoco.MjModel) -> OmniDynamics:
+    """Lagrange-model parameters read from the compiled omni model.
+
+    ``M``: total mass; ``I_z``: composite yaw inertia about the centre; ``I_w``: each
+    wheel's inertia about its axle (hub, rollers with parallel-axis terms, and the
+    hinge's armature). The rollers' spin about their own axes is neglected.
+    """
+    return lagrange(hybrid_from_model(model, compliant=False))
+
+
+def drive_from_model(model: mujoco.MjModel, mode: ActuationMode | str) -> Drive:
     """Drive law of wheel 1's actuator: gain ``k_v`` (rate mode) and ``forcerange``."""
     act = model.actuator(WHEELS[0])
     limit = float(act.forcerange[1])
-    if mode == "rate":
+    if ActuationMode(mode) is ActuationMode.RATE:
         return Drive("rate", limit, gain=float(act.gainprm[0]))
     return Drive("torque", limit)
 

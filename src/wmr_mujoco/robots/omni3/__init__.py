@@ -1,0 +1,164 @@
+"""The omni robot: three omni wheels at 120°, two staggered rows of free barrel rollers each.
+
+Kinematic inputs ``(u, v, r)``: body twist (``world_frame`` scenarios give world rates
+``(Ẋ, Ẏ, ψ̇)``), driven as wheel rates ``θ̇ = H ν``; state ``(X, Y, ψ)``. The dynamic
+scenarios of issue 16 are measurement scenarios, one module per concept: step commands
+and torque inputs (:mod:`.dynamics`), coasting (:mod:`.coasting`) and the slip onset
+(:mod:`.traction`), all against the hybrid model
+(:mod:`wmr_mujoco.analytic.omni_hybrid`) read from the compiled model (:mod:`.model`);
+the dynamic runs are simulated together (:mod:`.runs`).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
+from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.models.builders import omni3 as builder
+from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
+from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.omni3 import coasting, dynamics, traction
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose, body_twist
+from wmr_mujoco.validation.metrics import Metric, Target, Trace
+from wmr_mujoco.validation.omni_wheels import (
+    DIRECTIONS_DEG,
+    ROLLER_RATE_PCT,
+    SPEED,
+    YAW_RATE,
+    omni_probes,
+    translation,
+    twist_inputs,
+)
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.signals import Piecewise, Signal, const
+
+NAME = "omni3"
+WHEELS = ("wheel1", "wheel2", "wheel3")
+#: Key of the body-velocity target of torque runs.
+VELOCITY_PCT = "body velocity error % of peak"
+#: Gravity, m/s².
+GRAVITY = 9.81
+
+
+@dataclass(frozen=True)
+class OmniKinematics:
+    """Omni robot: ``x = (X, Y, ψ)``; controls ``θ̇ = H ν``.
+
+    With ``world_frame`` the inputs are world rates ``(Ẋ, Ẏ, ψ̇)``, turned into a body
+    twist with the analytic heading (an open-loop schedule, known in advance).
+    """
+
+    params: OmniParams
+    world_frame: bool = False
+    mode: ActuationMode = ActuationMode.RATE
+    state_names: tuple[str, ...] = ("x", "y", "heading")
+    state_units: tuple[str, ...] = POSE_UNITS
+    wheel_joints: tuple[str, ...] = WHEELS
+    lateral_wheels: tuple[str, ...] = ()
+
+    @functools.cached_property
+    def layout(self) -> ok.WheelLayout:
+        """Ideal wheel layout."""
+        return ok.symmetric_layout(self.params.wheel_radius, self.params.wheel_distance)
+
+    @functools.cached_property
+    def jacobian(self) -> np.ndarray:
+        """``H`` with ``θ̇ = H ν``."""
+        return ok.wheel_jacobian(self.layout)
+
+    def twist(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Body twist commanded by input ``u``."""
+        if self.world_frame:
+            return ok.world_to_body(analytic_state[2], u)
+        return np.asarray(u, float)
+
+    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Wheel rates ``θ̇ = H ν``."""
+        return self.jacobian @ self.twist(u, analytic_state)
+
+    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """``(Ẋ, Ẏ, ψ̇) = R(ψ) ν``."""
+        return ok.body_to_world(x[2], self.twist(u, x))
+
+    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """Pose of the ``base`` site."""
+        return base_pose(model, data)
+
+
+def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
+                      params: RobotParams | None) -> OmniKinematics:
+    """The ideal omni kinematics."""
+    return OmniKinematics(params_or_default(params, OmniParams),
+                          world_frame=scenario.world_frame)
+
+
+TARGETS: Mapping[str, Target] = {
+    mt.POSITION_PCT: req.position_pct(1.0),
+    mt.HEADING_DEG: req.HEADING_DEG,
+    mt.CENTRE_DRIFT_M: Target.requirement(
+        0.01 * OmniParams().wheel_distance,
+        "issue 3: turning in place keeps the centre within 1 % of the wheel distance L"),
+    ROLLER_RATE_PCT: Target.requirement(5.0, "issue 3: roller spin rates within 5 % of "
+                                             "slide speed / ρ (median over contacts)"),
+}
+def square_with_rotation(side: float = 0.6, speed: float = 0.24, yaw_rate: float = 0.4
+                         ) -> tuple[Signal, ...]:
+    """World-frame square (four legs) while the platform spins at a constant rate."""
+    leg = side / speed
+    ramp = 0.3
+    xs, ys = [(0.0, 0.0)], [(0.0, 0.0)]
+    for k in range(4):
+        t0 = 0.5 + k * leg
+        vx, vy = speed * math.cos(k * math.pi / 2), speed * math.sin(k * math.pi / 2)
+        for knots, v in ((xs, vx), (ys, vy)):
+            knots += [(t0, 0.0), (t0 + ramp, v), (t0 + leg - ramp, v), (t0 + leg, 0.0)]
+    return (Piecewise(tuple(xs)), Piecewise(tuple(ys)), const(yaw_rate, 0.5))
+
+
+#: Every dynamic run, simulated together once per parameter set (:mod:`.runs`).
+DYNAMIC_SPECS = (*dynamics.STEP_SPECS, *dynamics.TORQUE_SPECS, coasting.COAST_SPEC)
+
+SCENARIOS = (
+    *(Scenario(NAME, f"translate {deg}°", twist_inputs(translation(deg)))
+      for deg in DIRECTIONS_DEG),
+    Scenario(NAME, "rotate", twist_inputs((0.0, 0.0, YAW_RATE))),
+    Scenario(NAME, "translate+rotate", twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE))),
+    Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True),
+    *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_step,
+               duration=s.duration, description="rate servo stepped to a twist (no ramp): "
+               "physics vs the hybrid model (servo law, torque limit) and the kinematics")
+      for s in dynamics.STEP_SPECS),
+    *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_torque,
+               duration=s.duration, description="constant wheel torques from rest: physics "
+               "vs the hybrid, Lagrange and kinematic models, windowed over the run")
+      for s in dynamics.TORQUE_SPECS),
+    Scenario(NAME, coasting.COAST_SPEC.name, kind=ScenarioKind.MEASUREMENT,
+             evaluate=coasting.evaluate_coast, duration=coasting.COAST_TIME,
+             description="drive at (u, 0, r), motors off: yaw-rate decay, turn rate of "
+                         "the velocity, energy lost per second"),
+    Scenario(NAME, "slip onset", kind=ScenarioKind.MEASUREMENT,
+             evaluate=traction.evaluate_slip, duration=traction.RAMP_TIME,
+             description="one slowly ramped push along x: the torque at which a wheel "
+                         "slips, against the traction limit μ N with load transfer"),
+)
+
+SPEC = RobotSpec(
+    name=NAME,
+    description="three omni wheels at 120 degrees, each with two staggered rows of "
+                "passive barrel rollers on free hinges",
+    params_type=OmniParams, build=builder.build, folder="omni3", robot_file="omni3.xml",
+    adapters={ScenarioKind.KINEMATIC: kinematic_adapter},
+    probes=(omni_probes,),
+    targets=TARGETS, scenarios=SCENARIOS, demo_scenario="square with rotation",
+    bench_scenario="translate+rotate", render_scenario="square with rotation",
+)
