@@ -7,8 +7,13 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
-from wmr_mujoco.analytic.omni_hybrid import Drive, OmniHybrid, RollerGeometry, simulate
+from wmr_mujoco.analytic.omni_hybrid import (
+    Drive,
+    OmniHybrid,
+    RollerGeometry,
+    simulate,
+    simulate_batch,
+)
 
 # omni3-like numbers, typed here (not read from the code under test).
 B, R_WHEEL, E = 0.0075, 0.05, 0.006
@@ -80,52 +85,19 @@ def test_jacobian_is_lynch_park_with_the_row_lever():
                                    atol=1e-12)
 
 
-@pytest.mark.parametrize("make", ["hybrid", "lagrange"])
 @pytest.mark.parametrize("flip", [False, True])
-def test_steady_turn_is_a_circle_newton_euler(make, flip):
-    """Newton–Euler in the world frame: a platform at speed u turning at r moves on a
-    circle of radius u/r only if the net force is the centripetal M u r towards the
-    centre. Torques τ = H⁻ᵀ c(ν) hold ν̇ = 0 in the model; integrate the WORLD path and
-    check it is that circle. A flipped ψ̇-term gives the wrong force: the path leaves the
-    circle by centimetres within half a turn, against ~1e-7 m of RK4 at 5 ms (global
-    error ~ ρ (r Δt)⁴ / 5 per radian)."""
-    nu0 = np.array([0.3, 0.0, 1.0])
-    if make == "hybrid":
-        model = dataclasses.replace(MODEL, roller_axial=0.0)
-        modes = (0, 0, 0)
-        H = model.jacobian(modes)
+def test_steady_turn_is_a_circle_newton_euler(flip, steady_turn_off_circle):
+    """The hybrid model's ψ̇ cross-term against Newton–Euler in the world frame (see the
+    fixture): a flipped term leaves the circle by centimetres within half a turn, against
+    ~1e-7 m of RK4 at 5 ms (global error ~ ρ (r Δt)⁴ / 5 per radian)."""
+    model = dataclasses.replace(MODEL, roller_axial=0.0)
+    modes = (0, 0, 0)
 
-        def accel(nu, tau):
-            return model.body_acceleration(nu, np.full(3, np.pi), modes, tau)
-        c_term = model.velocity_term
-    else:
-        model = OmniDynamics(2.54, 0.0245, 0.0042, ok.symmetric_layout(R_WHEEL, 0.15))
-        H = model.H
-        accel = model.body_acceleration
-        c_term = model.velocity_term
-    sign = -1.0 if flip else 1.0
-    # The centripetal force, derived in the world frame: m v²/ρ towards the centre, which
-    # for u > 0, r > 0 lies on the body's left (+y).
-    f_world = np.array([0.0, 2.54 * nu0[0] ** 2 / (nu0[0] / nu0[2]), 0.0])
-    tau = np.linalg.solve(H.T, sign * c_term(nu0))
-    np.testing.assert_allclose(H.T @ tau, sign * f_world, atol=1e-12)
-    x = np.array([0.0, 0.0, 0.0, *nu0])
-    dt = 5e-3
-    for _ in range(int(np.pi / dt)):  # half a circle
-        def f(s):
-            return np.concatenate([ok.body_to_world(s[2], s[3:]), accel(s[3:], tau)])
-        k1 = f(x)
-        k2 = f(x + 0.5 * dt * k1)
-        k3 = f(x + 0.5 * dt * k2)
-        k4 = f(x + dt * k3)
-        x = x + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-    radius = nu0[0] / nu0[2]
-    off_circle = abs(np.hypot(x[0], x[1] - radius) - radius)
-    if flip:
-        assert off_circle > 0.01
-    else:
-        assert off_circle < 1e-6
-        assert np.hypot(x[0], x[1] - radius) == pytest.approx(radius, abs=1e-6)
+    def accel(nu, tau):
+        return model.body_acceleration(nu, np.full(3, np.pi), modes, tau)
+    off = steady_turn_off_circle(accel, model.jacobian(modes), model.velocity_term,
+                                 model.mass, flip)
+    assert off > 0.01 if flip else off < 1e-6
 
 
 def test_roller_term_conserves_energy():
@@ -344,3 +316,32 @@ def test_arc_moment_is_the_weight_potential_gradient():
         grad[i] = (v_plus - v_minus) / 2e-6
     expect = np.linalg.solve(m.planar_mass(modes, th), m.jacobian(modes).T @ (-grad))
     np.testing.assert_allclose(with_arc, expect, atol=1e-6 * np.max(np.abs(expect)))
+
+
+def test_batch_members_equal_their_single_runs():
+    """simulate_batch vectorises the runs: a rate-servo and a torque run integrated
+    together give what each gives alone (no cross-talk between members)."""
+    drives = [Drive("rate", 0.5, gain=0.5), Drive("torque", 0.5)]
+    inputs = np.stack([np.tile([6.0, -3.0, 2.0], (60, 1)), np.tile([0.02, 0.0, -0.02],
+                                                                    (60, 1))])
+    th0 = np.array([[0.1, 0.2, 0.3], [1.0, 2.0, 3.0]])
+    both = simulate_batch(MODEL, drives, inputs, 0.004, np.zeros((2, 3)), np.zeros((2, 3)),
+                          th0)
+    for b in range(2):
+        alone = simulate(MODEL, drives[b], inputs[b], 0.004, np.zeros(3), np.zeros(3), th0[b])
+        np.testing.assert_allclose(both[b].twist, alone.twist, rtol=0, atol=1e-12)
+        assert both[b].switches == alone.switches
+    assert both[0].switches  # the rate run hands over rollers within the window
+
+
+def test_closed_form_roller_derivative_matches_a_numerical_one():
+    """∂k/∂φ of the contact roller (closed form) against a central difference of k over
+    the wheel angle (∂φ/∂θ = 1), across a roller's arc: agreement to the difference's
+    O(ε²) truncation."""
+    for theta in np.linspace(0.05, 0.4, 6):
+        th = np.full(3, theta)
+        modes = MODEL.modes(th)
+        _k, dk = MODEL.roller_rows(modes, th)
+        eps = 1e-6
+        num = (MODEL.roller_rows(modes, th + eps)[0] - MODEL.roller_rows(modes, th - eps)[0])
+        np.testing.assert_allclose(dk, num / (2 * eps), rtol=1e-6, atol=1e-6)

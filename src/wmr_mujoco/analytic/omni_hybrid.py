@@ -621,10 +621,10 @@ def _geometry(model: OmniHybrid, thetas: np.ndarray, modes: np.ndarray | None = 
     rho = g.half_width ** 2 * c / h
     drho_rho = -(s * h + c * dh) / (c * h)
     if H is None:
-        H = np.empty(modes.shape + (3,))
+        H = np.empty((*modes.shape, 3))
         H[..., :2] = model.drive_dirs[:, :2] / model.radius
         H[..., 2] = (model.distance - g.offsets[modes]) / model.radius
-    ks = np.empty(modes.shape + (3,))
+    ks = np.empty((*modes.shape, 3))
     ks[..., :2] = -model.radial[:, :2]
     ks[..., 2] = xc
     ks /= rho[..., None]
@@ -679,8 +679,7 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                    roller_rates0: np.ndarray | None = None, substeps: int = 4,
                    impacts: bool = True, slip: bool = True, arc: bool = False
                    ) -> list[HybridRun]:
-    """Integrate B runs of the hybrid model at once: RK4 on the continuous phase, impact
-    map at switches.
+    """Integrate B runs of the hybrid model at once (RK4; the impact map at switches).
 
     The continuous phase is vectorised over the runs (numpy, (B, 3) arrays); the rare
     events (a roller hand-over, a wheel re-sticking) are applied to the runs that have
@@ -814,8 +813,10 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
 
 
 def kinetic_energies(model: OmniHybrid, twists: np.ndarray, thetas: np.ndarray) -> np.ndarray:
-    """``½ νᵀ (P + I_w H(σ)ᵀH(σ) + I_r Σ k kᵀ) ν`` of (N, 3) twists at (N, 3) wheel angles
-    (σ the lowest rollers): :meth:`OmniHybrid.kinetic_energy`, vectorised."""
+    """``½ νᵀ (P + I_w H(σ)ᵀH(σ) + I_r Σ k kᵀ) ν`` of (N, 3) twists at (N, 3) wheel angles.
+
+    σ the lowest rollers: :meth:`OmniHybrid.kinetic_energy`, vectorised.
+    """
     geo = _geometry(model, np.asarray(thetas, float))
     H, ks = geo.H, geo.ks
     m = (model.wheel_inertia * H.transpose(0, 2, 1) @ H

@@ -136,8 +136,10 @@ class Metric(NamedTuple):
 
 @dataclass(frozen=True)
 class Row:
-    """One metric of one scenario, judged (``passed`` None: not judged; ``open``: an open
-    target, its figure shown against it)."""
+    """One metric of one scenario, judged.
+
+    ``passed`` None: not judged; ``open``: an open target, its figure shown against it.
+    """
 
     robot: str
     scenario: str
@@ -152,8 +154,10 @@ class Row:
 
     @staticmethod
     def of(robot: str, scenario: str, m: Metric) -> Row:
-        """The row of a metric: passes when ``|value| <= target`` (and is finite); an open
-        target's row is not judged (``passed`` None, ``open`` True)."""
+        """The row of a metric: passes when ``|value| <= target`` (and is finite).
+
+        An open target's row is not judged (``passed`` None, ``open`` True).
+        """
         t = m.target
         meets = t is not None and bool(np.isfinite(m.value) and abs(m.value) <= t.value)
         passed = None if t is None or not t.judged else meets

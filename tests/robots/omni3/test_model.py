@@ -5,15 +5,16 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.loading import load
-from wmr_mujoco.omni_hybrid_model import (
+from wmr_mujoco.models.loading import load
+from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3.model import (
     WHEELS,
     drive_from_model,
+    dynamics_from_model,
     hybrid_from_model,
     roller_rates,
     static_penetration,
 )
-from wmr_mujoco.params import OmniParams
 
 
 @pytest.fixture(scope="module")
@@ -25,6 +26,9 @@ def test_parameters_match_the_design(model):
     """Independent: the OmniParams design values (mass budget, geometry)."""
     p = OmniParams()
     hy = hybrid_from_model(model, compliant=False)
+    lag = dynamics_from_model(model)  # the same reading, without rows and rollers
+    assert (lag.mass, lag.yaw_inertia, lag.wheel_inertia) == (
+        hy.mass, hy.inertia[2, 2], hy.wheel_inertia)
     n = 2 * p.rollers_per_row
     assert hy.mass == pytest.approx(p.platform_mass + 3 * (p.hub_mass + n * p.roller_mass))
     assert hy.radius == pytest.approx(p.wheel_radius, rel=1e-9)
@@ -72,7 +76,7 @@ def test_lift_reproduces_wheel_and_roller_rates(model):
         data.ctrl[acts] = H @ np.array([0.3, 0.1, 1.0]) * min(1.0, k * dt / 0.5)
         mujoco.mj_step(model, data)
     mujoco.mj_forward(model, data)
-    from wmr_mujoco.adapters import body_twist
+    from wmr_mujoco.validation.adapters import body_twist
     th = np.array([data.joint(w).qpos[0] for w in WHEELS])
     modes = hy.modes(th)
     q = hy.lift(body_twist(model, data), modes, th)
@@ -85,6 +89,7 @@ def test_lift_reproduces_wheel_and_roller_rates(model):
 def test_drive_and_penetration(model):
     p = OmniParams()
     servo = drive_from_model(model, "rate")
+    assert drive_from_model(model, "torque").mode == "torque"
     assert servo.gain == pytest.approx(p.drive.wheel_kv)
     assert servo.torque_limit == pytest.approx(p.drive.wheel_torque_limit)
     # Soft contact under a third of the weight: tens of µm, far below the roller size.

@@ -20,7 +20,6 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
@@ -28,8 +27,8 @@ from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.omni3 import coasting, dynamics, traction
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
-from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose, body_twist
-from wmr_mujoco.validation.metrics import Metric, Target, Trace
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.omni_wheels import (
     DIRECTIONS_DEG,
     ROLLER_RATE_PCT,

@@ -117,8 +117,10 @@ def pose_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float
 
 def twist_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float,
                   targets: dict[str, Target | None] | None = None) -> list[Metric]:
-    """Worst error of u, v (m/s) and r (rad/s), each in % of its scale (judged against
-    ``targets[name]`` where given), and RMS."""
+    """Worst error of u, v (m/s) and r (rad/s), each in % of its scale, and RMS.
+
+    Each worst error is judged against ``targets[name]`` where given.
+    """
     targets = targets or {}
     speed = float(np.max(np.linalg.norm(ref[:, :2], axis=1)))
     peak_r = float(np.max(np.abs(ref[:, 2])))
@@ -203,8 +205,10 @@ def lagrange_twists(params: RobotParams | None, torques: np.ndarray, twist0: np.
 
 
 def evaluate_torque(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
-    """Torque inputs: the hybrid model against the open targets; Lagrange and the old
-    single-instant figure reported."""
+    """Torque inputs: the hybrid model judged (or open), Lagrange and the old figure reported.
+
+    The old figure: ``|ν_Lagrange − ν| / |ν|`` at the last instant, mixed units.
+    """
     run = _run(scenario, params, TORQUE_SPECS)
     L = hybrid(params).distance  # type: ignore[arg-type]
     tau = np.asarray(run.spec.command)

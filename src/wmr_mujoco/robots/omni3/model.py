@@ -111,8 +111,11 @@ def hybrid_from_model(model: mujoco.MjModel, compliant: bool = True) -> OmniHybr
 
 
 def lagrange(hy: OmniHybrid) -> OmniDynamics:
-    """The reduced Lagrange model of the same robot: ``M``, ``I_z``, ``I_w`` (with the
-    armature), mean lever L, no rows, roller spin, slip or impacts."""
+    """The reduced Lagrange model of the same robot.
+
+    ``M``, ``I_z``, ``I_w`` (with the armature), mean lever L; no rows, roller spin, slip
+    or impacts.
+    """
     return OmniDynamics(mass=hy.mass, yaw_inertia=float(hy.inertia[2, 2]),
                         wheel_inertia=hy.wheel_inertia,
                         layout=ok.symmetric_layout(hy.radius, hy.distance))

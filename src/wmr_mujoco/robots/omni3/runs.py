@@ -176,7 +176,7 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None
     starts: dict[str, np.ndarray] = {}
     states: dict[str, np.ndarray] = {}
     # 1. Lead-ins (rate servo) and step commands from the settled rate-mode start.
-    rate_model, rate_data = models[ActuationMode.RATE]
+    rate_model, _rate_data = models[ActuationMode.RATE]
     limit = float(rate_model.actuator(WHEELS[0]).ctrlrange[1])
     groups: dict[ActuationMode, list[tuple[str, np.ndarray]]] = {m: [] for m in ActuationMode}
     for s in specs:

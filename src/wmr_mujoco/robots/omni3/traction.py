@@ -8,12 +8,18 @@ s, so each wheel's onset solves ``s |F₁| = μ (N₀ + s N₁)``.
 
 Measurement (:func:`measure_slip_onset`): ONE run in torque mode whose scale ramps
 linearly, ``s(t) = s₀ + ṡ t``, from rest. The slip speed of wheel i,
-``|r (θ̇_i − (H(σ) ν)_i)|``, is read from the physics at every step; the onset is the
-scale at the first step where it exceeds ``v_th``. Resolution (derived): once the
-traction saturates at ``μ N``, the excess torque ``ṡ |p_i| (t − t*)`` spins the wheel
-up alone, ``I_w d(slip)/dt / r = ṡ |p_i| (t − t*)``, so the slip reaches ``v_th`` after
-``Δt = √(2 I_w v_th / (r ṡ |p_i|))``; the reading lags the onset by at most
-``ṡ (Δt + Δt_step)``, the stated resolution.
+``|r (θ̇_i − (H(σ) ν)_i)|``, is read from the physics at every step. Below the limit it
+ripples (each roller hand-over jolts the contact, by up to ~1 cm/s); past it, it grows
+for good. The reading is the scale from which the slip stays above ``v_th`` to the end
+of the ramp. It lags the onset (derived): once the traction saturates at ``μ N`` the
+excess torque ``ṡ (t − t*)`` spins the wheel up alone, ``I_w d(slip)/dt / r = ṡ (t −
+t*)``, so the slip reaches ``v_th`` after ``Δt = √(2 I_w v_th / (r ṡ))``: the onset is the
+reading minus ``ṡ Δt``, to within the sampling ``ṡ Δt_step`` (the stated resolution).
+
+The prediction is quasi-static (at rest); during the ramp the robot speeds up and the
+hand-overs modulate the loads, so the ramp is short (0.3 s): a slower ramp reaches the
+onset at a higher speed (the measured onset moves by a few % between 0.3 and 0.5 s
+ramps).
 """
 
 from __future__ import annotations
@@ -35,11 +41,11 @@ from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 SLIP = Target.requirement(5.0, "issue 16: slip-onset torque predicted within 5 %")
 #: Torque pattern of the scenario (a push along x), scaled to a largest entry of 1.
 PATTERN = (0.0, -1.0, 1.0)
-#: Slip speed that counts as slipping, m/s (above the soft contact's creep).
-SLIP_SPEED = 0.01
+#: Slip speed that counts as slipping for good, m/s.
+SLIP_SPEED = 0.003
 #: The ramp: from this fraction of the predicted onset to ``RAMP_END`` of it, in
 #: ``RAMP_TIME`` seconds.
-RAMP_START, RAMP_END, RAMP_TIME = 0.6, 1.3, 0.25
+RAMP_START, RAMP_END, RAMP_TIME = 0.7, 1.3, 0.3
 
 
 def traction_and_load(hy: oh.OmniHybrid, torques: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -75,7 +81,8 @@ def measure_slip_onset(pattern: tuple[float, float, float] = PATTERN,
     """One ramped run (module docstring).
 
     Returns:
-        ``(measured onset, resolution, predicted onset, scales (N,), slip speeds (N, 3))``,
+        ``(measured onset (reading − lag), resolution, predicted onset, scales (N,),
+        slip speeds (N, 3))``,
         N·m for the scale of the pattern's largest entry; onset NaN if no wheel slipped.
 
     Raises:
@@ -98,10 +105,11 @@ def measure_slip_onset(pattern: tuple[float, float, float] = PATTERN,
     states = simulate(model, data, scales[:, None] * pat)
     _, twist, th, rates = base_states(model, states[1:])
     slip = np.abs(hy.radius * (rates - oh.rolling_rates(hy, twist, th)))
-    over = np.flatnonzero((slip > SLIP_SPEED).any(axis=1))
-    measured = float(scales[over[0]]) if over.size else math.nan
-    lag = math.sqrt(2 * hy.wheel_inertia * SLIP_SPEED / (hy.radius * rate))
-    return measured, rate * (lag + dt), predicted, scales, slip
+    below = np.flatnonzero(~(slip > SLIP_SPEED).any(axis=1))
+    last = below[-1] + 1 if below.size else 0
+    lag = rate * math.sqrt(2 * hy.wheel_inertia * SLIP_SPEED / (hy.radius * rate))
+    measured = float(scales[last]) - lag if last < n else math.nan
+    return measured, rate * dt, predicted, scales, slip
 
 
 def evaluate_slip(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
@@ -114,8 +122,8 @@ def evaluate_slip(scenario: Scenario, params: RobotParams | None) -> Measurement
                          f"{predicted:.3g} N·m")
     metrics = [Metric("slip-onset torque: predicted vs physics",
                       100 * abs(predicted - measured) / measured, "% of physics", SLIP,
-                      f"physics {measured:.4g} N·m (reading lags the onset by at most "
-                      f"{resolution:.2g} N·m), predicted {predicted:.4g} N·m"),
+                      f"physics {measured:.4g} ± {resolution:.2g} N·m (the ramp's reading "
+                      f"minus its derived lag), predicted {predicted:.4g} N·m"),
                Metric("slip-onset torque, physics", measured, "N·m"),
                Metric("slip-onset torque, predicted", predicted, "N·m"),
                Metric("slip-onset resolution", resolution, "N·m")]
