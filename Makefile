@@ -39,9 +39,11 @@ renders: $(STAMP)
 	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
 	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
 
-# The roller design study and peer comparison in models/omni3/README.md.
+# The roller design study and peer comparison in models/omni3/README.md; omni3's coasting
+# energy budget and dynamics tables in docs/omni-dynamics.md.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
+	$(BIN)/python -m wmr_mujoco.bench.omni_energy_study
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

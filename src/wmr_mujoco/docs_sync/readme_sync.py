@@ -1,7 +1,8 @@
 """Paste the latest reports into the README: ``python -m wmr_mujoco.docs_sync.readme_sync``.
 
-``make demo`` writes ``reports/summary.md`` and ``make bench`` writes ``reports/bench.md``;
-this copies them between the README's ``validation results`` and ``benchmarks`` markers
+``make demo`` writes ``reports/summary.md`` and ``reports/open.md`` (the open targets) and
+``make bench`` writes ``reports/bench.md``; this copies them between the README's
+``validation results``, ``open targets`` and ``benchmarks`` markers
 (:mod:`wmr_mujoco.docs_sync.markers`), so that every figure in the README comes from a run of the
 code, never from typing. ``make readme`` runs it.
 """
@@ -20,6 +21,7 @@ from wmr_mujoco.validation.report import REPORTS_DIR
 
 #: README marker key -> (report file, command that writes it).
 SECTIONS = {"validation results": ("summary.md", "make demo"),
+            "open targets": ("open.md", "make demo"),
             "benchmarks": ("bench.md", "make bench")}
 
 

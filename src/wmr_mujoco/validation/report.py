@@ -120,6 +120,23 @@ def summary_table(results: Sequence[ScenarioResult]) -> str:
     return "\n".join(lines)
 
 
+def open_table(results: Sequence[ScenarioResult]) -> str:
+    """Every open target: figure, required bound, where it was asked and why it is missed.
+
+    An empty string when none is open.
+    """
+    rows = [(res, r) for res in results for r in res.rows if r.open]
+    if not rows:
+        return ""
+    lines = ["| robot | scenario | metric | figure | target | verdict | asked for; why open |",
+             "|---|---|---|---|---|---|---|"]
+    for res, r in rows:
+        lines.append(f"| {r.robot} | {res.scenario.name} | {_cell_text(r.metric)} | "
+                     f"{_fmt(r.value)} {r.unit} | ≤ {_fmt(r.target or math.nan)} {r.unit} | "
+                     f"{r.verdict} | {_cell_text(r.basis)} |")
+    return "\n".join(lines)
+
+
 def slug(text: str) -> str:
     """File-name-safe version of a label."""
     return re.sub(r"[^a-z0-9]+", "-", text.lower().replace("°", "deg")).strip("-")
@@ -236,7 +253,11 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) 
              f"**{summary_line(results)}.**", ""]
     if failed:
         lines += ["Failed: " + ", ".join(f"`{r.scenario.key}`" for r in failed), ""]
-    lines += ["## Summary", "", summary_table(results), "", "## How the metrics are judged",
+    lines += ["## Summary", "", summary_table(results), ""]
+    if open_table(results):
+        lines += ["## Open targets", "", "Required, not yet met by any model: shown with "
+                  "their figures, counted, not judged.", "", open_table(results), ""]
+    lines += ["## How the metrics are judged",
               "", DEFINITIONS, "", "## Every metric", "",
               markdown_table(results), "", "## Plots", ""]
     for r in results:
@@ -246,4 +267,6 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) 
                       ""]
     write_text_atomic(folder / "validation.json", to_json(results))
     write_text_atomic(folder / "summary.md", summary_table(results) + "\n")
+    write_text_atomic(folder / "open.md", (open_table(results)
+                                           or "No open targets.") + "\n")
     return write_text_atomic(folder / "validation.md", "\n".join(lines) + "\n")

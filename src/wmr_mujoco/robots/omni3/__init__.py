@@ -25,6 +25,7 @@ from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.omni3 import coasting, dynamics, traction
+from wmr_mujoco.robots.omni3.model import WHEELS
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
@@ -42,11 +43,6 @@ from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Piecewise, Signal, const
 
 NAME = "omni3"
-WHEELS = ("wheel1", "wheel2", "wheel3")
-#: Key of the body-velocity target of torque runs.
-VELOCITY_PCT = "body velocity error % of peak"
-#: Gravity, m/s².
-GRAVITY = 9.81
 
 
 @dataclass(frozen=True)
