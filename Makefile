@@ -24,7 +24,8 @@ test: $(STAMP)
 lint: $(STAMP)
 	$(BIN)/ruff check src tests scripts
 
-# Regenerate the checked-in MJCF files from the builders' defaults.
+# Regenerate the checked-in MJCF files from the builders' defaults, the parameter tables
+# and the README's Campion class table.
 models: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.models.export
 
@@ -38,12 +39,19 @@ renders: $(STAMP)
 	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 200 --height 150 --fps 8 --duration 5
 	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
 	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
+	$(BIN)/wmr render whipple --scenario "push at 5 m/s" --out renders/whipple.gif --width 200 --height 150 --fps 8 --duration 8
+	$(BIN)/wmr render whipple --scenario "push at 3 m/s" --out renders/whipple_fall.gif --width 200 --height 150 --fps 8 --duration 3
+	$(BIN)/wmr render diffdrive --scenario "figure eight" --out renders/diffdrive.gif --width 200 --height 150 --fps 8 --duration 5
+	$(BIN)/wmr render single_steer --scenario "slalom" --out renders/single_steer.gif --width 200 --height 150 --fps 8 --duration 4
+	$(BIN)/wmr render double_steer --scenario "tight turn ±1 rad" --out renders/double_steer.gif --width 200 --height 150 --fps 8 --duration 3
 
 # The roller design study and peer comparison in models/omni3/README.md; omni3's coasting
-# energy budget and dynamics tables in docs/omni-dynamics.md.
+# energy budget and dynamics tables in docs/omni-dynamics.md; the Whipple bicycle's
+# fidelity-versus-cost study, eigenvalue table and figure in models/whipple/README.md.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
 	$(BIN)/python -m wmr_mujoco.bench.omni_energy_study
+	$(BIN)/python -m wmr_mujoco.bench.whipple_study
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

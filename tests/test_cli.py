@@ -16,6 +16,14 @@ def test_info(capsys):
     assert "total mass: 14.4000 kg" in out and "rear_wheel" in out and "timestep: 0.002" in out
 
 
+def test_info_of_a_model_without_switchable_actuators(capsys):
+    """The Whipple bicycle's motors carry no rate/torque user data: listed, not switched."""
+    assert main(["info", "whipple"]) == 0
+    out = capsys.readouterr().out
+    assert "total mass: 94.0000 kg" in out and "steer_torque" in out
+    assert "without rate/torque switching" in out
+
+
 def test_unknown_robot_is_exit_2(capsys):
     assert main(["info", "segway"]) == 2
     assert "valid robots are" in capsys.readouterr().err

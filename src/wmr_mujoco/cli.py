@@ -26,9 +26,10 @@ def _cmd_list(_: argparse.Namespace) -> int:
 
 
 def _cmd_info(args: argparse.Namespace) -> int:
-    from wmr_mujoco.info import describe
+    from wmr_mujoco.info import describe, describe_file
 
-    print(describe(args.robot))
+    path = Path(args.robot)
+    print(describe_file(path) if path.suffix == ".xml" else describe(args.robot))
     return 0
 
 
@@ -92,7 +93,8 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
     sub.add_parser("list", help="list the robots").set_defaults(func=_cmd_list)
     info = sub.add_parser("info", help="parameters, joints, actuators, mass, DoF, timestep")
-    info.add_argument("robot", help="a robot name (see `wmr list`)")
+    info.add_argument("robot", help="a robot name (see `wmr list`) or an MJCF scene file "
+                                    "(.xml, with its floor)")
     info.set_defaults(func=_cmd_info)
     sub.add_parser("demo", help="simulate a short manoeuvre of each robot").set_defaults(
         func=_cmd_demo)

@@ -3,13 +3,16 @@
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 
 import mujoco
 
+from wmr_mujoco.models import classify
 from wmr_mujoco.models.actuation import actuation_mode
+from wmr_mujoco.models.builders.common import NUSER_ACTUATOR
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
-from wmr_mujoco.robots import get_spec
+from wmr_mujoco.robots import RobotSpec, get_spec, registered
 
 _JOINT_TYPES = {int(v): k.removeprefix("mjJNT_").lower()
                 for k, v in mujoco.mjtJoint.__members__.items()}
@@ -37,6 +40,29 @@ def _name(model: mujoco.MjModel, objtype: mujoco.mjtObj, i: int) -> str:
     return mujoco.mj_id2name(model, objtype, i) or f"#{i}"
 
 
+def campion_line(model: mujoco.MjModel) -> str:
+    """``Campion class: ...`` from the wheels found in ``model``, or why it has none."""
+    try:
+        return f"Campion class: {classify.summary(classify.classify(model))}"
+    except ValueError as err:
+        return f"Campion class: none ({err})"
+
+
+def describe_file(path: Path) -> str:
+    """``wmr info FILE.xml``: a foreign scene file described as a robot without builder.
+
+    Raises:
+        ValueError: ``path`` is not an existing file.
+    """
+    if not path.is_file():
+        raise ValueError(f"MJCF file {str(path)!r} not found; give a robot name or an "
+                         "existing .xml scene file")
+    spec = RobotSpec(name=path.stem, description=f"model file {path.name}", params_type=None,
+                     build=None, scene=path.resolve())
+    with registered(spec):
+        return describe(spec.name)
+
+
 def describe(robot: str) -> str:
     """Return the text printed by ``wmr info ROBOT``."""
     spec = get_spec(robot)
@@ -51,6 +77,7 @@ def describe(robot: str) -> str:
     lines.append(f"total mass: {mass:.4f} kg    degrees of freedom: {model.nv}    "
                  f"timestep: {model.opt.timestep:g} s    integrator: "
                  f"{mujoco.mjtIntegrator(model.opt.integrator).name.removeprefix('mjINT_')}")
+    lines.append(campion_line(model))
     lines.append("joints:")
     for j in range(model.njnt):
         jtype = _JOINT_TYPES[int(model.jnt_type[j])]
@@ -60,11 +87,11 @@ def describe(robot: str) -> str:
         lines.append(f"  {_name(model, mujoco.mjtObj.mjOBJ_JOINT, j):<22} {jtype:<6}"
                      f" body {_name(model, mujoco.mjtObj.mjOBJ_BODY, model.jnt_bodyid[j])}"
                      f"{extra}")
-    if model.nu and spec.build is not None:
+    if model.nu and spec.build is not None and model.nuser_actuator >= NUSER_ACTUATOR:
         lines.append(f"actuators (mode: {actuation_mode(model).value}; "
                      "switch with wmr_mujoco.set_actuation_mode):")
     elif model.nu:
-        lines.append("actuators (the model file's own):")
+        lines.append("actuators (the model's own, without rate/torque switching):")
     for a in range(model.nu):
         trn = _TRN_TYPES[int(model.actuator_trntype[a])]
         objtype = (mujoco.mjtObj.mjOBJ_TENDON if trn == "tendon" else mujoco.mjtObj.mjOBJ_JOINT)

@@ -71,3 +71,28 @@ def test_summary_line_counts_open_targets():
     assert summary_line([res]) == ("1 of 1 scenarios pass; 1 targets open (shown with "
                                    "their figures, not judged)")
     assert "open" in text_table([res], judged_only=True)
+
+
+def test_summary_headline_escapes_pipes():
+    from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
+    from wmr_mujoco.validation.report import summary_table
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    s = Scenario("disc", "s", (const(1.0),))
+    row = Row.of("disc", "s", Metric("|a − b|", 1.0, "m", Target.derived(2.0, "x")))
+    line = summary_table([ScenarioResult(s, [row], Trace())]).splitlines()[-1]
+    assert line.count(" | ") + 2 == 11 and "\\|a − b\\|" in line
+
+
+def test_plot_series_draws_points_and_curves(tmp_path):
+    import numpy as np
+
+    from wmr_mujoco.validation.metrics import Series
+    from wmr_mujoco.validation.report import plot_series
+
+    x = np.linspace(0.0, 1.0, 11)
+    series = [Series("curve", x, x ** 2, "v", "s", style="k-"),
+              Series("_hidden", x, -x, "v", "s"),
+              Series("points", x[::5], x[::5] ** 2, "v", "s", style="o", color="tab:red")]
+    path = plot_series(series, tmp_path / "f.png", "title")
+    assert path.stat().st_size > 5_000

@@ -18,6 +18,7 @@ from wmr_mujoco.info import flatten_params
 from wmr_mujoco.models.builders import common
 from wmr_mujoco.models.builders.scene import add_scene
 from wmr_mujoco.models.params import WheelParams
+from wmr_mujoco.models.paths import README_PATH
 from wmr_mujoco.robots import ROBOTS, RobotSpec
 
 
@@ -58,8 +59,23 @@ def update_readme(spec: RobotSpec) -> Path | None:
     return readme
 
 
+#: Marker key of the top-level README's class table (:func:`update_class_table`).
+CLASS_TABLE_KEY = "campion classes"
+
+
+def update_class_table(readme: Path = README_PATH) -> Path | None:
+    """Paste the Campion class of every registered robot, computed from its model."""
+    from wmr_mujoco.models.classify import class_table
+    from wmr_mujoco.models.loading import load
+
+    if not has_markers(readme, CLASS_TABLE_KEY):
+        return None
+    replace_between(readme, CLASS_TABLE_KEY, class_table({n: load(n) for n in ROBOTS}))
+    return readme
+
+
 def export_all() -> list[Path]:
-    """Write every robot's robot file, scene file and README parameter table."""
+    """Write every robot's files and README parameter table, and the README class table."""
     written = []
     for spec in ROBOTS.values():
         if spec.build is None or spec.params_type is None or not spec.has_files:
@@ -70,6 +86,9 @@ def export_all() -> list[Path]:
         readme = update_readme(spec)
         if readme is not None:
             written.append(readme)
+    readme = update_class_table()
+    if readme is not None:
+        written.append(readme)
     return written
 
 

@@ -12,9 +12,10 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
+from wmr_mujoco.models.loading import load
 from wmr_mujoco.render import rendering
 from wmr_mujoco.robots import get_spec
-from wmr_mujoco.sim.stepping import SimulationDivergedError
+from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.runner import run_scenario
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -58,6 +59,8 @@ def render_scenario(scenario: Scenario, width: int = 640, height: int = 480, fps
             raise ValueError(f"duration = {duration!r} s; valid range is (0, "
                              f"{scenario.duration:g}] for {scenario.key}")
         scenario = dataclasses.replace(scenario, duration=duration)
+    if scenario.kind is ScenarioKind.MEASUREMENT:
+        return render_free_run(scenario, width, height, fps, camera)
     frames: list[np.ndarray] = []
     sim_trail: list[np.ndarray] = []
     model_trail: list[np.ndarray] = []
@@ -89,6 +92,48 @@ def render_scenario(scenario: Scenario, width: int = 640, height: int = 480, fps
         if result.error.startswith("ValueError: "):
             raise ValueError(result.error.removeprefix("ValueError: "))
         raise SimulationDivergedError(f"{scenario.key}: {result.error}")
+    return np.asarray(frames)
+
+
+def render_free_run(scenario: Scenario, width: int = 640, height: int = 480, fps: int = 30,
+                    camera: str = "track") -> np.ndarray:
+    """Frames of a measurement scenario's free run: its ``start`` state, no control.
+
+    Only the simulated path of the base is drawn (green): a measurement has no analytic
+    trajectory to draw beside it. The run is the scenario's own (same start, same
+    model), for ``scenario.duration`` seconds.
+
+    Raises:
+        ValueError: the scenario has no start state (nothing single to film); the message
+            lists the robot's scenarios that can be rendered.
+        SimulationDivergedError: the run diverged.
+    """
+    if scenario.start is None:
+        spec = get_spec(scenario.robot)
+        ok = [s.name for s in spec.scenarios
+              if s.kind is not ScenarioKind.MEASUREMENT or s.start is not None]
+        raise ValueError(f"{scenario.key} is a measurement without a single run to film; "
+                         f"scenarios that can be rendered: {', '.join(map(repr, ok))}")
+    model = load(scenario.robot)
+    data = mujoco.MjData(model)
+    scenario.start(model, data, None)
+    data.ctrl[:] = 0.0
+    cam = rendering.CameraSettings() if camera == "track" else camera
+    frames: list[np.ndarray] = []
+    trail: list[np.ndarray] = []
+    base = model.site("base").id
+    nstep = round(scenario.duration / model.opt.timestep)
+    every = 1.0 / fps
+    with rendering.Filmer(model, width, height, cam) as filmer:
+        next_t = data.time
+        for _ in range(nstep):
+            if data.time + 1e-9 >= next_t:
+                next_t += every
+                site = data.site_xpos[base]
+                trail.append(np.array([site[0], site[1], TRAIL_Z]))
+                frames.append(filmer.frame(data, [(np.asarray(trail), rendering.SIM_RGBA)]))
+            mujoco.mj_step(model, data)
+            check_healthy(model, data)
     return np.asarray(frames)
 
 

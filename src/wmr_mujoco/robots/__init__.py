@@ -13,7 +13,17 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-from wmr_mujoco.robots import bicycle, disc, disc_free, omni3, tricycle
+from wmr_mujoco.robots import (
+    bicycle,
+    diffdrive,
+    disc,
+    disc_free,
+    double_steer,
+    omni3,
+    single_steer,
+    tricycle,
+    whipple,
+)
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 
 __all__ = ["ROBOTS", "Picture", "RobotSpec", "get_spec", "register", "registered",
@@ -25,6 +35,10 @@ ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
     bicycle.SPEC,
     tricycle.SPEC,
     omni3.SPEC,
+    diffdrive.SPEC,
+    single_steer.SPEC,
+    double_steer.SPEC,
+    whipple.SPEC,
 )}
 
 

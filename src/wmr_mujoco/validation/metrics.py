@@ -177,13 +177,23 @@ class Row:
 
 @dataclass(frozen=True)
 class Series:
-    """A curve for the report's plots (a measurement scenario's own time series)."""
+    """A curve for the report's plots (a measurement scenario's own time series).
+
+    Attributes:
+        label: legend entry (one starting with ``_`` is left out of the legend).
+        x, y: the points.
+        xlabel, ylabel: axis labels; series with the same pair share a panel.
+        style: matplotlib format string: ``"-"`` a curve, ``"o"`` points, ``"k--"`` ...
+        color: matplotlib colour (None: the next of the cycle).
+    """
 
     label: str
     x: np.ndarray
     y: np.ndarray
     xlabel: str = "t [s]"
     ylabel: str = ""
+    style: str = "-"
+    color: str | None = None
 
 
 @dataclass

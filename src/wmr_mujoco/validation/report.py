@@ -115,7 +115,7 @@ def summary_table(results: Sequence[ScenarioResult]) -> str:
                  _cell(_value(res, "final position error", "% of path"), " %"),
                  _cell(_value(res, "worst heading error", "deg"), "°"),
                  _cell(_value(res, "final heading error", "deg"), "°"), slip]
-        lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {headline} | "
+        lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {_cell_text(headline)} | "
                      f"{' | '.join(cells)} | {verdict} |")
     return "\n".join(lines)
 
@@ -188,11 +188,34 @@ def _plot_series(axes: Sequence[Axes], series: Sequence[Series]) -> None:
     for ax, ((xlabel, ylabel), members) in zip(axes, list(groups.items())[:len(axes)],
                                                 strict=False):
         for s in members:
-            ax.plot(s.x, s.y, label=s.label)
+            colour = {} if s.color is None else {"color": s.color}
+            ax.plot(s.x, s.y, s.style, label=s.label, ms=4, **colour)
         ax.set(xlabel=xlabel, ylabel=ylabel)
         ax.legend(fontsize=7)
     for ax in axes[len(groups):]:
         ax.set_axis_off()
+
+
+def plot_series(series: Sequence[Series], path: Path, title: str = "") -> Path:
+    """One figure of curves alone (e.g. a measurement's series for a model README).
+
+    One panel per pair of axis labels, as in the report (three at most).
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    panels = min(3, max(1, len({(s.xlabel, s.ylabel) for s in series})))
+    fig, axes = plt.subplots(1, panels, figsize=(7 * panels, 4.5), squeeze=False)
+    _plot_series(axes[0], series)
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=100)
+    plt.close(fig)
+    return path
 
 
 def plot_scenario(result: ScenarioResult, path: Path) -> Path | None:

@@ -9,7 +9,9 @@ of three kinds (:class:`ScenarioKind`):
 * ``MEASUREMENT``: the scenario carries its own ``evaluate(scenario, params)`` that
   measures something in the physics (an eigenvalue, a steady precession, an energy
   budget) and returns a :class:`MeasurementResult`; the runner judges and reports it
-  like any other.
+  like any other. A measurement whose physics is one free run from a given state (a
+  push, a release) also carries ``start(model, data, params)``, which puts ``data`` in
+  that state; ``wmr render`` then films that run (:mod:`wmr_mujoco.render.video`).
 """
 
 from __future__ import annotations
@@ -26,6 +28,8 @@ from wmr_mujoco.validation.metrics import Metric, Series
 from wmr_mujoco.validation.signals import Signal
 
 if TYPE_CHECKING:
+    import mujoco
+
     from wmr_mujoco.models.params import RobotParams
 
 
@@ -53,6 +57,10 @@ class MeasurementResult:
 #: ``evaluate(scenario, params)`` of a measurement scenario (params None: defaults).
 Evaluate = Callable[["Scenario", "RobotParams | None"], MeasurementResult]
 
+#: ``start(model, data, params)``: puts ``data`` in the state a measurement's free run
+#: (no control, actuators at zero) starts from, with ``data.time`` at 0.
+Start = Callable[["mujoco.MjModel", "mujoco.MjData", "RobotParams | None"], None]
+
 
 @dataclass(frozen=True)
 class Scenario:
@@ -67,6 +75,8 @@ class Scenario:
         world_frame: inputs are world rates (Ẋ, Ẏ, ψ̇) rather than body rates.
         settle: seconds at rest before the inputs start.
         evaluate: a ``MEASUREMENT`` scenario's own measurement (see :data:`Evaluate`).
+        start: a ``MEASUREMENT`` scenario's start state of its free run of ``duration``
+            seconds (see :data:`Start`; None: it has no single run to film).
         description: one line for the report.
     """
 
@@ -78,6 +88,7 @@ class Scenario:
     world_frame: bool = False
     settle: float = 0.5
     evaluate: Evaluate | None = field(default=None, compare=False)
+    start: Start | None = field(default=None, compare=False)
     description: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
@@ -85,6 +96,9 @@ class Scenario:
         if (self.kind is ScenarioKind.MEASUREMENT) != (self.evaluate is not None):
             raise ValueError(f"{self.key}: a {self.kind.value} scenario "
                              f"{'needs' if self.evaluate is None else 'takes no'} evaluate")
+        if self.start is not None and self.kind is not ScenarioKind.MEASUREMENT:
+            raise ValueError(f"{self.key}: only a measurement scenario takes a start state "
+                             f"(this one is {self.kind.value})")
         if not (np.isfinite(self.duration) and self.duration > 0):
             raise ValueError(f"{self.key}: duration = {self.duration!r} s; must be > 0")
         if not (np.isfinite(self.settle) and self.settle >= 0):

@@ -52,6 +52,9 @@ TORQUE_PATH_OPEN = Target.open(
     0.5, f"{SOURCE}: pose within 0.5 % of path under torque inputs",
     "the twist errors above integrate into the pose; the figure also includes MuJoCo's "
     "semi-implicit position lead v Δt / 2 (docs/omni-dynamics.md, Open)")
+TRACTION = Target.derived(1.0, "Coulomb friction: a wheel rolls without slip while |F_t| ≤ "
+                               "μ N, N from the robot's balance with load transfer; the "
+                               "torque inputs must stay below it for the rolling models")
 #: Run lengths, s.
 STEP_TIME = 2.0
 TORQUE_TIME = 2.0
@@ -204,6 +207,24 @@ def lagrange_twists(params: RobotParams | None, torques: np.ndarray, twist0: np.
     return out
 
 
+def traction_metric(params: RobotParams | None, torques: np.ndarray, twists: np.ndarray
+                    ) -> Metric:
+    """Largest ``|F_t,i| / (μ N_i)`` over the run, from the Lagrange model's twists.
+
+    ``F_t = (τ − I_w H ν̇)/r`` (:meth:`OmniDynamics.traction_forces`), N from the robot's
+    balance with the wheels' angular momentum (:meth:`OmniHybrid.normal_loads`).
+    """
+    hy = hybrid(params)  # type: ignore[arg-type]
+    dyn = lagrange(hy)
+    worst = 0.0
+    for nu in twists:
+        force = dyn.traction_forces(nu, torques)
+        thdd = dyn.H @ dyn.body_acceleration(nu, torques)
+        worst = max(worst, float(np.max(np.abs(force) / (hy.friction
+                                                         * hy.normal_loads(force, thdd)))))
+    return Metric("largest traction / μN", worst, "", TRACTION)
+
+
 def evaluate_torque(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
     """Torque inputs: the hybrid model judged (or open), Lagrange and the old figure reported.
 
@@ -224,6 +245,7 @@ def evaluate_torque(scenario: Scenario, params: RobotParams | None) -> Measureme
     path = TORQUE_PATH_OPEN if (key, "pose") in TORQUE_OPEN else TORQUE_PATH
     metrics = (twist_metrics("hybrid", run.twist, dyn.twist, L, comp)
                + pose_metrics("hybrid", run.pose, dyn.pose, L, path)
+               + [traction_metric(params, tau, lag_twist[::5])]
                + twist_metrics("Lagrange", run.twist, lag_twist, L)
                + pose_metrics("kinematic", run.pose, kin, L)
                + [Metric("Lagrange: |Δν| / |ν| at the last instant", 100 * final, "%",

@@ -1,0 +1,50 @@
+"""Builder of the differential-drive robot on a ball caster (Campion class (2,0))."""
+
+from __future__ import annotations
+
+from dm_control import mjcf
+
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.builders.caster import add_ball_caster
+from wmr_mujoco.models.params_wheeled import DIFFDRIVE, DiffDriveParams
+
+#: Plate CoM height above the axle.
+CHASSIS_COM_HEIGHT = 0.04
+
+
+def build(params: DiffDriveParams = DIFFDRIVE) -> mjcf.RootElement:
+    """Differential drive on a free joint resting on two wheels and a ball caster.
+
+    Kinematic tree::
+
+        world ─ chassis [free joint; origin at the axle midpoint, wheel-centre height]
+                 ├─ left_wheel  [hinge about y, driven]  (y = +b/2)
+                 ├─ right_wheel [hinge about y, driven]  (y = −b/2)
+                 └─ caster      [ball joint]  (x = caster_x, centre r_c above the floor)
+
+    Actuators ``left_wheel`` and ``right_wheel``: wheel-rate servos (torque mode through
+    :func:`wmr_mujoco.actuation.set_actuation_mode`).
+    """
+    p = params
+    r, rc = p.wheel.radius, p.caster.radius
+    root = common.new_root("diffdrive", p.sim)
+    chassis = root.worldbody.add("body", name="chassis", pos=(0, 0, r))
+    chassis.add("freejoint", name="chassis")
+    chassis.add("inertial", pos=(p.chassis_com_x, 0, CHASSIS_COM_HEIGHT), mass=p.chassis_mass,
+                diaginertia=common.box_inertia(p.chassis_mass, p.chassis_size))
+    common.add_box_body_geoms(chassis, p.chassis_size,
+                              pos=(p.chassis_com_x, 0, CHASSIS_COM_HEIGHT))
+    chassis.add("geom", dclass="visual", type="capsule", size=(0.01,),
+                fromto=(0, -p.track / 2.0, 0, 0, p.track / 2.0, 0), rgba=common.BODY_RGBA)
+    site = chassis.add("site", name="base", pos=(0, 0, 0))
+    joints = []
+    for side, y in (("left", 1.0), ("right", -1.0)):
+        name = f"{side}_wheel"
+        common.add_wheel(chassis, name, p.wheel, pos=(0, y * p.track / 2.0, 0),
+                         armature=p.drive.wheel_armature)
+        common.add_wheel_actuator(root, name, p.drive, joint=name)
+        joints.append(name)
+    add_ball_caster(chassis, "caster", p.caster, pos=(p.caster_x, 0, rc - r))
+    common.add_joint_sensors(root, joints)
+    common.add_frame_sensors(root, site)
+    return root

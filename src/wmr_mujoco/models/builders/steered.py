@@ -1,0 +1,125 @@
+"""Builders of the two steered classes: (2,1) one steered wheel, (1,2) two steered wheels.
+
+Both are made of existing parts: the thin-disc wheel of :mod:`~wmr_mujoco.models.builders.common`
+on a steering fork (a vertical hinge through the wheel centre: a *centred* steerable
+wheel) and the ball caster of :mod:`~wmr_mujoco.models.builders.caster`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from dm_control import mjcf
+
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.builders.caster import add_ball_caster
+from wmr_mujoco.models.params import DriveParams, WheelParams
+from wmr_mujoco.models.params_wheeled import (
+    DOUBLE_STEER,
+    SINGLE_STEER,
+    DoubleSteerParams,
+    SingleSteerParams,
+)
+
+CHASSIS_COM_HEIGHT = 0.04
+FORK_HEIGHT = 0.12
+
+
+def fork_yaw_inertia(fork_mass: float) -> float:
+    """Yaw inertia of the fork alone (the box of :func:`add_steered_wheel`), kg·m²."""
+    return common.box_inertia(fork_mass, (0.04, 0.06, FORK_HEIGHT))[2]
+
+
+def add_steered_wheel(root: mjcf.RootElement, chassis: mjcf.Element, prefix: str,
+                      wheel: WheelParams, fork_mass: float, drive: DriveParams,
+                      pos: Sequence[float]) -> None:
+    """A fork on a vertical steering hinge ``{prefix}_steer`` carrying a driven wheel.
+
+    The steering axis passes through the wheel centre (a centred steerable wheel). Adds
+    the wheel-rate servo ``{prefix}_wheel`` and the steering-rate servo
+    ``{prefix}_steer``.
+    """
+    fork = chassis.add("body", name=f"{prefix}_fork", pos=list(pos))
+    limit = drive.steer_angle_limit
+    steer = fork.add("joint", name=f"{prefix}_steer", type="hinge", axis=(0, 0, 1),
+                     range=(-limit, limit))
+    fork.add("inertial", pos=(0, 0, FORK_HEIGHT / 2.0), mass=fork_mass,
+             diaginertia=common.box_inertia(fork_mass, (0.04, 0.06, FORK_HEIGHT)))
+    fork.add("geom", dclass="visual", type="capsule", fromto=(0, 0, 0, 0, 0, FORK_HEIGHT),
+             size=(0.01,), rgba=common.BODY_RGBA)
+    name = f"{prefix}_wheel"
+    common.add_wheel(fork, name, wheel, pos=(0, 0, 0), armature=drive.wheel_armature)
+    common.add_wheel_actuator(root, name, drive, joint=name)
+    common.add_steer_actuator(root, f"{prefix}_steer", steer, drive, limit)
+
+
+def _chassis(root: mjcf.RootElement, height: float, mass: float, com: Sequence[float],
+             size: Sequence[float], visual_x: tuple[float, float]
+             ) -> tuple[mjcf.Element, mjcf.Element]:
+    """Chassis on a free joint; inertia of the full plate ``size`` about ``com``.
+
+    The visual plate spans only ``visual_x`` along x, so that the wheels stay visible.
+    """
+    chassis = root.worldbody.add("body", name="chassis", pos=(0, 0, height))
+    chassis.add("freejoint", name="chassis")
+    chassis.add("inertial", pos=list(com), mass=mass, diaginertia=common.box_inertia(mass, size))
+    x0, x1 = visual_x
+    common.add_box_body_geoms(chassis, (x1 - x0, size[1], size[2]),
+                              pos=(0.5 * (x0 + x1), com[1], com[2]))
+    site = chassis.add("site", name="base", pos=(0, 0, 0))
+    return chassis, site
+
+
+def build_single(params: SingleSteerParams = SINGLE_STEER) -> mjcf.RootElement:
+    """Class (2,1): one centred steerable driven wheel, two ball casters ahead of it.
+
+    Kinematic tree::
+
+        world ─ chassis [free joint; origin on the steering axis, wheel-centre height]
+                 ├─ drive_fork [hinge drive_steer about z]
+                 │    └─ drive_wheel [hinge about y, driven]
+                 ├─ caster_left  [ball joint]  (caster_x, +caster_y)
+                 └─ caster_right [ball joint]  (caster_x, −caster_y)
+    """
+    p = params
+    r, rc = p.wheel.radius, p.caster.radius
+    root = common.new_root("single_steer", p.sim)
+    chassis, site = _chassis(root, r, p.chassis_mass, (p.chassis_com_x, 0, CHASSIS_COM_HEIGHT),
+                             p.chassis_size, (r + 0.015, p.caster_x + 0.05))
+    chassis.add("geom", dclass="visual", type="capsule", size=(0.01,),
+                fromto=(0, 0, FORK_HEIGHT, r + 0.015, 0, CHASSIS_COM_HEIGHT),
+                rgba=common.BODY_RGBA)
+    add_steered_wheel(root, chassis, "drive", p.wheel, p.fork_mass, p.drive, (0, 0, 0))
+    for side, y in (("left", 1.0), ("right", -1.0)):
+        add_ball_caster(chassis, f"caster_{side}", p.caster,
+                        pos=(p.caster_x, y * p.caster_y, rc - r))
+    common.add_joint_sensors(root, ["drive_wheel"], ["drive_steer"])
+    common.add_frame_sensors(root, site)
+    return root
+
+
+def build_double(params: DoubleSteerParams = DOUBLE_STEER) -> mjcf.RootElement:
+    """Class (1,2): two centred steerable driven wheels on the x axis and a ball caster.
+
+    Kinematic tree::
+
+        world ─ chassis [free joint; origin midway between the steering axes]
+                 ├─ front_fork [hinge front_steer about z]  (x = +a)
+                 │    └─ front_wheel [hinge about y, driven]
+                 ├─ rear_fork  [hinge rear_steer about z]   (x = −a)
+                 │    └─ rear_wheel [hinge about y, driven]
+                 └─ caster [ball joint]  (0, caster_y)
+    """
+    p = params
+    r, rc, a = p.wheel.radius, p.caster.radius, p.half_wheelbase
+    root = common.new_root("double_steer", p.sim)
+    chassis, site = _chassis(root, r, p.chassis_mass, (0, p.chassis_com_y, CHASSIS_COM_HEIGHT),
+                             p.chassis_size, (-a + r + 0.015, a - r - 0.015))
+    chassis.add("geom", dclass="visual", type="capsule", size=(0.01,),
+                fromto=(-a, 0, FORK_HEIGHT, a, 0, FORK_HEIGHT), rgba=common.BODY_RGBA)
+    for prefix, x in (("front", a), ("rear", -a)):
+        add_steered_wheel(root, chassis, prefix, p.wheel, p.fork_mass, p.drive, (x, 0, 0))
+    add_ball_caster(chassis, "caster", p.caster, pos=(0, p.caster_y, rc - r))
+    common.add_joint_sensors(root, ["front_wheel", "rear_wheel"], ["front_steer", "rear_steer"])
+    common.add_frame_sensors(root, site)
+    return root

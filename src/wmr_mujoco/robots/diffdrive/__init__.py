@@ -1,0 +1,111 @@
+"""The differential drive: two driven wheels on one axle and a passive ball caster.
+
+Kinematic inputs ``(v, ω)``: speed and yaw rate of the axle midpoint; the wheels roll at
+``v ∓ ω b/2`` (left, right), so the controls are ``(v_L/R, v_R/R)``; state ``(x, y, ψ)``
+of the midpoint, the unicycle (:mod:`wmr_mujoco.analytic.diffdrive`). Campion class
+(2,0), computed from the model by :mod:`wmr_mujoco.models.classify`.
+
+Turning in place the midpoint does not move; that run is judged on its worst centre
+drift against 0.5 % of the arc each wheel rolls (:func:`wheel_arc`). The ball caster's
+drag is a measurement scenario (:mod:`.caster_drag`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic import diffdrive
+from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.models.builders import diffdrive as builder
+from wmr_mujoco.models.params import RobotParams, params_or_default
+from wmr_mujoco.models.params_wheeled import DiffDriveParams
+from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.diffdrive import caster_drag
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.metrics import Target
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.signals import Sine, const
+
+NAME = "diffdrive"
+
+
+@dataclass(frozen=True)
+class DiffDriveKinematics:
+    """Unicycle of the axle midpoint: ``x = (x, y, ψ)``, ``u = (v, ω)``."""
+
+    params: DiffDriveParams
+    mode: ActuationMode = ActuationMode.RATE
+    state_names: tuple[str, ...] = ("x", "y", "heading")
+    state_units: tuple[str, ...] = POSE_UNITS
+    wheel_joints: tuple[str, ...] = ("left_wheel", "right_wheel")
+    lateral_wheels: tuple[str, ...] = ("left_wheel", "right_wheel")
+
+    def wheel_speeds(self, u: np.ndarray) -> np.ndarray:
+        """Ground speeds ``(v_L, v_R) = (v − ω b/2, v + ω b/2)``."""
+        return np.array(diffdrive.wheel_speeds(u[0], u[1], self.params.track))
+
+    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
+        """Wheel-rate servo targets ``(v_L/R, v_R/R)``."""
+        return self.wheel_speeds(u) / self.params.wheel.radius
+
+    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+        """``ẋ = v cos ψ, ẏ = v sin ψ, ψ̇ = ω`` from the wheel speeds."""
+        return diffdrive.rates(x, self.wheel_speeds(u), self.params.track)
+
+    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        """Pose of the ``base`` site (the axle midpoint)."""
+        return base_pose(model, data)
+
+
+def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
+                      params: RobotParams | None) -> DiffDriveKinematics:
+    """The unicycle model of the differential drive."""
+    return DiffDriveKinematics(params_or_default(params, DiffDriveParams))
+
+
+def wheel_arc(scenario: Scenario, track: float, dt: float = 1e-3) -> float:
+    """Arc each wheel rolls turning in place: ``(b/2) ∫ |ω| dt`` over the run, m."""
+    t = np.arange(0.0, scenario.duration, dt)
+    return 0.5 * track * float(np.sum(np.abs([scenario.input_at(ti)[1] for ti in t])) * dt)
+
+
+SPIN = Scenario(NAME, "spin in place", (const(0.0), const(1.5, 0.5)), duration=2.0,
+                description="turn in place at 1.5 rad/s: judged on the centre's drift")
+
+SCENARIOS = (
+    Scenario(NAME, "straight", (const(0.5, 0.5), const(0.0)), duration=2.0),
+    Scenario(NAME, "arc", (const(0.5, 0.5), const(0.5, 0.5)), duration=3.0),
+    SPIN,
+    # ω = ω₀ sin(2πt/T) at constant v: the heading swings ±ω₀T/2π and returns, two
+    # loops traced in opposite senses: a figure eight.
+    Scenario(NAME, "figure eight", (const(0.5, 0.5), Sine(1.5, 5.0)), duration=5.0),
+    Scenario(NAME, "caster drag", kind=ScenarioKind.MEASUREMENT, duration=caster_drag.STEADY,
+             settle=caster_drag.SETTLE, evaluate=caster_drag.evaluate,
+             description="the ball caster's drag, freely rolling and with MuJoCo's "
+                         "rolling friction"),
+)
+
+_SPIN_ARC = wheel_arc(SPIN, DiffDriveParams().track)
+
+TARGETS: Mapping[str, Target] = {
+    **req.vehicle_targets(0.5),
+    mt.CENTRE_DRIFT_M: Target.requirement(
+        0.005 * _SPIN_ARC, f"issue 15: 0.5 % of path; turning in place the path is the "
+                           f"arc each wheel rolls, (b/2)∫|ω|dt = {_SPIN_ARC:.3f} m"),
+}
+
+SPEC = RobotSpec(
+    name=NAME,
+    description="differential drive: two driven wheels on one axle and a passive ball "
+                "caster; Campion class (2,0)",
+    params_type=DiffDriveParams, build=builder.build, folder=NAME, robot_file="diffdrive.xml",
+    adapters={ScenarioKind.KINEMATIC: kinematic_adapter},
+    targets=TARGETS, scenarios=SCENARIOS, demo_scenario="figure eight",
+    bench_scenario="figure eight", render_scenario="figure eight",
+)

@@ -1,0 +1,56 @@
+"""The Whipple benchmark bicycle (Meijaard, Papadopoulos, Ruina & Schwab 2007).
+
+A riderless bicycle on knife-edge wheels, uncontrolled, measured against the benchmark's
+linearised equations (:mod:`wmr_mujoco.analytic.whipple`). Its scenarios are all
+measurements in the physics:
+
+* ``critical speeds``: weave and capsize speeds from the physics (:mod:`.eigen`);
+* ``eigenvalues vs speed``: weave, capsize and castering at 1-10 m/s, with the
+  benchmark's eigenvalue-versus-speed figure (:mod:`.eigen`);
+* ``push at v m/s``: self-stability after a sideways push (:mod:`.stability`); each
+  carries its start state, so ``wmr render whipple --scenario "push at 5 m/s"`` films
+  the run that is measured.
+"""
+
+from __future__ import annotations
+
+from wmr_mujoco.models.builders import whipple as builder
+from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.robots.whipple import eigen, stability
+from wmr_mujoco.robots.whipple.rolling import NAME
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+
+
+def push_name(speed: float) -> str:
+    """Name of the push scenario at ``speed``."""
+    return f"push at {speed:g} m/s"
+
+
+def _push(speed: float, what: str) -> Scenario:
+    evaluate, start = stability.push_scenario_parts(speed)
+    return Scenario(NAME, push_name(speed), duration=stability.PUSH_DURATION,
+                    kind=ScenarioKind.MEASUREMENT, settle=0.0, evaluate=evaluate,
+                    start=start, description=f"sideways push at {speed:g} m/s: {what}")
+
+
+SCENARIOS = (
+    Scenario(NAME, "critical speeds", kind=ScenarioKind.MEASUREMENT, settle=0.0,
+             evaluate=eigen.evaluate_critical_speeds,
+             description="weave and capsize speeds from the step map's eigenvalues"),
+    Scenario(NAME, "eigenvalues vs speed", kind=ScenarioKind.MEASUREMENT, settle=0.0,
+             evaluate=eigen.evaluate_eigenvalues,
+             description="weave, capsize, castering at 1-10 m/s against the benchmark"),
+    *(_push(v, "self-stable, the lean decays") for v in stability.STABLE_SPEEDS),
+    _push(stability.UNSTABLE_SPEED, "below the weave speed, it falls"),
+)
+
+SPEC = RobotSpec(
+    name=NAME,
+    description="Whipple benchmark bicycle (Meijaard et al. 2007): knife-edge wheels, "
+                "steer axis, no control; self-stable between its weave and capsize speeds",
+    params_type=WhippleParams, build=builder.build, folder=NAME, robot_file="whipple.xml",
+    scenarios=SCENARIOS,
+    render_scenario=push_name(5.0),
+    picture=Picture(keyframe="upright", joint_angles={"steer": 0.3}),
+)
