@@ -114,7 +114,8 @@ def budget_table(budgets: dict[str, list[Metric]]) -> str:
     """Markdown table of budgets by label."""
     lines = ["| coast | metric | value | unit |", "|---|---|---|---|"]
     for label, rows in budgets.items():
-        lines += [f"| {label} | {m.name} | {m.value:.4g} | {m.unit} |" for m in rows]
+        lines += [f"| {label} | {m.name.replace('|', chr(92) + '|')} | {m.value:.4g} | "
+                  f"{m.unit} |" for m in rows]
     return "\n".join(lines)
 
 
