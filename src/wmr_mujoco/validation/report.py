@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import json
 import math
+import multiprocessing
+import os
 import re
 from collections.abc import Sequence
 from pathlib import Path
@@ -246,6 +248,40 @@ def plot_scenario(result: ScenarioResult, path: Path) -> Path | None:
     return path
 
 
+#: The plots :func:`plot_all` hands to its forked workers (inherited, never pickled).
+_PLOT_JOBS: list[tuple[ScenarioResult, Path]] = []
+
+
+def _plot_job(i: int) -> Path | None:
+    result, path = _PLOT_JOBS[i]
+    return plot_scenario(result, path)
+
+
+def plot_all(results: Sequence[ScenarioResult], folder: Path) -> list[Path | None]:
+    """:func:`plot_scenario` of every result into ``folder``, on every core.
+
+    Drawing is pure Python (matplotlib holds the GIL), so the plots are shared among
+    forked worker processes, which inherit the results instead of receiving copies;
+    where ``fork`` is unavailable, or for a single core, they are drawn one by one.
+    """
+    global _PLOT_JOBS
+    jobs = [(r, Path(folder) / f"{slug(r.scenario.key)}.png") for r in results]
+    workers = min(len(jobs), os.cpu_count() or 1)
+    if workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
+        return [plot_scenario(r, p) for r, p in jobs]
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot  # imported once, inherited by the workers
+
+    _PLOT_JOBS = jobs
+    try:
+        with multiprocessing.get_context("fork").Pool(workers) as pool:
+            return pool.map(_plot_job, range(len(jobs)), chunksize=1)
+    finally:
+        _PLOT_JOBS = []
+
+
 def to_json(results: Sequence[ScenarioResult]) -> str:
     """Every metric of every scenario as JSON."""
     def clean(x: float) -> float | None:
@@ -283,8 +319,7 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) 
     lines += ["## How the metrics are judged",
               "", DEFINITIONS, "", "## Every metric", "",
               markdown_table(results), "", "## Plots", ""]
-    for r in results:
-        png = plot_scenario(r, plots / f"{slug(r.scenario.key)}.png")
+    for r, png in zip(results, plot_all(results, plots), strict=True):
         if png is not None:
             lines += [f"### {r.scenario.key}", "", f"![{r.scenario.key}](validation/{png.name})",
                       ""]
