@@ -750,24 +750,56 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                          axis=-1)
         return np.concatenate([world, nudot, w, thdd], axis=1), tau, forces, thdd
 
+    def rk4(x: np.ndarray, k1: np.ndarray, u_in: np.ndarray, geo: _Geometry,
+            hv: np.ndarray) -> np.ndarray:
+        """One RK4 step of per-run length ``hv`` (B, 1) in the modes of ``geo``."""
+        x2 = x + 0.5 * hv * k1
+        k2 = deriv(x2, u_in, _geometry(model, x2[:, 6:9], geo.modes, geo.H))[0]
+        x3 = x + 0.5 * hv * k2
+        k3 = deriv(x3, u_in, _geometry(model, x3[:, 6:9], geo.modes, geo.H))[0]
+        x4 = x + hv * k3
+        k4 = deriv(x4, u_in, _geometry(model, x4[:, 6:9], geo.modes, geo.H))[0]
+        return x + hv / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+
+    def switch_fraction(th0: np.ndarray, th1: np.ndarray, old: np.ndarray,
+                        new: np.ndarray) -> np.ndarray:
+        """Fraction of a step at which the first wheel hands over, per run (B,).
+
+        The hand-over is where the two rollers are equally low, ``|φ_old| = |φ_new|``;
+        ``g = |φ_old| − |φ_new|`` is linear in θ between the two, so the fraction is
+        ``g₀ / (g₀ − g₁)`` of the step (θ linear over it).
+        """
+        ang = model.rollers.angles
+
+        def g(th: np.ndarray) -> np.ndarray:
+            def phi(m: np.ndarray) -> np.ndarray:
+                return np.remainder(ang[m] + th, 2.0 * math.pi) - math.pi
+            return np.abs(phi(old)) - np.abs(phi(new))
+
+        g0, g1 = g(th0), g(th1)
+        frac = np.where(old != new, np.clip(g0 / np.where(g0 != g1, g0 - g1, -1.0), 0, 1),
+                        1.0)
+        return frac.min(axis=1)
+
+    full = np.full((nb, 1), h)
     for k in range(n):
         u_in = inputs[:, k]
         tau = np.zeros((nb, 3))
         for _ in range(substeps):
-            x = np.concatenate([pose, nu, th, thd], axis=1)
-            # Within a substep the modes are fixed; k_i follows φ (the geometry at each
-            # RK4 stage's wheel angles).
-            k1, tau, forces, thdd = deriv(x, u_in, geo)
-            x2 = x + 0.5 * h * k1
-            k2 = deriv(x2, u_in, _geometry(model, x2[:, 6:9], geo.modes, geo.H))[0]
-            x3 = x + 0.5 * h * k2
-            k3 = deriv(x3, u_in, _geometry(model, x3[:, 6:9], geo.modes, geo.H))[0]
-            x4 = x + h * k3
-            k4 = deriv(x4, u_in, _geometry(model, x4[:, 6:9], geo.modes, geo.H))[0]
-            x = x + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
-            pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
-            new_modes = _lowest(model, th)
+            x0 = np.concatenate([pose, nu, th, thd], axis=1)
+            # Within a step the modes are fixed; k_i follows φ (the geometry at each RK4
+            # stage's wheel angles). A step across a hand-over is cut at it: RK4 to the
+            # hand-over, the impact map, RK4 over the rest in the new modes.
+            k1, tau, forces, thdd = deriv(x0, u_in, geo)
+            x = rk4(x0, k1, u_in, geo, full)
+            new_modes = _lowest(model, x[:, 6:9])
             changed = np.flatnonzero((new_modes != geo.modes).any(axis=1))
+            rest = np.zeros((nb, 1))
+            if changed.size:
+                frac = switch_fraction(x0[:, 6:9], x[:, 6:9], geo.modes, new_modes)
+                x = rk4(x0, k1, u_in, geo, h * frac[:, None])
+                rest[:, 0] = h * (1.0 - frac)
+            pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
             geo = _geometry(model, th, geo.modes, geo.H)
             hnu = (geo.H @ nu[..., None])[..., 0]
             thd = np.where(slipping, thd, hnu)  # rolling wheels stay on the constraint
@@ -801,6 +833,12 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                 thd[b] = np.where(slipping[b], thd[b], new.H[b] @ nu[b])
             if changed.size:
                 geo = new
+                x = np.concatenate([pose, nu, th, thd], axis=1)
+                k1 = deriv(x, u_in, geo)[0]
+                x = rk4(x, k1, u_in, geo, rest)
+                pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
+                geo = _geometry(model, th, geo.modes, geo.H)
+                thd = np.where(slipping, thd, (geo.H @ nu[..., None])[..., 0])
         if not np.all(np.isfinite(nu)):
             raise FloatingPointError(f"hybrid model diverged at t = {(k + 1) * dt:.3f} s")
         out_pose[:, k + 1], out_nu[:, k + 1], out_th[:, k + 1] = pose, nu, th

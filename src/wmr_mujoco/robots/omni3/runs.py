@@ -29,7 +29,10 @@ from wmr_mujoco.sim.stepping import check_healthy
 
 #: Seconds at rest before a run (as the runner's scenarios).
 SETTLE = 0.5
-#: RK4 substeps of the hybrid model per simulation step.
+#: RK4 substeps of the hybrid model per simulation step (2 ms at the 4 ms step). The rate
+#: servo is stiff (k_v / I_w ≈ 480 /s): the worst step-command figure moves from 0.27 % of
+#: path at 2 ms to 0.15 % at 1 ms and 0.09 % at 0.5 ms (other directions by ±0.03 %), the
+#: torque and coasting figures by under 0.02 and 1 point; 2 ms keeps `wmr validate` fast.
 SUBSTEPS = 2
 
 
