@@ -44,14 +44,17 @@ renders: $(STAMP)
 	$(BIN)/wmr render diffdrive --scenario "figure eight" --out renders/diffdrive.gif --width 200 --height 150 --fps 8 --duration 5
 	$(BIN)/wmr render single_steer --scenario "slalom" --out renders/single_steer.gif --width 200 --height 150 --fps 8 --duration 4
 	$(BIN)/wmr render double_steer --scenario "tight turn ±1 rad" --out renders/double_steer.gif --width 200 --height 150 --fps 8 --duration 3
+	$(BIN)/wmr render disc_free --scenario "steady precession" --out renders/disc_free.gif --width 200 --height 150 --fps 8
+	$(BIN)/wmr render disc_free --scenario "stability sweep" --out renders/disc_free_stability.gif --width 200 --height 150 --fps 8
 
-# The roller design study and peer comparison in models/omni3/README.md; omni3's coasting
-# energy budget and dynamics tables in docs/omni-dynamics.md; the Whipple bicycle's
-# fidelity-versus-cost study, eigenvalue table and figure in models/whipple/README.md.
+# The design and fidelity-versus-cost studies in the model READMEs: omni3's roller design
+# and peer table, the Whipple bicycle's eigenvalues, the free disc's settings; omni3's
+# coasting energy budget and dynamics tables in docs/omni-dynamics.md.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
 	$(BIN)/python -m wmr_mujoco.bench.omni_energy_study
 	$(BIN)/python -m wmr_mujoco.bench.whipple_study
+	$(BIN)/python -m wmr_mujoco.bench.disc_study
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

@@ -28,3 +28,13 @@ def test_failed_validate_run_is_an_error_not_a_time(monkeypatch):
 def test_missing_peer_is_left_out_not_fatal(tmp_path):
     assert bench.peer_side_by_side(None, tmp_path / "scene.xml") is None
     assert "Left out: the peer model was not found" in bench._peer_section(None)
+
+
+def test_engine_timing_leaves_measurement_scenarios_to_their_own_runs(monkeypatch):
+    """The simulation stage times kinematic/dynamic runs; a measurement scenario (which
+    has no adapter to prepare) is timed only in the full validation."""
+    spec = bench.get_spec("disc")
+    monkeypatch.setattr(bench, "scenarios_for", lambda: [spec.scenario("torque"),
+                                                         spec.scenario("sliding wheel")])
+    res = bench.validation_engines(1)
+    assert all(res[k] > 0 for k in ("loop", "rollout", "sim_loop", "sim_rollout"))

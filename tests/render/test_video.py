@@ -60,17 +60,31 @@ def test_bad_input_is_clear_and_leaves_no_file(tmp_path, monkeypatch, kwargs, ma
     assert list(tmp_path.rglob("*")) == []
 
 
-def test_a_measurement_with_a_start_state_renders_its_free_run():
-    """The Whipple push at 3 m/s: one frame per 1/fps over 1 s, the bicycle leaning more
-    and more (the frames change) and the trail drawn from the physics alone."""
+def test_a_free_run_measurement_is_filmed():
+    """The Whipple push at 3 m/s (a free run from its start state): one frame per 1/fps
+    over 1 s, the bicycle leaning more and more (the frames change)."""
     frames = render_scenario(pick_scenario("whipple", "push at 3 m/s"), width=160,
                              height=120, fps=10, duration=1.0)
     assert frames.shape == (10, 120, 160, 3)
     assert np.abs(frames[0].astype(int) - frames[-1].astype(int)).mean() > 2
 
 
-def test_a_measurement_without_a_start_state_is_refused():
+def test_a_measurement_without_a_film_is_refused_naming_the_filmable_ones():
     with pytest.raises(ValueError, match="whipple/critical speeds is a measurement without a "
-                                         "single run to film; scenarios that can be "
-                                         "rendered: 'push at 4.6 m/s'"):
-        render_scenario(pick_scenario("whipple", "critical speeds"), width=160, height=120)
+                                         "film; scenarios that can be rendered: "
+                                         "'push at 4.6 m/s'"):
+        pick_scenario("whipple", "critical speeds")
+
+
+def test_a_measurement_is_filmed_from_its_own_runs():
+    """disc_free's steady precession: frames at fps over the duration, the disc moving."""
+    got = render_scenario(pick_scenario("disc_free", "steady precession"), width=64,
+                          height=48, fps=5, duration=1.0)
+    assert got.shape == (5, 48, 64, 3)
+    assert np.abs(got[0].astype(int) - got[-1].astype(int)).mean() > 2
+
+
+def test_a_measurement_without_a_film_is_refused():
+    with pytest.raises(ValueError, match="measurement without a film; scenarios that can "
+                                         "be rendered: .*'sinusoidal steering'"):
+        pick_scenario("disc", "sliding wheel")

@@ -95,3 +95,77 @@ class WheelDynamics:
         direction = np.sign(slip) if abs(slip) > tol else np.sign(torque)
         force = self.friction * self.normal * direction
         return float(force / self.mass), float((torque - force * self.radius) / self.inertia)
+
+
+@dataclass(frozen=True)
+class SlipPulse:
+    """Closed-form response of a wheel at rest to a torque pulse above the traction limit.
+
+    Torque ``τ > τ_max`` (:attr:`WheelDynamics.max_rolling_torque`) for ``0 ≤ t < t_1``,
+    then zero. Kinetic friction ``μN`` (slip ``s = R θ̇ − ẋ > 0``) acts throughout the
+    sliding phase::
+
+        pulse:   ẍ = μN/m,   θ̈_1 = (τ − μN R)/J,   ṡ_1 = R θ̈_1 − μN/m > 0
+        coast:   ẍ = μN/m,   θ̈_2 = −μN R/J,        ṡ_2 = −μN (R²/J + 1/m)
+
+    The wheel grips again when ``R θ̇ = ẋ``: ``t_g = t_1 + s(t_1)/|ṡ_2|`` with
+    ``s(t_1) = ṡ_1 t_1``; afterwards it rolls on at the constant speed ``ẋ(t_g)``.
+
+    Attributes:
+        wheel: the wheel model.
+        torque: pulse torque τ, N·m.
+        on_time: pulse length t_1, s.
+    """
+
+    wheel: WheelDynamics
+    torque: float
+    on_time: float
+
+    def __post_init__(self) -> None:
+        positive("on_time", self.on_time)
+        limit = self.wheel.max_rolling_torque
+        if not np.isfinite(self.torque) or self.torque <= limit:
+            raise ValueError(f"torque = {self.torque!r} N·m does not slip; valid range is "
+                             f"({limit:g}, inf) N·m (above the traction limit)")
+
+    @property
+    def friction_force(self) -> float:
+        """Kinetic friction ``μ N``, N."""
+        return self.wheel.friction * self.wheel.normal
+
+    @property
+    def linear_acceleration(self) -> float:
+        """``ẍ = μN/m`` while sliding, m/s²."""
+        return self.friction_force / self.wheel.mass
+
+    @property
+    def spin_acceleration(self) -> float:
+        """``θ̈_1 = (τ − μN R)/J`` during the pulse, rad/s²."""
+        w = self.wheel
+        return (self.torque - self.friction_force * w.radius) / w.inertia
+
+    @property
+    def coast_spin_acceleration(self) -> float:
+        """``θ̈_2 = −μN R/J`` after the pulse, still sliding, rad/s²."""
+        return -self.friction_force * self.wheel.radius / self.wheel.inertia
+
+    @property
+    def regrip_time(self) -> float:
+        """``t_g = t_1 + ṡ_1 t_1 / |ṡ_2|``, s."""
+        w = self.wheel
+        s1 = w.radius * self.spin_acceleration - self.linear_acceleration
+        s2 = w.radius * self.coast_spin_acceleration - self.linear_acceleration
+        return self.on_time * (1.0 + s1 / -s2)
+
+    def state(self, t: np.ndarray) -> np.ndarray:
+        """Rows ``(x, ẋ, θ̇)`` at times ``t`` (s), piecewise closed form."""
+        t = np.asarray(t, float)
+        t1, tg = self.on_time, self.regrip_time
+        a, r = self.linear_acceleration, self.wheel.radius
+        ts = np.minimum(t, tg)
+        speed = a * ts
+        x = 0.5 * a * ts**2 + speed * np.maximum(t - tg, 0.0)
+        spin = (self.spin_acceleration * np.minimum(ts, t1)
+                + self.coast_spin_acceleration * np.maximum(ts - t1, 0.0))
+        spin = np.where(t >= tg, speed / r, spin)
+        return np.column_stack([x, speed, spin])

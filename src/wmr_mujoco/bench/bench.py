@@ -134,8 +134,9 @@ def validation_engines(repeats: int) -> dict[str, float]:
     """Wall time of all validation scenarios (no report) through each engine.
 
     Also times the simulation stage alone (scenarios prepared beforehand): every
-    scenario through the Python ``mj_step`` loop, against one threaded rollout per batch.
-    Medians of ``repeats`` alternating runs.
+    kinematic and dynamic scenario through the Python ``mj_step`` loop, against one
+    threaded rollout per batch (a measurement scenario steps its own runs, the same under
+    either engine). Medians of ``repeats`` alternating runs.
     """
     from wmr_mujoco.sim.engine import simulate, simulate_batch
     from wmr_mujoco.validation.runner import batch_key, prepare, run_all
@@ -144,7 +145,7 @@ def validation_engines(repeats: int) -> dict[str, float]:
     t_loop, t_rollout, ratio = paired_ratio(lambda: run_all(scenarios, engine="loop"),
                                             lambda: run_all(scenarios, engine="rollout"),
                                             repeats, warmup=False)
-    prepared = [prepare(s) for s in scenarios]
+    prepared = [prepare(s) for s in scenarios if s.kind is not ScenarioKind.MEASUREMENT]
     groups: dict[tuple[str, str, float], list[Prepared]] = {}
     for p in prepared:
         groups.setdefault(batch_key(p.scenario), []).append(p)

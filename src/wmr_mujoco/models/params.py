@@ -134,6 +134,10 @@ class SimParams:
         _check_range(self, "friction", 0.0, 10.0)
 
 
+#: Integrators the free disc may use (MuJoCo names).
+FREE_INTEGRATORS = ("RK4", "implicit", "implicitfast", "Euler")
+
+
 @dataclass(frozen=True)
 class DiscParams:
     """Single steerable disc on a vertical mount (lecture section 1).
@@ -146,6 +150,15 @@ class DiscParams:
         mount_mass: mass of the steering carriage.
         drive: actuator settings.
         sim: simulation settings.
+        free_integrator: integrator of the free disc (``disc_free``): ``"RK4"``,
+            ``"implicit"``, ``"implicitfast"`` or ``"Euler"``. ``implicitfast`` (and
+            ``implicit``, identical here) miss steady precession by an error proportional to
+            the timestep; RK4 does not (study table in ``models/disc/README.md``).
+        free_timestep: timestep of the free disc, s.
+        free_rim: half-thickness of the free disc's collision ellipsoid ``(R, rim, R)``, m.
+            A thin rim makes a leaning disc touch where a thin disc would; the wheel's
+            full half-width puts a leaning disc's contact off the thin-disc point and
+            misses steady precession by more than its target (study table).
 
     """
 
@@ -154,9 +167,17 @@ class DiscParams:
     drive: DriveParams = DriveParams(wheel_kv=20.0, wheel_torque_limit=5.0,
                                      steer_kp=500.0, steer_kv=2.0)
     sim: SimParams = SimParams()
+    free_integrator: str = "RK4"
+    free_timestep: float = 0.004
+    free_rim: float = 0.002
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
+        _check_range(self, "free_timestep", 0.0, 0.02)
+        _check_range(self, "free_rim", 0.0, 0.5 * self.wheel.width)
+        if self.free_integrator not in FREE_INTEGRATORS:
+            raise ValueError(f"DiscParams.free_integrator = {self.free_integrator!r}; "
+                             f"valid values are {FREE_INTEGRATORS}")
 
     @property
     def total_mass(self) -> float:

@@ -1,5 +1,9 @@
 """Videos of validation scenarios with the analytic trajectory drawn beside the physics.
 
+Kinematic and dynamic scenarios are filmed through the runner; a measurement scenario
+through its own ``film`` (the runs it measures, step by step), with the physics trail
+and, where the scenario gives one, its analytic path.
+
 Call :func:`wmr_mujoco.render.gl_backend.select_backend` before MuJoCo is first imported (the
 ``wmr render`` command does) to get the EGL → OSMesa fallback.
 """
@@ -12,10 +16,9 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.render import rendering
 from wmr_mujoco.robots import get_spec
-from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
+from wmr_mujoco.sim.stepping import SimulationDivergedError
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.runner import run_scenario
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -28,13 +31,20 @@ def pick_scenario(robot: str, name: str | None = None) -> Scenario:
     """The named scenario of ``robot`` (default: its render scenario, else first kinematic).
 
     Raises:
-        ValueError: unknown robot, a robot without kinematic scenarios, or no such
-            scenario (the message lists the valid ones).
+        ValueError: unknown robot, a robot without kinematic scenarios, no such
+            scenario (the message lists the valid ones), or a measurement scenario
+            without a film.
     """
     spec = get_spec(robot)
     name = name or spec.render_scenario
     if name is not None:
-        return spec.scenario(name)
+        scenario = spec.scenario(name)
+        if scenario.kind is ScenarioKind.MEASUREMENT and scenario.film is None:
+            filmable = [s.name for s in spec.scenarios
+                        if s.kind is not ScenarioKind.MEASUREMENT or s.film is not None]
+            raise ValueError(f"{scenario.key} is a measurement without a film; scenarios "
+                             f"that can be rendered: {', '.join(map(repr, filmable))}")
+        return scenario
     options = [s for s in spec.scenarios if s.kind is ScenarioKind.KINEMATIC]
     if not options:
         raise ValueError(f"robot {robot!r} has no kinematic scenario to render")
@@ -59,8 +69,6 @@ def render_scenario(scenario: Scenario, width: int = 640, height: int = 480, fps
             raise ValueError(f"duration = {duration!r} s; valid range is (0, "
                              f"{scenario.duration:g}] for {scenario.key}")
         scenario = dataclasses.replace(scenario, duration=duration)
-    if scenario.kind is ScenarioKind.MEASUREMENT:
-        return render_free_run(scenario, width, height, fps, camera)
     frames: list[np.ndarray] = []
     sim_trail: list[np.ndarray] = []
     model_trail: list[np.ndarray] = []
@@ -83,6 +91,9 @@ def render_scenario(scenario: Scenario, width: int = 640, height: int = 480, fps
             data, [(np.asarray(sim_trail), rendering.SIM_RGBA),
                    (np.asarray(model_trail), rendering.MODEL_RGBA)]))
 
+    if scenario.kind is ScenarioKind.MEASUREMENT:
+        _film_measurement(scenario, width, height, fps, camera, frames)
+        return np.asarray(frames)
     try:
         result = run_scenario(scenario, observer=observe)
     finally:
@@ -92,48 +103,6 @@ def render_scenario(scenario: Scenario, width: int = 640, height: int = 480, fps
         if result.error.startswith("ValueError: "):
             raise ValueError(result.error.removeprefix("ValueError: "))
         raise SimulationDivergedError(f"{scenario.key}: {result.error}")
-    return np.asarray(frames)
-
-
-def render_free_run(scenario: Scenario, width: int = 640, height: int = 480, fps: int = 30,
-                    camera: str = "track") -> np.ndarray:
-    """Frames of a measurement scenario's free run: its ``start`` state, no control.
-
-    Only the simulated path of the base is drawn (green): a measurement has no analytic
-    trajectory to draw beside it. The run is the scenario's own (same start, same
-    model), for ``scenario.duration`` seconds.
-
-    Raises:
-        ValueError: the scenario has no start state (nothing single to film); the message
-            lists the robot's scenarios that can be rendered.
-        SimulationDivergedError: the run diverged.
-    """
-    if scenario.start is None:
-        spec = get_spec(scenario.robot)
-        ok = [s.name for s in spec.scenarios
-              if s.kind is not ScenarioKind.MEASUREMENT or s.start is not None]
-        raise ValueError(f"{scenario.key} is a measurement without a single run to film; "
-                         f"scenarios that can be rendered: {', '.join(map(repr, ok))}")
-    model = load(scenario.robot)
-    data = mujoco.MjData(model)
-    scenario.start(model, data, None)
-    data.ctrl[:] = 0.0
-    cam = rendering.CameraSettings() if camera == "track" else camera
-    frames: list[np.ndarray] = []
-    trail: list[np.ndarray] = []
-    base = model.site("base").id
-    nstep = round(scenario.duration / model.opt.timestep)
-    every = 1.0 / fps
-    with rendering.Filmer(model, width, height, cam) as filmer:
-        next_t = data.time
-        for _ in range(nstep):
-            if data.time + 1e-9 >= next_t:
-                next_t += every
-                site = data.site_xpos[base]
-                trail.append(np.array([site[0], site[1], TRAIL_Z]))
-                frames.append(filmer.frame(data, [(np.asarray(trail), rendering.SIM_RGBA)]))
-            mujoco.mj_step(model, data)
-            check_healthy(model, data)
     return np.asarray(frames)
 
 
@@ -149,3 +118,42 @@ def render_to_file(robot: str, out: Path, scenario: str | None = None, width: in
     frames = render_scenario(pick_scenario(robot, scenario), width, height, fps, camera,
                              duration)
     return rendering.write_media(out, frames, fps=fps)
+
+
+def _film_measurement(scenario: Scenario, width: int, height: int, fps: int, camera: str,
+                      frames: list[np.ndarray]) -> None:
+    """Append frames of a measurement scenario's ``film`` over ``[0, scenario.duration)``.
+
+    Each run (a new ``data``) starts a new physics trail; its analytic path, if given, is
+    drawn whole. The filmed time runs on across runs.
+    """
+    assert scenario.film is not None  # pick_scenario checked
+    filmer: rendering.Filmer | None = None
+    data: mujoco.MjData | None = None
+    trail: list[np.ndarray] = []
+    offset = next_t = 0.0
+    try:
+        for frame in scenario.film(scenario, None):
+            if frame.data is not data:
+                offset += 0.0 if data is None else data.time
+                data, trail = frame.data, []
+            if filmer is None:
+                cam = rendering.CameraSettings() if camera == "track" else camera
+                filmer = rendering.Filmer(frame.model, width, height, cam)
+            t = offset + frame.data.time
+            if t > scenario.duration - 1e-9:
+                break
+            if t + 1e-9 < next_t:
+                continue
+            next_t += 1.0 / fps
+            site = frame.data.site_xpos[frame.model.site("base").id]
+            trail.append(np.array([site[0], site[1], TRAIL_Z]))
+            trails = [(np.asarray(trail), rendering.SIM_RGBA)]
+            if frame.reference is not None:
+                ref = np.asarray(frame.reference)
+                trails.append((np.column_stack([ref, np.full(len(ref), TRAIL_Z)]),
+                               rendering.MODEL_RGBA))
+            frames.append(filmer.frame(frame.data, trails))
+    finally:
+        if filmer is not None:
+            filmer.close()

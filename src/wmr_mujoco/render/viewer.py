@@ -11,11 +11,18 @@ from wmr_mujoco.models.actuation import set_actuation_mode
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.render.video import pick_scenario
 from wmr_mujoco.validation.runner import make_adapter
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 
 
 def view(robot: str, scenario: str | None = None) -> None:
-    """Open the viewer on ``robot`` and drive it through a scenario's inputs, looping."""
+    """Open the viewer on ``robot`` and drive it through a scenario's inputs, looping.
+
+    A measurement scenario plays its ``film`` (the runs it measures) instead.
+    """
     s = pick_scenario(robot, scenario)
+    if s.kind is ScenarioKind.MEASUREMENT:
+        _play_film(s)
+        return
     model = load(robot)
     adapter = make_adapter(s, model)
     if adapter.mode is not None:
@@ -36,3 +43,29 @@ def view(robot: str, scenario: str | None = None) -> None:
             lag = data.time - (time.perf_counter() - start)
             if lag > 0:
                 time.sleep(lag)
+
+
+def _play_film(s: Scenario) -> None:
+    """Play a measurement scenario's film in real time, looping, until the viewer closes.
+
+    The viewer holds one model and data; each frame's state is copied into them.
+    """
+    assert s.film is not None  # pick_scenario checked
+    first = next(iter(s.film(s, None)))
+    model, data = first.model, mujoco.MjData(first.model)
+    with mujoco.viewer.launch_passive(model, data) as handle:
+        while handle.is_running():
+            start, offset, last = time.perf_counter(), 0.0, None
+            for frame in s.film(s, None):
+                if not handle.is_running():
+                    return
+                if last is not None and frame.data is not last:
+                    offset += last.time
+                last = frame.data
+                data.qpos[:], data.qvel[:] = frame.data.qpos, frame.data.qvel
+                data.time = offset + frame.data.time
+                mujoco.mj_forward(model, data)
+                handle.sync()
+                lag = data.time - (time.perf_counter() - start)
+                if lag > 0:
+                    time.sleep(lag)

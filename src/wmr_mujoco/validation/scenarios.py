@@ -9,15 +9,14 @@ of three kinds (:class:`ScenarioKind`):
 * ``MEASUREMENT``: the scenario carries its own ``evaluate(scenario, params)`` that
   measures something in the physics (an eigenvalue, a steady precession, an energy
   budget) and returns a :class:`MeasurementResult`; the runner judges and reports it
-  like any other. A measurement whose physics is one free run from a given state (a
-  push, a release) also carries ``start(model, data, params)``, which puts ``data`` in
-  that state; ``wmr render`` then films that run (:mod:`wmr_mujoco.render.video`).
+  like any other. It may also carry ``film(scenario, params)``, the simulation after each
+  step of the runs it measures (:class:`FilmFrame`), which ``wmr render`` films.
 """
 
 from __future__ import annotations
 
 import enum
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -63,6 +62,54 @@ Start = Callable[["mujoco.MjModel", "mujoco.MjData", "RobotParams | None"], None
 
 
 @dataclass(frozen=True)
+class FilmFrame:
+    """The simulation of a measurement scenario at one step, for ``wmr render``.
+
+    Attributes:
+        model, data: the simulation after the step (live; a new ``data`` object starts a
+            new run, and its trail).
+        reference: the analytic path of the run, ``(N, 2)`` floor points (None: none).
+    """
+
+    model: mujoco.MjModel
+    data: mujoco.MjData
+    reference: np.ndarray | None = None
+
+
+#: ``film(scenario, params)``: every step of the runs a measurement scenario measures.
+Film = Callable[["Scenario", "RobotParams | None"], Iterator[FilmFrame]]
+
+
+def free_run(start: Start) -> Film:
+    """The :data:`Film` of one uncontrolled run from ``start``'s state.
+
+    For a measurement whose physics is a single free run (a push, a release): the robot's
+    model is loaded, ``start`` puts ``data`` in the run's first state, the controls stay
+    at zero, and ``mj_step`` advances it over the scenario's ``duration``; every step is
+    one :class:`FilmFrame` (no analytic path).
+
+    Raises:
+        SimulationDivergedError: (while iterating) the run diverged.
+    """
+    def film(scenario: Scenario, params: RobotParams | None) -> Iterator[FilmFrame]:
+        import mujoco
+
+        from wmr_mujoco.models.loading import load
+        from wmr_mujoco.sim.stepping import check_healthy
+
+        model = load(scenario.robot, params)
+        data = mujoco.MjData(model)
+        start(model, data, params)
+        data.ctrl[:] = 0.0
+        for _ in range(round(scenario.duration / model.opt.timestep)):
+            mujoco.mj_step(model, data)
+            check_healthy(model, data)
+            yield FilmFrame(model, data)
+
+    return film
+
+
+@dataclass(frozen=True)
 class Scenario:
     """One validation run.
 
@@ -75,8 +122,7 @@ class Scenario:
         world_frame: inputs are world rates (Ẋ, Ẏ, ψ̇) rather than body rates.
         settle: seconds at rest before the inputs start.
         evaluate: a ``MEASUREMENT`` scenario's own measurement (see :data:`Evaluate`).
-        start: a ``MEASUREMENT`` scenario's start state of its free run of ``duration``
-            seconds (see :data:`Start`; None: it has no single run to film).
+        film: a ``MEASUREMENT`` scenario's runs step by step, for clips (see :data:`Film`).
         description: one line for the report.
     """
 
@@ -88,7 +134,7 @@ class Scenario:
     world_frame: bool = False
     settle: float = 0.5
     evaluate: Evaluate | None = field(default=None, compare=False)
-    start: Start | None = field(default=None, compare=False)
+    film: Film | None = field(default=None, compare=False)
     description: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
@@ -96,9 +142,9 @@ class Scenario:
         if (self.kind is ScenarioKind.MEASUREMENT) != (self.evaluate is not None):
             raise ValueError(f"{self.key}: a {self.kind.value} scenario "
                              f"{'needs' if self.evaluate is None else 'takes no'} evaluate")
-        if self.start is not None and self.kind is not ScenarioKind.MEASUREMENT:
-            raise ValueError(f"{self.key}: only a measurement scenario takes a start state "
-                             f"(this one is {self.kind.value})")
+        if self.film is not None and self.kind is not ScenarioKind.MEASUREMENT:
+            raise ValueError(f"{self.key}: a {self.kind.value} scenario takes no film "
+                             "(wmr render films its run itself)")
         if not (np.isfinite(self.duration) and self.duration > 0):
             raise ValueError(f"{self.key}: duration = {self.duration!r} s; must be > 0")
         if not (np.isfinite(self.settle) and self.settle >= 0):

@@ -61,6 +61,10 @@ def _quat_about(axis: tuple[float, float, float], angle: float) -> np.ndarray:
 def build_free(params: DiscParams) -> mjcf.RootElement:
     """Free disc: the same wheel on a free joint, no mount and no actuators.
 
+    Its own integrator, timestep and collision rim (``DiscParams.free_*``): the
+    settings the fidelity study (``python -m wmr_mujoco.bench.disc_study``) found cheapest
+    that meet the rolling-disc targets.
+
     Keyframes (free-joint ``qvel`` is world linear velocity then body angular
     velocity; the disc axle is the body y axis):
 
@@ -75,16 +79,21 @@ def build_free(params: DiscParams) -> mjcf.RootElement:
     p = params
     r = p.wheel.radius
     root = common.new_root("disc_free", p.sim)
+    root.option.integrator = p.free_integrator
+    root.option.timestep = p.free_timestep
     root.size.nuser_actuator = 0
     body = root.worldbody.add("body", name="disc", pos=(0, 0, r))
     body.add("freejoint", name="disc")
     site = body.add("site", name="base", pos=(0, 0, 0))
     common.add_wheel_geoms(body, "disc", p.wheel)
+    # Thin rim: the collision ellipsoid (R, rim, R) touches a leaning floor where a thin
+    # disc would (DiscParams.free_rim); the inertia stays the full wheel's.
+    body.find("geom", "disc_collision").size = (r, p.free_rim, r)
     common.add_frame_sensors(root, site)
     up = (0.0, 0.0, r)
     spin = FREE_ROLL_SPEED / r
     lean_quat = _quat_about((1.0, 0.0, 0.0), FREE_LEAN)
-    lean_z = r * np.cos(FREE_LEAN) + 0.5 * p.wheel.width * np.sin(FREE_LEAN)
+    lean_z = np.hypot(r * np.cos(FREE_LEAN), p.free_rim * np.sin(FREE_LEAN))
     keys = {
         "rest": (up, (1, 0, 0, 0), (0, 0, 0), (0, 0, 0)),
         "rolling": (up, (1, 0, 0, 0), (FREE_ROLL_SPEED, 0, 0), (0, spin, 0)),

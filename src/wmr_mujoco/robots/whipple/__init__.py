@@ -8,8 +8,8 @@ measurements in the physics:
 * ``eigenvalues vs speed``: weave, capsize and castering at 1-10 m/s, with the
   benchmark's eigenvalue-versus-speed figure (:mod:`.eigen`);
 * ``push at v m/s``: self-stability after a sideways push (:mod:`.stability`); each
-  carries its start state, so ``wmr render whipple --scenario "push at 5 m/s"`` films
-  the run that is measured.
+  films its free run from its start state (:func:`~wmr_mujoco.validation.scenarios.free_run`),
+  so ``wmr render whipple --scenario "push at 5 m/s"`` films the run that is measured.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.robots.whipple import eigen, stability
 from wmr_mujoco.robots.whipple.rolling import NAME
-from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
 
 
 def push_name(speed: float) -> str:
@@ -31,7 +31,7 @@ def _push(speed: float, what: str) -> Scenario:
     evaluate, start = stability.push_scenario_parts(speed)
     return Scenario(NAME, push_name(speed), duration=stability.PUSH_DURATION,
                     kind=ScenarioKind.MEASUREMENT, settle=0.0, evaluate=evaluate,
-                    start=start, description=f"sideways push at {speed:g} m/s: {what}")
+                    film=free_run(start), description=f"sideways push at {speed:g} m/s: {what}")
 
 
 SCENARIOS = (

@@ -2,12 +2,14 @@
 
 Kinematic inputs ``(v, ω)``: wheel ground speed ``R θ̇`` and steering rate; state
 ``(x, y, φ)`` of the unicycle model. Torque inputs ``(τ_wheel, τ_steer)``: state
-``(s, ṡ)``, distance and speed along the heading, against ``s̈ = τR / (J + mR²)``.
+``(s, ṡ)``, distance and speed along the heading, against ``s̈ = τR / (J + mR²)``,
+with ``m``, ``J`` (body inertia plus armature) and ``R`` from the compiled model.
+Measurement scenarios (:mod:`.sliding`): the wheel above its traction limit.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import mujoco
@@ -19,10 +21,12 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import disc as builder
 from wmr_mujoco.models.params import DiscParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.disc import sliding
+from wmr_mujoco.robots.disc.wheel import mounted_wheel
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
-from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Sine, const
 
 NAME = "disc"
@@ -58,23 +62,17 @@ class DiscKinematics:
 class DiscDynamics:
     """Disc under wheel torque: ``x = (s, ṡ)`` distance and speed along the heading.
 
-    Analytic model :class:`WheelDynamics` with the moving mass (disc + carriage) and the
-    disc's axial inertia.
+    Analytic model :class:`WheelDynamics` of the compiled model
+    (:func:`~wmr_mujoco.robots.disc.wheel.mounted_wheel`): the moving mass (disc +
+    carriage) and the inertia about the wheel hinge including the armature.
     """
 
-    params: DiscParams
+    wheel: WheelDynamics
     mode: ActuationMode = ActuationMode.TORQUE
     state_names: tuple[str, ...] = ("distance", "speed")
     state_units: tuple[str, ...] = ("m", "m/s")
     wheel_joints: tuple[str, ...] = ("wheel",)
     lateral_wheels: tuple[str, ...] = ("wheel",)
-
-    @property
-    def wheel(self) -> WheelDynamics:
-        """The single-wheel model."""
-        p = self.params
-        return WheelDynamics(mass=p.total_mass, inertia=p.wheel.axial_inertia,
-                             radius=p.wheel.radius, friction=p.sim.friction)
 
     def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
         """Torques as given."""
@@ -99,8 +97,8 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
 
 def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
                     params: RobotParams | None) -> DiscDynamics:
-    """The single-wheel Lagrange model of the disc."""
-    return DiscDynamics(params_or_default(params, DiscParams))
+    """The single-wheel Lagrange model of the compiled disc (J includes the armature)."""
+    return DiscDynamics(mounted_wheel(model))
 
 
 def judge_rolling(scenario: Scenario, trace: Trace, adapter: DiscDynamics,
@@ -133,12 +131,27 @@ TARGETS: Mapping[str, Target] = {
                                               "within 1 % of τR/(J + mR²)"),
 }
 
+def _on_model(measure: Callable[[mujoco.MjModel], MeasurementResult]
+              ) -> Callable[[Scenario, RobotParams | None], MeasurementResult]:
+    """A measurement scenario's ``evaluate``: ``measure`` on the disc built from params."""
+    def evaluate(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
+        from wmr_mujoco.models.loading import load  # loading reads the registry
+
+        return measure(load(NAME, params))
+    return evaluate
+
+
 SCENARIOS = (
     Scenario(NAME, "straight", (const(1.0, 0.5), const(0.0))),
     Scenario(NAME, "constant steering", (const(1.0, 0.5), const(0.5))),
     Scenario(NAME, "sinusoidal steering", (const(1.0, 0.5), Sine(0.8, 4.0))),
     Scenario(NAME, "torque", (const(0.3), const(0.0)), duration=2.0,
              kind=ScenarioKind.DYNAMIC),
+    Scenario(NAME, "sliding wheel", duration=2.0, kind=ScenarioKind.MEASUREMENT,
+             evaluate=_on_model(sliding.sliding_wheel),
+             description="torque ramp to the slip onset, then a torque pulse 5 % above the "
+                         "traction limit: sliding and re-grip against the Coulomb closed "
+                         "form"),
 )
 
 SPEC = RobotSpec(

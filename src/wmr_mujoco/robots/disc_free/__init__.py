@@ -1,0 +1,107 @@
+"""The free thin disc on a free joint: no actuators, contact only (issue 13).
+
+Its scenarios are measurements against the classic rolling-disc solutions
+(:mod:`.measurements`): rolling down an incline, a sweep of speeds across the
+upright-stability threshold, steady precession over a full circle, and a leaning rolling
+start against the nonlinear equations with its energy on the flat. Each can be filmed
+(``wmr render disc_free --scenario NAME``) from the same runs it measures.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.models.builders import disc as builder
+from wmr_mujoco.models.params import DiscParams, RobotParams
+from wmr_mujoco.robots.disc_free import measurements as ms
+from wmr_mujoco.robots.disc_free.state import FreeRun
+from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.validation.scenarios import FilmFrame, MeasurementResult, Scenario, ScenarioKind
+
+NAME = "disc_free"
+
+Measure = Callable[[mujoco.MjModel], MeasurementResult]
+Runs = Callable[[mujoco.MjModel], list[FreeRun]]
+
+
+def _model(params: RobotParams | None) -> mujoco.MjModel:
+    from wmr_mujoco.models.loading import load  # loading reads the registry
+
+    return load(NAME, params)
+
+
+def _evaluate(measure: Measure) -> Callable[[Scenario, RobotParams | None], MeasurementResult]:
+    def evaluate(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
+        return measure(_model(params))
+    return evaluate
+
+
+def _film(runs: Runs, reference: Callable[[FreeRun], np.ndarray] | None = None
+          ) -> Callable[[Scenario, RobotParams | None], Iterator[FilmFrame]]:
+    """Frames of ``runs`` one after the other, with ``reference(run)`` drawn.
+
+    ``reference`` gives the analytic path of the centre (the physics trail is the
+    centre's, the ``base`` site).
+    """
+    def film(scenario: Scenario, params: RobotParams | None) -> Iterator[FilmFrame]:
+        for run in runs(_model(params)):
+            path = None if reference is None else reference(run)
+            for data, _ in run.steps():
+                yield FilmFrame(run.model, data, path)
+    return film
+
+
+def _circle(run: FreeRun) -> np.ndarray:
+    """The steady solution's centre circle: about (0, −R), radius ``R − a sin θ``."""
+    lean, radius = ms.PRECESSION
+    r = run.disc.steady_motion(lean, radius).centre_radius
+    a = np.linspace(0.0, 2 * np.pi, 91)
+    return np.column_stack([r * np.sin(a), r * np.cos(a) - radius])
+
+
+def _nonlinear(run: FreeRun) -> np.ndarray:
+    """The nonlinear equations' centre path over the run."""
+    t = np.linspace(0.0, run.duration, 201)
+    return np.array([run.disc.centre(x)[:2] for x in ms.analytic_run(run.disc, run.state, t)])
+
+
+def _sweep_clip(model: mujoco.MjModel) -> list[FreeRun]:
+    """The sweep's extreme speeds (0.8 and 1.2 v_c), kicked 15× harder to be seen.
+
+    2 s each: below v_c the lean grows to tens of degrees, above it stays a few degrees.
+    """
+    lo, hi = ms.SWEEP_RATIOS[0], ms.SWEEP_RATIOS[-1]
+    return ms.stability_runs(model, (lo, hi), kick=15 * ms.SWEEP_KICK, duration=2.0,
+                             stop_lean=1.2)
+
+
+SCENARIOS = (
+    Scenario(NAME, "incline", duration=1.0, kind=ScenarioKind.MEASUREMENT,
+             evaluate=_evaluate(ms.incline), film=_film(ms.incline_runs),
+             description="upright rolling down 0.1 rad: g sin β/(1 + C/(m a²))"),
+    Scenario(NAME, "stability sweep", duration=4.0, kind=ScenarioKind.MEASUREMENT,
+             evaluate=_evaluate(ms.stability_sweep), film=_film(_sweep_clip),
+             description="upright rolling at 0.8 to 1.2 v_c with a lean kick: threshold "
+                         "speed and lean growth rate"),
+    Scenario(NAME, "steady precession", duration=3.5, kind=ScenarioKind.MEASUREMENT,
+             evaluate=_evaluate(ms.steady_precession),
+             film=_film(ms.precession_runs, _circle),
+             description="steady circling at 0.3 rad lean on a 0.6 m circle, one full "
+                         "circle"),
+    Scenario(NAME, "leaning start", duration=10.0, kind=ScenarioKind.MEASUREMENT,
+             evaluate=_evaluate(ms.leaning_start), film=_film(ms.leaning_runs, _nonlinear),
+             description="leaning rolling start: path and lean against the nonlinear "
+                         "equations over 5 s, energy over 10 s"),
+)
+
+SPEC = RobotSpec(
+    name=NAME,
+    description="free thin disc on a free joint, no actuators; rolling-disc dynamics "
+                "against the classic solutions",
+    params_type=DiscParams, build=builder.build_free, folder="disc",
+    robot_file="disc_free.xml", scene_file="scene_free.xml", scenarios=SCENARIOS,
+    render_scenario="steady precession", picture=Picture(keyframe="leaning"),
+)
