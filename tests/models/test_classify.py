@@ -30,6 +30,13 @@ def test_classes_of_the_package_robots(name):
     assert c.manoeuvrability == sum(cls)
 
 
+def test_the_whipple_fork_is_outside_the_theory_naming_its_tilt():
+    """The benchmark's steer axis is tilted by λ = π/10 = 18° (Meijaard et al. 2007)."""
+    c = classify.classify(load("whipple"))
+    assert c.robot_class is None
+    assert "tilted 18.0° from the vertical" in c.reason
+
+
 def test_omni_rollers_are_at_zero_degrees():
     c = classify.classify(load("omni3"))
     assert all(abs(w.roller_angle) < math.radians(1.0) for w in c.wheels)

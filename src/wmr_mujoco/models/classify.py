@@ -197,8 +197,16 @@ def find_wheels(model: mujoco.MjModel) -> tuple[tuple[Wheel, ...], tuple[str, ..
                              f"(a wheel must rest on the floor)")
         links, kind = g["links"], g["kind"]
         if kind.startswith("unsupported"):
-            notes.append(f"joint chain {kind.split(':')[1]} at {name!r} is not a wheel type "
-                         f"of the theory")
+            chain = kind.split(":")[1]
+            if chain == "T-H":  # a wheel hinge below a tilted steering hinge (a bicycle fork)
+                tilt = np.degrees(np.arccos(min(1.0, abs(
+                    data.xaxis[links[0].joint] @ data.xmat[chassis].reshape(3, 3)[:, 2]))))
+                notes.append(f"wheel {name!r} steers about an axis tilted {tilt:.1f}° from the "
+                             f"vertical (the theory's steering axes are vertical and its "
+                             f"chassis does not lean): outside the theory")
+            else:
+                notes.append(f"joint chain {chain} at {name!r} is not a wheel type of the "
+                             f"theory: outside the theory")
             continue
         centre = data.xanchor[key]
         radius = float(centre[2] - floor_z)
@@ -273,9 +281,11 @@ def class_table(models: Mapping[str, mujoco.MjModel]) -> str:
             rows.append(f"| {name} | none | | | | outside the theory: {err} |")
             continue
         kinds = ", ".join(f"{n} {k}" for k, n in c.wheel_counts().items())
-        cls = f"({c.delta_m},{c.delta_s})" if c.robot_class else f"none: {c.reason}"
+        if c.robot_class is None:  # ranks of wheels the theory does not cover mean nothing
+            rows.append(f"| {name} | {kinds} | | | | outside the theory: {c.reason} |")
+            continue
         rows.append(f"| {name} | {kinds} | {c.delta_m} | {c.delta_s} | {c.manoeuvrability} "
-                    f"| {cls} |")
+                    f"| ({c.delta_m},{c.delta_s}) |")
     return "\n".join(rows)
 
 
