@@ -78,7 +78,7 @@ def test_open_target_is_shown_and_counted_not_judged():
     the row, is not judged (passed None) and says whether the figure now meets it."""
     target = Target.open(1.0, "issue 16: within 1 %", "hand-overs smeared")
     assert not target.judged and target.kind == "open"
-    assert "open: hand-overs smeared" in target.label
+    assert target.label == "open: issue 16: within 1 %; not yet met: hand-overs smeared"
     missed = Row.of("r", "s", Metric("u error", 1.4, "%", target))
     met = Row.of("r", "s", Metric("u error", 0.6, "%", target))
     assert missed.passed is None and missed.open and missed.verdict == "open"

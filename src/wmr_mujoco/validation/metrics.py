@@ -111,7 +111,7 @@ class Target:
             source: where it was asked for (e.g. the issue).
             reason: why it is missed (what the model leaves out).
         """
-        return cls(value, "open", f"{source}; open: {reason}")
+        return cls(value, "open", f"{source}; not yet met: {reason}")
 
     @property
     def judged(self) -> bool:
