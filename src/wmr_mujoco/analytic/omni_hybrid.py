@@ -549,7 +549,8 @@ class HybridRun:
 
     Attributes:
         t: times, s; pose: (N, 3) X, Y, ψ; twist: (N, 3) u, v, r; thetas: (N, 3) wheel
-        angles; torques: (N, 3); switches: (time, wheel, energy lost J) per mode switch.
+        angles; torques: (N, 3); switches: (time, wheel, energy lost J) per mode switch
+        (wheels switching together share one impact, its loss on the first of them).
     """
 
     t: np.ndarray
@@ -827,9 +828,9 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                 lost = 0.0
                 if impacts:
                     nu[b], lost = model.planar_impact(nu[b], old_m, new_m, th[b], entering)
-                for i in range(3):
-                    if new_m[i] != old_m[i]:
-                        switches[b].append(((k + 1) * dt, i, lost))
+                for j, i in enumerate(i for i in range(3) if new_m[i] != old_m[i]):
+                    # One impact, its loss counted once (on the first switching wheel).
+                    switches[b].append(((k + 1) * dt, i, lost if j == 0 else 0.0))
                 thd[b] = np.where(slipping[b], thd[b], new.H[b] @ nu[b])
             if changed.size:
                 geo = new
