@@ -39,6 +39,7 @@ renders: $(STAMP)
 	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 200 --height 150 --fps 8 --duration 5
 	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
 	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
+	$(BIN)/wmr render mecanum4 --scenario "translate+rotate (ramp)" --out renders/mecanum4.gif --width 200 --height 150 --fps 8 --duration 10
 	$(BIN)/wmr render whipple --scenario "push at 5 m/s" --out renders/whipple.gif --width 200 --height 150 --fps 8 --duration 8
 	$(BIN)/wmr render whipple --scenario "push at 3 m/s" --out renders/whipple_fall.gif --width 200 --height 150 --fps 8 --duration 3
 	$(BIN)/wmr render diffdrive --scenario "figure eight" --out renders/diffdrive.gif --width 200 --height 150 --fps 8 --duration 5
@@ -46,15 +47,18 @@ renders: $(STAMP)
 	$(BIN)/wmr render double_steer --scenario "tight turn ±1 rad" --out renders/double_steer.gif --width 200 --height 150 --fps 8 --duration 3
 	$(BIN)/wmr render disc_free --scenario "steady precession" --out renders/disc_free.gif --width 200 --height 150 --fps 8
 	$(BIN)/wmr render disc_free --scenario "stability sweep" --out renders/disc_free_stability.gif --width 200 --height 150 --fps 8
+	$(BIN)/wmr render omni3 --scenario "translate+rotate" --out renders/trails.png --width 480 --height 360 --fps 8
 
 # The design and fidelity-versus-cost studies in the model READMEs: omni3's roller design
-# and peer table, the Whipple bicycle's eigenvalues, the free disc's settings; omni3's
-# coasting energy budget and dynamics tables in docs/omni-dynamics.md.
+# and peer table, the Whipple bicycle's eigenvalues, the free disc's settings,
+# mecanum4's roller design; omni3's coasting energy budget and dynamics tables in
+# docs/omni-dynamics.md.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
 	$(BIN)/python -m wmr_mujoco.bench.omni_energy_study
 	$(BIN)/python -m wmr_mujoco.bench.whipple_study
 	$(BIN)/python -m wmr_mujoco.bench.disc_study
+	$(BIN)/python -m wmr_mujoco.bench.mecanum_study
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

@@ -60,3 +60,50 @@ def test_render_bad_size(tmp_path, capsys):
 def test_parser_rejects_missing_out():
     with pytest.raises(SystemExit):
         main(["render", "disc"])
+
+
+def test_scenarios_one_line_each(capsys):
+    from wmr_mujoco.robots import ROBOTS, get_spec
+
+    assert main(["scenarios", "omni3"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == len(get_spec("omni3").scenarios)
+    assert all(line.startswith("omni3  ") for line in lines)
+    assert any("square with rotation" in line and "kinematic" in line for line in lines)
+    assert main(["scenarios"]) == 0
+    assert len(capsys.readouterr().out.splitlines()) == sum(
+        len(spec.scenarios) for spec in ROBOTS.values())
+
+
+def test_info_shows_only_the_parameters_the_robot_uses(capsys):
+    assert main(["info", "omni3"]) == 0
+    out = capsys.readouterr().out
+    assert "wheel_kv" in out and "steer" not in out.split("total mass")[0]
+    assert main(["info", "tricycle"]) == 0
+    assert "drive.steer_kp" in capsys.readouterr().out
+
+
+def test_validate_out_is_checked_before_any_work(tmp_path, capsys):
+    afile = tmp_path / "report.txt"
+    afile.write_text("keep me")
+    assert main(["validate", "disc", "--out", str(afile)]) == 2
+    err = capsys.readouterr().err
+    assert "--out" in err and "is a file; give a folder" in err and "[1/" not in err
+    assert afile.read_text() == "keep me"
+    assert main(["validate", "disc", "--out", str(tmp_path / "missing" / "dir")]) == 2
+    assert "does not exist; create it first" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == [afile]
+
+
+def test_validate_one_scenario_and_unknown_scenario(tmp_path, capsys):
+    assert main(["validate", "disc", "--scenario", "straight", "--quiet",
+                 "--out", str(tmp_path)]) == 0
+    assert "1 of 1 scenarios pass" in capsys.readouterr().out
+    assert main(["validate", "disc", "--scenario", "loop", "--out", str(tmp_path)]) == 2
+    assert "no scenario 'loop' for disc; valid: 'straight'" in capsys.readouterr().err
+
+
+def test_render_duration_past_the_scenario_needs_hold(tmp_path, capsys):
+    out = tmp_path / "a.gif"
+    assert main(["render", "disc", "--out", str(out), "--duration", "1000"]) == 2
+    assert "valid range is (0, " in capsys.readouterr().err and not out.exists()

@@ -1,9 +1,52 @@
-"""``wmr info``: the Campion class line, and a foreign scene file described by path."""
+"""``wmr info``: the Campion class line, a foreign scene file described by path, and only
+the parameters a robot's model uses."""
+
+import dataclasses
+import functools
 
 import pytest
 
-from wmr_mujoco.info import describe, describe_file
+from wmr_mujoco.info import describe, describe_file, used_params
+from wmr_mujoco.models.builders import common
 from wmr_mujoco.robots import ROBOTS, get_spec
+
+DECLARED = [(name, field) for name, spec in ROBOTS.items() if spec.params_type is not None
+            for field in getattr(spec.params_type, "UNUSED", ())]
+
+
+def _with(params, dotted, scale):
+    """``params`` with one (possibly nested) number field scaled."""
+    head, _, rest = dotted.partition(".")
+    value = getattr(params, head)
+    new = _with(value, rest, scale) if rest else value * scale
+    return dataclasses.replace(params, **{head: new})
+
+
+def test_omni3_has_no_steering_parameters_to_show():
+    shown = used_params(ROBOTS["omni3"].params_type())
+    assert "drive.wheel_kv" in shown and not [k for k in shown if "steer" in k]
+
+
+@functools.cache
+def _default_xml(robot):
+    spec = ROBOTS[robot]
+    return common.to_xml(spec.build(spec.params_type()))
+
+
+@pytest.mark.parametrize("robot, field", DECLARED)
+def test_a_field_declared_unused_leaves_the_model_unchanged(robot, field):
+    """Independent of the declaration: build the model with the field changed by 20 %."""
+    spec = ROBOTS[robot]
+    changed = _with(spec.params_type(), field, 0.8)
+    assert common.to_xml(spec.build(changed)) == _default_xml(robot)
+
+
+def test_a_used_field_does_change_the_model():
+    """The check above can fail: a steering gain the tricycle uses changes its model."""
+    spec = ROBOTS["tricycle"]
+    default = spec.params_type()
+    changed = _with(default, "drive.steer_kp", 0.8)
+    assert common.to_xml(spec.build(changed)) != common.to_xml(spec.build(default))
 
 
 def test_info_shows_the_computed_class():

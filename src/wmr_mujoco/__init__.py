@@ -1,5 +1,9 @@
 """wmr-mujoco: wheeled mobile robots in MuJoCo, beside their textbook models.
 
+The usual start: ``wmr.simulate(robot, inputs, duration)`` (MuJoCo),
+``wmr.predict(...)`` (the analytic model), ``wmr.compare(...)`` (both, judged), ``wmr.load``
+(the compiled model); the analytic models are in :mod:`wmr_mujoco.analytic`.
+
 Importing the package does not import MuJoCo: the public names below load lazily, so
 that :mod:`wmr_mujoco.render.gl_backend` can still choose the OpenGL backend (EGL, else
 OSMesa) before MuJoCo reads ``MUJOCO_GL``.
@@ -27,6 +31,19 @@ _LAZY = {
     "ActuationMode": "wmr_mujoco.models.actuation",
     "set_actuation_mode": "wmr_mujoco.models.actuation",
     "ScenarioKind": "wmr_mujoco.validation.scenarios",
+    "Scenario": "wmr_mujoco.validation.scenarios",
+    "simulate": "wmr_mujoco.api",
+    "predict": "wmr_mujoco.api",
+    "compare": "wmr_mujoco.api",
+    "Trajectory": "wmr_mujoco.api",
+    "Comparison": "wmr_mujoco.api",
+    "base_pose": "wmr_mujoco.validation.adapters",
+    "body_pose": "wmr_mujoco.validation.adapters",
+    "body_twist": "wmr_mujoco.validation.adapters",
+    "const": "wmr_mujoco.validation.signals",
+    "Piecewise": "wmr_mujoco.validation.signals",
+    "Sine": "wmr_mujoco.validation.signals",
+    "SimulationDivergedError": "wmr_mujoco.sim.stepping",
 }
 
 __all__ = sorted(_LAZY)

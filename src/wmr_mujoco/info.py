@@ -36,6 +36,17 @@ def flatten_params(params: RobotParams | object, prefix: str = "") -> dict[str, 
     return out
 
 
+def used_params(params: RobotParams | object) -> dict[str, object]:
+    """:func:`flatten_params` without the fields the robot's model does not use.
+
+    A parameter dataclass names those in its ``UNUSED`` class attribute (dotted paths,
+    e.g. ``"drive.steer_kp"`` for a robot without steering); a test checks, robot by
+    robot, that changing them leaves the compiled model as it is.
+    """
+    unused = set(getattr(type(params), "UNUSED", ()))
+    return {k: v for k, v in flatten_params(params).items() if k not in unused}
+
+
 def _name(model: mujoco.MjModel, objtype: mujoco.mjtObj, i: int) -> str:
     return mujoco.mj_id2name(model, objtype, i) or f"#{i}"
 
@@ -72,7 +83,7 @@ def describe(robot: str) -> str:
         lines.append("parameters: none (a model file without a builder)")
     else:
         lines.append("parameters (SI units, radians):")
-        lines += [f"  {k:<28} {v}" for k, v in flatten_params(spec.params_type()).items()]
+        lines += [f"  {k:<28} {v}" for k, v in used_params(spec.params_type()).items()]
     mass = float(model.body_mass[1:].sum())  # every body but the world
     lines.append(f"total mass: {mass:.4f} kg    degrees of freedom: {model.nv}    "
                  f"timestep: {model.opt.timestep:g} s    integrator: "

@@ -79,3 +79,18 @@ def test_rank_deficient_layout_is_reported():
         ok.body_twist(layout, np.zeros(3))
     with pytest.raises(ValueError, match=r"nu must have shape \(3,\)"):
         ok.wheel_rates(layout, [1.0, 2.0])
+
+
+def test_mecanum_roller_slide_is_the_whole_relative_velocity():
+    # Independent check: under the ideal rates the contact's velocity relative to the
+    # rim, v_c − R θ̇ d_i, has no component along the roller axis (Lynch & Park's
+    # condition), so its magnitude is what the roller takes up.
+    lay = ok.mecanum_layout(0.05, 0.15, 0.12)
+    nu = np.array([0.2, -0.1, 0.7])
+    rates = ok.wheel_rates(lay, nu)
+    for i, (x, y) in enumerate(lay.positions):
+        v_c = np.array([nu[0] - nu[2] * y, nu[1] + nu[2] * x])
+        d = np.array([np.cos(lay.drive_angles[i]), np.sin(lay.drive_angles[i])])
+        rel = v_c - lay.radii[i] * rates[i] * d
+        assert abs(ok.roller_slide_speeds(lay, nu)[i]) == pytest.approx(
+            np.linalg.norm(rel), rel=1e-12)

@@ -38,3 +38,13 @@ def test_engine_timing_leaves_measurement_scenarios_to_their_own_runs(monkeypatc
                                                          spec.scenario("sliding wheel")])
     res = bench.validation_engines(1)
     assert all(res[k] > 0 for k in ("loop", "rollout", "sim_loop", "sim_rollout"))
+
+
+def test_the_bench_says_where_the_peer_came_from(tmp_path):
+    from wmr_mujoco.bench.trials import PeerModel
+
+    row = {"label": "peer", "worst_position_pct": 1.0, "worst_heading_deg": 2.0,
+           "real_time_factor": 3.0}
+    text = bench._peer_section([row], PeerModel(tmp_path / "scene.xml", "WMR_PEER_SCENE"))
+    assert text.startswith("The peer's scene file came from WMR_PEER_SCENE.")
+    assert str(tmp_path) not in text  # no path of this machine in the report

@@ -50,3 +50,71 @@ def test_peer_runs_through_the_same_runner():
     assert run.result.error is None, run.result.error
     assert np.isfinite(run.value("worst position error", "% of path"))
     assert any(run.result.trace.state_names[3:])  # the wheel angles are part of the state
+
+
+def _menagerie_stub(scene):
+    """A stand-in for the mujoco-menagerie package (offline): ``get(name)`` gives a robot
+    whose ``path(entry)`` is the scene file (None: the package knows no such robot)."""
+    import types
+
+    class Robot:
+        default_scene = "scene"
+
+        def path(self, entry):
+            assert entry == "scene"
+            return scene
+
+    def get(name):
+        if scene is None:
+            raise KeyError(name)
+        assert name == "robot_soccer_kit"
+        return Robot()
+
+    return types.SimpleNamespace(get=get)
+
+
+def _importer(module):
+    def importer(name):
+        assert name == "mujoco_menagerie"
+        if module is None:
+            raise ImportError(name)
+        return module
+    return importer
+
+
+def test_peer_through_the_package_spec_when_its_handle_has_no_path(tmp_path):
+    """The documented route: ``spec(entry)`` (a MjSpec) and the file in its folder."""
+    import types
+
+    from wmr_mujoco.bench.trials import find_peer
+
+    scene = tmp_path / "robot_soccer_kit" / "scene.xml"
+    scene.parent.mkdir()
+    scene.write_text("<mujoco/>")
+    robot = types.SimpleNamespace(
+        default_scene="scene",
+        spec=lambda entry: types.SimpleNamespace(modelfiledir=str(scene.parent) + "/"))
+    module = types.SimpleNamespace(get=lambda name: robot)
+    found = find_peer({}, _importer(module), tmp_path / "none.xml")
+    assert found.scene == scene and "mujoco-menagerie" in found.source
+
+
+def test_peer_order_package_then_variable_then_sibling(tmp_path):
+    from wmr_mujoco.bench.trials import find_peer
+
+    files = {}
+    for name in ("package", "variable", "sibling"):
+        files[name] = tmp_path / name / "scene.xml"
+        files[name].parent.mkdir()
+        files[name].write_text("<mujoco/>")
+    env = {"WMR_PEER_SCENE": str(files["variable"])}
+    found = find_peer(env, _importer(_menagerie_stub(files["package"])), files["sibling"])
+    assert found.scene == files["package"] and "mujoco-menagerie" in found.source
+    # Installed, but it cannot give the model (offline, say): the variable is next.
+    found = find_peer(env, _importer(_menagerie_stub(None)), files["sibling"])
+    assert found.scene == files["variable"] and found.source == "WMR_PEER_SCENE"
+    found = find_peer(env, _importer(None), files["sibling"])
+    assert found.source == "WMR_PEER_SCENE"
+    found = find_peer({}, _importer(None), files["sibling"])
+    assert found.scene == files["sibling"] and "beside the checkout" in found.source
+    assert find_peer({}, _importer(None), tmp_path / "none.xml") is None

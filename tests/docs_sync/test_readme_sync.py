@@ -1,5 +1,7 @@
 """The README's result and benchmark sections are pasted from the reports."""
 
+import json
+
 import pytest
 
 from wmr_mujoco.docs_sync.markers import markers
@@ -18,6 +20,13 @@ def test_section_text_demotes_headings():
     assert section_text("# Benchmarks\n\nintro\n\n## Speed\n| a |") == "intro\n\n#### Speed\n| a |"
 
 
+def _complete(reports, quick=False, peer=True):
+    """The JSON beside full reports: every scenario run, a full bench with the peer."""
+    (reports / "validation.json").write_text(json.dumps({"complete": True, "missing": []}))
+    (reports / "bench.json").write_text(json.dumps({"quick": quick,
+                                                    "peer": [{}] if peer else None}))
+
+
 def test_sync_pastes_each_report(tmp_path):
     readme = tmp_path / "README.md"
     readme.write_text("\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS)))
@@ -26,6 +35,7 @@ def test_sync_pastes_each_report(tmp_path):
     (reports / "summary.md").write_text("| robot | pass |\n|---|---|\n| disc | pass |\n")
     (reports / "bench.md").write_text("# Benchmarks\n\n## Speed\n\n| x |\n")
     (reports / "open.md").write_text("| omni3 | torque rotate | open |\n")
+    _complete(reports)
     assert sync(readme, reports) == list(SECTIONS)
     text = readme.read_text()
     assert "old" not in text and "| disc | pass |" in text and "#### Speed" in text
@@ -47,6 +57,7 @@ def test_only_the_sections_asked_for_and_nothing_when_one_is_missing(tmp_path):
     readme.write_text(original)
     (tmp_path / "summary.md").write_text("| new |\n")
     (tmp_path / "open.md").write_text("No open targets.\n")
+    _complete(tmp_path)
     with pytest.raises(FileNotFoundError, match="`make bench` writes it"):
         sync(readme, tmp_path)
     assert readme.read_text() == original  # nothing written when a report is missing
@@ -54,3 +65,61 @@ def test_only_the_sections_asked_for_and_nothing_when_one_is_missing(tmp_path):
     assert readme.read_text().count("old") == 2 and "| new |" in readme.read_text()
     with pytest.raises(ValueError, match="unknown README sections"):
         sync(readme, tmp_path, ["results"])
+
+
+def _refused(tmp_path, capsys):
+    readme = tmp_path / "README.md"
+    original = "\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS))
+    readme.write_text(original)
+    assert main(["--readme", str(readme), "--reports", str(tmp_path)]) == 2
+    assert readme.read_text() == original
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    return err
+
+
+def _reports(tmp_path, summary="| disc | pass |\n", bench="# Benchmarks\n\n| x |\n"):
+    (tmp_path / "summary.md").write_text(summary)
+    (tmp_path / "open.md").write_text("No open targets.\n")
+    (tmp_path / "bench.md").write_text(bench)
+
+
+def test_a_partial_validation_report_is_refused(tmp_path, capsys):
+    _reports(tmp_path)
+    _complete(tmp_path)
+    (tmp_path / "validation.json").write_text(json.dumps(
+        {"complete": False, "missing": ["disc/straight", "omni3/rotate"]}))
+    err = _refused(tmp_path, capsys)
+    assert "is partial (not run: disc/straight, omni3/rotate); run `make demo`" in err
+
+
+def test_a_validation_report_without_its_json_is_refused(tmp_path, capsys):
+    _reports(tmp_path)
+    _complete(tmp_path)
+    (tmp_path / "validation.json").unlink()
+    assert "partial" in _refused(tmp_path, capsys)
+
+
+@pytest.mark.parametrize("quick, peer, match", [
+    (True, True, "is from `wmr bench --quick`"),
+    (False, False, "is partial (the peer model was not found)"),
+])
+def test_a_quick_or_partial_bench_is_refused(tmp_path, capsys, quick, peer, match):
+    _reports(tmp_path)
+    _complete(tmp_path, quick=quick, peer=peer)
+    assert match in _refused(tmp_path, capsys)
+
+
+def test_a_report_with_a_path_of_this_machine_is_refused(tmp_path, capsys):
+    _reports(tmp_path, bench="Left out: not found at `/home/me/shared/scene.xml`.\n")
+    _complete(tmp_path)
+    assert "names a path of this machine ('`/home/me/shared/scene.xml')" in _refused(
+        tmp_path, capsys)
+
+
+def test_units_with_slashes_are_not_paths(tmp_path):
+    _reports(tmp_path, bench="1.5 m/s, 3 rad/s, N·m·s/rad, steps/s\n")
+    _complete(tmp_path)
+    readme = tmp_path / "README.md"
+    readme.write_text("\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS)))
+    assert sync(readme, tmp_path) == list(SECTIONS)

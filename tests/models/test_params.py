@@ -64,3 +64,44 @@ def test_total_masses_add_up():
     p = TricycleParams()
     assert p.total_mass == pytest.approx(p.chassis_mass + p.fork_mass + 2 * p.rear_wheel.mass
                                          + p.front_wheel.mass)
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: WheelParams(radius=1e6), r"WheelParams\.radius = 1000000.0 is not physical; "
+                                      r"valid range is \(0, 2.5\]"),
+    (lambda: WheelParams(mass=2e4), r"WheelParams\.mass = 20000.0 .*\(0, 10000\]"),
+    (lambda: DriveParams(wheel_kv=1e9), r"DriveParams\.wheel_kv = 1000000000.0 is not "
+                                        r"physical; valid range is \(0, 1e\+07\]"),
+    (lambda: DriveParams(steer_kp=1e9), r"steer_kp = 1000000000.0 .*\(0, 1e\+07\]"),
+    (lambda: DriveParams(wheel_torque_limit=1e5), r"wheel_torque_limit = .*\(0, 10000\]"),
+    (lambda: DriveParams(wheel_rate_limit=1e4), r"wheel_rate_limit = .*\(0, 1000\]"),
+])
+def test_physical_upper_bounds(make, match):
+    with pytest.raises(ValueError, match=match):
+        make()
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: WheelParams(radius="0.1"), r"WheelParams\.radius = '0.1' is not a number"),
+    (lambda: DriveParams(steer_kp="stiff"), r"DriveParams\.steer_kp = 'stiff' is not a number"),
+    (lambda: TricycleParams(track=None), r"TricycleParams\.track = None is not a number"),
+    (lambda: BicycleParams(wheelbase=True), r"wheelbase = True is not a number"),
+    (lambda: DiscParams(wheel=0.15), r"DiscParams\.wheel = 0.15; give a WheelParams"),
+    (lambda: TricycleParams(rear_drive=1), r"rear_drive = 1; give a string"),
+])
+def test_wrong_types_are_value_errors_naming_the_field(make, match):
+    with pytest.raises(ValueError, match=match):
+        make()
+
+
+def test_a_short_tricycle_wheelbase_is_a_wheelbase_error():
+    with pytest.raises(ValueError, match=r"TricycleParams\.wheelbase = 0.15 makes the front "
+                                         r"wheel overlap the rear ones; valid range is "
+                                         r"\(0.2, inf\)"):
+        TricycleParams(wheelbase=0.15)
+
+
+def test_wheel_params_take_only_the_field_to_change():
+    default = WheelParams()
+    wider = WheelParams(width=0.05)
+    assert (wider.radius, wider.mass, wider.width) == (default.radius, default.mass, 0.05)

@@ -95,7 +95,7 @@ def test_a_new_robot_runs_through_validate_report_and_render(tmp_path):
     assert f"{NAME}/gentle arc" in path.read_text()
     doc = json.loads((tmp_path / "validation.json").read_text())
     assert [s["robot"] for s in doc["scenarios"]] == [NAME, NAME]
-    assert (tmp_path / "validation" / "wide-disc-inertia.png").stat().st_size > 1000
+    assert (tmp_path / "validation" / NAME / "inertia.png").stat().st_size > 1000
     assert frames.shape == (3, 48, 64, 3) and frames.std() > 0
 
 

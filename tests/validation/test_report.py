@@ -22,7 +22,7 @@ def test_report_files(results, tmp_path):
     assert "1 of 2 scenarios pass" in text and "disc/nan input" in text
     doc = json.loads((tmp_path / "validation.json").read_text())
     assert doc["passed"] is False and len(doc["scenarios"]) == 2
-    assert (tmp_path / "validation" / "disc-short.png").stat().st_size > 1000
+    assert (tmp_path / "validation" / "disc" / "short.png").stat().st_size > 1000
     assert not list(tmp_path.rglob(".*"))  # no temporary files left
 
 
@@ -96,3 +96,72 @@ def test_plot_series_draws_points_and_curves(tmp_path):
               Series("points", x[::5], x[::5] ** 2, "v", "s", style="o", color="tab:red")]
     path = plot_series(series, tmp_path / "f.png", "title")
     assert path.stat().st_size > 5_000
+
+
+def _result(robot, name, value, passed=True):
+    """A judged result of a registered scenario, made by hand (no simulation)."""
+    from wmr_mujoco.robots import get_spec
+    from wmr_mujoco.validation.metrics import Row, Trace
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    row = Row(robot, name, "worst position error", value, "% of path", 0.5, passed, "", "req")
+    return ScenarioResult(get_spec(robot).scenario(name), [row], Trace())
+
+
+def _every_result(value):
+    from wmr_mujoco.robots import ROBOTS
+
+    return [_result(spec.name, s.name, value) for spec in ROBOTS.values()
+            for s in spec.scenarios]
+
+
+def test_a_partial_run_is_merged_into_the_full_report(tmp_path):
+    full = _every_result(0.1)
+    write_report(full, tmp_path)
+    assert json.loads((tmp_path / "validation.json").read_text())["complete"] is True
+    write_report([_result("omni3", "rotate", 0.3)], tmp_path)
+    doc = json.loads((tmp_path / "validation.json").read_text())
+    assert doc["complete"] is True and len(doc["scenarios"]) == len(full)
+    values = {(r["robot"], r["scenario"]): r["metrics"][0]["value"] for r in doc["scenarios"]}
+    assert values[("omni3", "rotate")] == 0.3 and values[("disc", "straight")] == 0.1
+    # Registry order is kept, whatever the order of the runs.
+    assert [(r["robot"], r["scenario"]) for r in doc["scenarios"]] == [
+        (r.scenario.robot, r.scenario.name) for r in full]
+    summary = (tmp_path / "summary.md").read_text()
+    assert summary.count("\n") == len(full) + 2 and "| disc | straight |" in summary
+
+
+def test_a_first_partial_run_says_what_is_missing(tmp_path):
+    write_report([_result("disc", "straight", 0.1)], tmp_path)
+    doc = json.loads((tmp_path / "validation.json").read_text())
+    assert doc["complete"] is False and "omni3/rotate" in doc["missing"]
+    assert "Not run yet: " in (tmp_path / "validation.md").read_text()
+
+
+def test_a_run_removes_its_own_stale_plots_only(tmp_path):
+    plots = tmp_path / "validation"
+    for robot in ("disc", "omni3"):
+        (plots / robot).mkdir(parents=True)
+        (plots / robot / "renamed-scenario.png").write_bytes(b"png")
+    write_report([_result("disc", "straight", 0.1)], tmp_path)
+    assert not (plots / "disc" / "renamed-scenario.png").exists()
+    assert (plots / "omni3" / "renamed-scenario.png").exists()
+
+
+def test_a_corrupt_earlier_report_counts_as_none(tmp_path):
+    (tmp_path / "validation.json").write_text("{not json")
+    write_report([_result("disc", "straight", 0.1)], tmp_path)
+    doc = json.loads((tmp_path / "validation.json").read_text())
+    assert [r["scenario"] for r in doc["scenarios"]] == ["straight"]
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda p: (p / "f").write_text("x") and p / "f", "is a file; give a folder"),
+    (lambda p: p / "missing" / "dir", "folder .*missing' does not exist; create it first"),
+])
+def test_report_folder_is_checked_before_any_work(tmp_path, make, match):
+    from wmr_mujoco.validation.report import check_report_folder
+
+    with pytest.raises(ValueError, match=match):
+        check_report_folder(make(tmp_path))
+    assert check_report_folder(tmp_path / "new") == tmp_path / "new"

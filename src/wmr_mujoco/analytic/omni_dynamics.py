@@ -26,6 +26,7 @@ multiplier form :func:`multiplier_solution` (Lagrange–d'Alembert in the veloci
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -57,9 +58,9 @@ class OmniDynamics:
         if not isinstance(self.layout, ok.WheelLayout):
             raise ValueError(f"layout must be a WheelLayout, got {type(self.layout).__name__}")
 
-    @property
+    @functools.cached_property
     def H(self) -> np.ndarray:
-        """Wheel Jacobian, ``θ̇ = H ν``."""
+        """Wheel Jacobian, ``θ̇ = H ν`` (computed once)."""
         return ok.wheel_jacobian(self.layout)
 
     @property

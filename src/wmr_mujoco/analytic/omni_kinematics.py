@@ -124,16 +124,22 @@ def body_twist(layout: WheelLayout, rates: np.ndarray) -> np.ndarray:
 
 
 def roller_slide_speeds(layout: WheelLayout, nu: np.ndarray) -> np.ndarray:
-    """Speed of each contact point along its wheel's axle, ``a_i · (v + r ẑ × p_i)``.
+    """Speed the passive rollers take up at each contact, under the ideal wheel rates.
 
-    ``a_i = (sin β_i, −cos β_i)`` (outward for the symmetric layout). For omni wheels
-    (γ = 0) this is the speed the passive rollers take up; a roller of rolling radius ρ
-    then spins at this speed / ρ.
+    The contact roller turns about ``e_i = (cos(β_i+γ_i), sin(β_i+γ_i))``; its surface
+    carries the contact's velocity relative to the rim, ``v_c − R θ̇ d_i``, across that
+    axis, along ``n_i = ẑ × e_i``. With ``R θ̇_i = v_c·e_i / cos γ_i`` (Lynch & Park) and
+    ``d_i·n_i = −sin γ_i`` this is ``−(v_c·n_i + tan γ_i v_c·e_i)``, with ``v_c = v + r ẑ × p_i``.
+    For omni wheels (γ = 0) it is the speed along the axle ``a_i · v_c``,
+    ``a_i = (sin β_i, −cos β_i)``. A roller of rolling radius ρ spins at this speed / ρ.
     """
     u, v, r = as_array("nu", nu, (3,))
     x, y = layout.positions.T
     vx, vy = u - r * y, v + r * x
-    return np.sin(layout.drive_angles) * vx - np.cos(layout.drive_angles) * vy
+    ang = layout.drive_angles + layout.roller_angles
+    along = np.cos(ang) * vx + np.sin(ang) * vy
+    across = -np.sin(ang) * vx + np.cos(ang) * vy
+    return -(across + np.tan(layout.roller_angles) * along)
 
 
 def rotation(psi: float) -> np.ndarray:

@@ -22,8 +22,9 @@ import mujoco
 from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.bench.omni_study import ROBOT as STUDY_ROBOT
 from wmr_mujoco.bench.omni_study import measure_omni, measure_peer
-from wmr_mujoco.bench.trials import PEER_SCENE
+from wmr_mujoco.bench.trials import PeerModel, find_peer
 from wmr_mujoco.models.loading import load
+from wmr_mujoco.progress import bar
 from wmr_mujoco.robots import ROBOTS, get_spec
 from wmr_mujoco.sim.thread_scaling import TARGET_S, driving_controls, scaling
 from wmr_mujoco.sim.timing import median_time, paired_ratio, step_loop_time
@@ -165,10 +166,16 @@ def validation_engines(repeats: int) -> dict[str, float]:
             "sim_loop": s_loop, "sim_rollout": s_rollout, "sim_speedup": s_ratio}
 
 
-def peer_side_by_side(names: Sequence[str] | None = None, scene: Path = PEER_SCENE
+def peer_side_by_side(names: Sequence[str] | None = None, scene: Path | None = None
                       ) -> list[dict[str, float]] | None:
-    """The study robot and the peer on the same trials, same run; None without the peer."""
-    if not scene.is_file():
+    """The study robot and the peer on the same trials, same run; None without the peer.
+
+    ``scene`` None: wherever :func:`~wmr_mujoco.bench.trials.find_peer` finds it.
+    """
+    if scene is None:
+        peer = find_peer()
+        scene = None if peer is None else peer.scene
+    if scene is None or not scene.is_file():
         return None
     ours = measure_omni(get_spec(STUDY_ROBOT).params_type(), f"{STUDY_ROBOT} (default)",
                         names)
@@ -176,10 +183,13 @@ def peer_side_by_side(names: Sequence[str] | None = None, scene: Path = PEER_SCE
     return [dataclasses.asdict(s) for s in (ours, peer)]
 
 
-def _peer_section(rows: list[dict[str, float]] | None) -> str:
+def _peer_section(rows: list[dict[str, float]] | None, peer: PeerModel | None = None
+                  ) -> str:
     if rows is None:
-        return f"Left out: the peer model was not found at `{PEER_SCENE}`."
-    return _md_table(["model", "worst position error % of path", "worst heading error °",
+        return ("Left out: the peer model was not found (install mujoco-menagerie, or set "
+                "WMR_PEER_SCENE to robot_soccer_kit's scene.xml).")
+    found = "" if peer is None else f"The peer's scene file came from {peer.source}.\n\n"
+    return found + _md_table(["model", "worst position error % of path", "worst heading error °",
                       "real-time ×"],
                      [[p["label"], f"{p['worst_position_pct']:.3f}",
                        f"{p['worst_heading_deg']:.2f}", f"{p['real_time_factor']:.0f}×"]
@@ -198,26 +208,40 @@ def main(args: argparse.Namespace) -> int:
     if repeats < 1:
         raise ValueError(f"repeats = {repeats!r}; must be >= 1")
     results: dict[str, object] = {"machine": {"cpus": os.cpu_count(),
-                                              "mujoco": mujoco.__version__}}
+                                              "mujoco": mujoco.__version__},
+                                  "quick": bool(args.quick)}
+    stages = bar(6, "wmr bench", unit="stage")
     print("stepping speed ...", file=sys.stderr, flush=True)
     pairs = 3 if args.quick else max(15, repeats)
     speed = step_speed(driven_robots(), pairs)
     results["speed"] = speed
+    stages.update()
     print("accuracy against timestep ...", file=sys.stderr, flush=True)
     accuracy = {r: accuracy_vs_timestep(r, repeats) for r in accuracy_robots()}
     results["accuracy"] = accuracy
+    stages.update()
     print("peer model ...", file=sys.stderr, flush=True)
     names = QUICK_TRIALS if args.quick else None
-    results["peer"] = peer_side_by_side(names)
-    if results["peer"] is None:
-        print(f"warning: peer model not found: {PEER_SCENE} (set WMR_PEER_SCENE to "
-              "robot_soccer_kit's scene.xml); its comparison is left out", file=sys.stderr)
+    peer = find_peer()
+    results["peer"] = None if peer is None else peer_side_by_side(names, peer.scene)
+    results["peer_source"] = None if peer is None else peer.source
+    if peer is None:
+        print("warning: peer model not found (install mujoco-menagerie, or set "
+              "WMR_PEER_SCENE to robot_soccer_kit's scene.xml); its comparison is left out",
+              file=sys.stderr)
+    else:
+        print(f"peer model from {peer.source}: {peer.scene}", file=sys.stderr)
+    stages.update()
     print("rendering ...", file=sys.stderr, flush=True)
     results["render"] = render_fps(repeats)
+    stages.update()
     print("wmr validate ...", file=sys.stderr, flush=True)
     results["validate_wall_s"] = validate_wall_time(1 if args.quick else 3)
+    stages.update()
     engines = validation_engines(1 if args.quick else 3)
     results["validation_engines_s"] = engines
+    stages.update()
+    stages.close()
 
     sp = _md_table(["robot", "timestep", "mj_step loop steps/s", "real-time ×",
                     "rollout 1 thread steps/s", f"rollout {next(iter(speed.values()))['threads']} "
@@ -233,7 +257,7 @@ def main(args: argparse.Namespace) -> int:
                       f"{row['timestep'] * 1e3:g} ms" + (" (default)" if row["default"] else ""),
                       f"{row['position_error_pct']:.3f}", f"{row['rtf']:.0f}×"]
                      for r, rows in accuracy.items() for row in rows])
-    peer = _peer_section(results["peer"])
+    peer_md = _peer_section(results["peer"], peer)
     ren = results["render"]
     text = "\n\n".join([
         "# Benchmarks", f"`wmr bench` on {os.cpu_count()} cores, MuJoCo {mujoco.__version__}; "
@@ -247,7 +271,7 @@ def main(args: argparse.Namespace) -> int:
         "independent work, as noisy as the speedup.",
         "## Accuracy against cost", acc,
         f"## Omni robot and the peer model ({len(names) if names else 'all'} open-loop "
-        "trials, same run)", peer, "## Rendering, 640×480",
+        "trials, same run)", peer_md, "## Rendering, 640×480",
         f"{ren['no_shadows']:.1f} frames/s as `wmr render` draws (no shadows or "
         f"reflections), {ren['shadows']:.1f} with shadows and reflections "
         f"({ren['backend']} backend; {ren['robot']}, the scene with the most geoms).",

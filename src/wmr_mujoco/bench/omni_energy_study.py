@@ -29,8 +29,7 @@ import numpy as np
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
-from wmr_mujoco.robots.omni3.model import WHEELS, hybrid_from_model
-from wmr_mujoco.robots.omni3.runs import settled
+from wmr_mujoco.robots.omni3.runs import WHEELS, hybrid, settled
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric
 
@@ -65,7 +64,7 @@ def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
     if contact_timeconst is not None:
         _stiffen(model, contact_timeconst)
     model.opt.enableflags |= mujoco.mjtEnableBit.mjENBL_ENERGY
-    hy = hybrid_from_model(model, compliant=False)
+    hy = hybrid(None)
     dt = model.opt.timestep
     H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
     for k in range(round(drive_time / dt)):

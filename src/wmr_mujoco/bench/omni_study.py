@@ -20,7 +20,6 @@ import numpy as np
 
 from wmr_mujoco.bench.trials import (
     PEER_NAME,
-    PEER_SCENE,
     TrialRun,
     peer_spec,
     run_trial,
@@ -93,7 +92,7 @@ def measure_omni(params: OmniParams, label: str, names: Sequence[str] | None = N
     return summarise(label, [run_trial(t, params) for t in trials], ripple)
 
 
-def measure_peer(names: Sequence[str] | None = None, scene: Path = PEER_SCENE) -> Summary:
+def measure_peer(names: Sequence[str] | None = None, scene: Path | None = None) -> Summary:
     """The peer model on the same trials (its ripple is not measured: cylinder rollers).
 
     Raises:

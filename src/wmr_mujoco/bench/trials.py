@@ -12,16 +12,19 @@ the wheel layout from the compiled model and commands its angle (or rate) servos
 from __future__ import annotations
 
 import functools
+import importlib
 import os
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
+from types import ModuleType
 
 import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.params import RobotParams
-from wmr_mujoco.models.paths import MODELS_DIR
+from wmr_mujoco.models.paths import REPO_ROOT
 from wmr_mujoco.robots import RobotSpec
 from wmr_mujoco.sim.engine import Engine, simulate
 from wmr_mujoco.sim.timing import timed
@@ -43,13 +46,64 @@ from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 #: Seconds each trial runs after the settle.
 DURATION = 5.0
 
-#: The peer model (MuJoCo Menagerie robot_soccer_kit), measured only as a file, never
-#: copied: ``../shared/anchors`` beside the checkout, or the ``WMR_PEER_SCENE`` variable.
-PEER_SCENE = Path(os.environ.get(
-    "WMR_PEER_SCENE",
-    MODELS_DIR.parent.parent / "shared" / "anchors" / "robot_soccer_kit" / "scene.xml"))
+#: The peer model: MuJoCo Menagerie's robot_soccer_kit, measured, never copied here.
 PEER_NAME = "robot_soccer_kit"
 PEER_WHEELS = ("wheel1_speed", "wheel2_speed", "wheel3_speed")
+#: The last place :func:`find_peer` looks: a ``shared/anchors`` folder beside the checkout.
+PEER_SCENE = REPO_ROOT.parent / "shared" / "anchors" / PEER_NAME / "scene.xml"
+#: The PyPI package that fetches Menagerie models (on first use, from the internet).
+MENAGERIE_MODULE = "mujoco_menagerie"
+
+
+@dataclass(frozen=True)
+class PeerModel:
+    """Where the peer's scene file was found, and how (said by ``wmr bench``)."""
+
+    scene: Path
+    source: str
+
+
+def _menagerie_scene(module: ModuleType) -> Path | None:
+    """The peer's default scene through the ``mujoco-menagerie`` package, if it has one.
+
+    ``mm.get(name)`` is the package's handle on a robot (nothing downloaded yet) and
+    ``default_scene`` its scene entry. The entry's file: ``path(entry)`` where the handle
+    has it, else the folder of the entry's ``mujoco.MjSpec`` (``spec(entry)``, which
+    downloads the model on first use) and ``<entry>.xml`` in it. Any failure (offline, no
+    such robot) is None.
+    """
+    try:
+        robot = module.get(PEER_NAME)
+        entry = robot.default_scene
+        if callable(getattr(robot, "path", None)):
+            scene = Path(robot.path(entry))
+        else:
+            scene = Path(robot.spec(entry).modelfiledir) / f"{entry}.xml"
+    except Exception:
+        return None
+    return scene if scene.is_file() else None
+
+
+def find_peer(environ: Mapping[str, str] = os.environ,
+              importer: Callable[[str], ModuleType] = importlib.import_module,
+              sibling: Path = PEER_SCENE) -> PeerModel | None:
+    """Find the peer's scene; None when no place has the file.
+
+    In order: the ``mujoco-menagerie`` package (if installed; it downloads the model on
+    first use), else the ``WMR_PEER_SCENE`` variable, else the sibling folder
+    :data:`PEER_SCENE`.
+    """
+    try:
+        scene = _menagerie_scene(importer(MENAGERIE_MODULE))
+    except ImportError:
+        scene = None
+    if scene is not None:
+        return PeerModel(scene, "the mujoco-menagerie package")
+    if environ.get("WMR_PEER_SCENE"):
+        scene = Path(environ["WMR_PEER_SCENE"])
+        return PeerModel(scene, "WMR_PEER_SCENE") if scene.is_file() else None
+    return PeerModel(sibling, "the shared/anchors folder beside the checkout") \
+        if sibling.is_file() else None
 
 
 def standard_trials(robot: str, speed: float = SPEED, yaw_rate: float = YAW_RATE
@@ -131,16 +185,23 @@ def servo_omni_adapter(wheels: tuple[str, ...]) -> AdapterFactory:
     return factory
 
 
-def peer_spec(scene: Path = PEER_SCENE, targets: dict[str, Target] | None = None
+def peer_spec(scene: Path | None = None, targets: dict[str, Target] | None = None
               ) -> RobotSpec:
     """The peer model as a registry entry with the standard trials (not registered).
+
+    Args:
+        scene: its scene file (None: :func:`find_peer`).
+        targets: targets to judge it by.
 
     Raises:
         FileNotFoundError: no scene file there; the message says how to point at one.
     """
+    if scene is None:
+        peer = find_peer()
+        scene = PEER_SCENE if peer is None else peer.scene
     if not Path(scene).is_file():
-        raise FileNotFoundError(f"peer model not found: {scene} (set WMR_PEER_SCENE to "
-                                "robot_soccer_kit's scene.xml)")
+        raise FileNotFoundError(f"peer model not found: {scene} (install mujoco-menagerie, "
+                                "or set WMR_PEER_SCENE to robot_soccer_kit's scene.xml)")
     return RobotSpec(
         name=PEER_NAME, description="robot_soccer_kit (MuJoCo Menagerie), as published",
         params_type=None, build=None, scene=Path(scene),

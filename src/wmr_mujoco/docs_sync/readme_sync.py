@@ -10,6 +10,7 @@ code, never from typing. ``make readme`` runs it.
 from __future__ import annotations
 
 import argparse
+import json
 import re
 import sys
 from collections.abc import Sequence
@@ -23,6 +24,49 @@ from wmr_mujoco.validation.report import REPORTS_DIR
 SECTIONS = {"validation results": ("summary.md", "make demo"),
             "open targets": ("open.md", "make demo"),
             "benchmarks": ("bench.md", "make bench")}
+
+
+#: An absolute path of this machine in a report (``/home/...``, ``C:\\...``): not for the README.
+LOCAL_PATH = re.compile(r"(?:^|[\s`'\"(=])(?:/[\w.-]+){2,}|[A-Za-z]:\\\\")
+
+
+def _json(path: Path) -> dict:
+    try:
+        doc = json.loads(path.read_text())
+    except (OSError, ValueError):
+        return {}
+    return doc if isinstance(doc, dict) else {}
+
+
+def refusal(key: str, reports: Path, text: str) -> str | None:
+    """Why a report must not go into the README (one line), or None if it may.
+
+    Refused: a partial validation report (not every registered scenario, see
+    ``validation.json``'s ``complete``), a ``--quick`` or partial bench (the peer model
+    left out), and any report naming a path of this machine.
+    """
+    reports = Path(reports)
+    if SECTIONS[key][1] == "make demo":  # the validation results and open targets
+        doc = _json(reports / "validation.json")
+        if doc.get("complete") is not True:
+            missing = doc.get("missing") or ["(validation.json missing or from an old run)"]
+            shown = ", ".join(missing[:3]) + (f" and {len(missing) - 3} more"
+                                              if len(missing) > 3 else "")
+            return (f"{reports / SECTIONS[key][0]} is partial (not run: {shown}); run "
+                    "`make demo`")
+    if key == "benchmarks":
+        doc = _json(reports / "bench.json")
+        if doc.get("quick", True):
+            return (f"{reports / 'bench.md'} is from `wmr bench --quick` (or has no "
+                    "bench.json); run `make bench`")
+        if doc.get("peer") is None:
+            return (f"{reports / 'bench.md'} is partial (the peer model was not found); "
+                    "install mujoco-menagerie or set WMR_PEER_SCENE, then `make bench`")
+    match = LOCAL_PATH.search(text)
+    if match:
+        return (f"{reports / SECTIONS[key][0]} names a path of this machine "
+                f"({match.group().strip()!r}); it would not hold for a reader")
+    return None
 
 
 def section_text(report: str) -> str:
@@ -45,7 +89,8 @@ def sync(readme: Path = README_PATH, reports: Path = REPORTS_DIR,
 
     Raises:
         FileNotFoundError: a report is missing; the message says which command writes it.
-        ValueError: an unknown key, or the README lacks a section's markers.
+        ValueError: an unknown key, a report :func:`refusal` refuses (one line saying
+            why), or the README lacks a section's markers.
     """
     keys = list(SECTIONS) if keys is None else list(keys)
     unknown = [k for k in keys if k not in SECTIONS]
@@ -57,7 +102,11 @@ def sync(readme: Path = README_PATH, reports: Path = REPORTS_DIR,
         path = Path(reports) / name
         if not path.is_file():
             raise FileNotFoundError(f"{path} not found; `{command}` writes it")
-        texts[key] = section_text(path.read_text())
+        text = path.read_text()
+        reason = refusal(key, reports, text)
+        if reason is not None:
+            raise ValueError(f"not pasted: {reason}")
+        texts[key] = section_text(text)
     for key, text in texts.items():
         replace_between(readme, key, text)
     return keys

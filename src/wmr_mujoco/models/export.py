@@ -14,7 +14,7 @@ from lxml import etree
 
 from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.docs_sync.markers import has_markers, replace_between
-from wmr_mujoco.info import flatten_params
+from wmr_mujoco.info import used_params
 from wmr_mujoco.models.builders import common
 from wmr_mujoco.models.builders.scene import add_scene
 from wmr_mujoco.models.params import WheelParams
@@ -39,7 +39,7 @@ def parameter_table(spec: RobotSpec) -> str:
     """Markdown table of the robot's default parameters and derived wheel inertias."""
     params = spec.params_type()
     rows = ["| parameter | value |", "|---|---|"]
-    rows += [f"| `{k}` | {v} |" for k, v in flatten_params(params).items()]
+    rows += [f"| `{k}` | {v} |" for k, v in used_params(params).items()]
     for f in dataclasses.fields(params):
         value = getattr(params, f.name)
         if isinstance(value, WheelParams):

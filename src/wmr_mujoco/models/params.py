@@ -14,15 +14,22 @@ naming the field, its value and the valid range.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, is_dataclass
 from typing import Any, ClassVar, Protocol, TypeVar
+
+
+def _is_number(value: object) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
 def _check_range(obj: Any, name: str, low: float, high: float = math.inf,
                  low_inclusive: bool = False) -> None:
-    """Raise ``ValueError`` unless ``low < obj.name <= high`` (``low <=`` if inclusive)."""
+    """Raise ``ValueError`` unless ``low < obj.name <= high`` (``low <=`` if inclusive).
+
+    A value that is not a number (a string, None, a bool) is refused the same way.
+    """
     value = getattr(obj, name)
-    ok = isinstance(value, (int, float)) and math.isfinite(value)
+    ok = _is_number(value) and math.isfinite(value)
     if ok:
         ok = (value >= low if low_inclusive else value > low) and value <= high
     if not ok:
@@ -34,30 +41,66 @@ def _check_range(obj: Any, name: str, low: float, high: float = math.inf,
         )
 
 
-def _check_positive_fields(obj: Any, exclude: tuple[str, ...] = ()) -> None:
-    """Check that every float field of ``obj`` not in ``exclude`` is finite and > 0."""
+#: Field annotations (as strings: ``from __future__ import annotations``) of numbers.
+_NUMBER_TYPES = ("float", "int")
+
+
+def _check_types(obj: Any) -> None:
+    """Raise ``ValueError`` for a field of the wrong type, before any arithmetic on it.
+
+    Number fields (annotated ``float``/``int``) must hold numbers; a field whose default
+    is a parameter dataclass must hold an instance of that dataclass; a ``str`` field a
+    string.
+    """
     for f in fields(obj):
-        if f.name not in exclude and isinstance(getattr(obj, f.name), (int, float)):
+        value = getattr(obj, f.name)
+        default = f.default
+        if str(f.type) in _NUMBER_TYPES and not _is_number(value):
+            raise ValueError(f"{type(obj).__name__}.{f.name} = {value!r} is not a number; "
+                             f"give {'an integer' if str(f.type) == 'int' else 'a number'} "
+                             "(SI units)")
+        if is_dataclass(default) and not isinstance(value, type(default)):
+            raise ValueError(f"{type(obj).__name__}.{f.name} = {value!r}; give a "
+                             f"{type(default).__name__}")
+        if str(f.type) == "str" and not isinstance(value, str):
+            raise ValueError(f"{type(obj).__name__}.{f.name} = {value!r}; give a string")
+
+
+def _check_positive_fields(obj: Any, exclude: tuple[str, ...] = ()) -> None:
+    """Check every field's type, then that each number field not in ``exclude`` is > 0."""
+    _check_types(obj)
+    for f in fields(obj):
+        if f.name not in exclude and _is_number(getattr(obj, f.name)):
             _check_range(obj, f.name, 0.0)
+
+
+#: Largest wheel radius, m: the biggest tyres built (haul trucks) are about 4 m across.
+MAX_WHEEL_RADIUS = 2.5
+#: Largest wheel mass, kg: such a tyre with its rim weighs about 5 t.
+MAX_WHEEL_MASS = 1.0e4
 
 
 @dataclass(frozen=True)
 class WheelParams:
-    """A thin uniform disc wheel.
+    """A thin uniform disc wheel; every field has a default (a 0.1 m castor-size wheel).
 
     Attributes:
-        radius: rolling radius R.
-        width: disc thickness w (collision cylinder length).
-        mass: wheel mass m.
+        radius: rolling radius R, in (0, 2.5] m: the largest tyres built (haul trucks,
+            about 4 m across) bound it from above (:data:`MAX_WHEEL_RADIUS`).
+        width: disc thickness w (collision cylinder length), in (0, 2R] m.
+        mass: wheel mass m, in (0, 1e4] kg: such a haul-truck tyre with its rim weighs
+            about 5 t (:data:`MAX_WHEEL_MASS`).
 
     """
 
-    radius: float
-    width: float
-    mass: float
+    radius: float = 0.1
+    width: float = 0.03
+    mass: float = 0.4
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
+        _check_range(self, "radius", 0.0, MAX_WHEEL_RADIUS)
+        _check_range(self, "mass", 0.0, MAX_WHEEL_MASS)
         _check_range(self, "width", 0.0, 2.0 * self.radius)
 
     @property
@@ -69,6 +112,14 @@ class WheelParams:
     def diametral_inertia(self) -> float:
         """Moment of inertia about a diameter, ``m R² / 4 + m w² / 12``."""
         return self.mass * (self.radius**2 / 4.0 + self.width**2 / 12.0)
+
+
+#: Largest motor torque, N·m (see :class:`DriveParams`).
+MAX_TORQUE = 1.0e4
+#: Largest commanded rate, rad/s (see :class:`DriveParams`).
+MAX_RATE = 1.0e3
+#: Largest servo gain, N·m·s/rad or N·m/rad (see :class:`DriveParams`).
+MAX_GAIN = 1.0e7
 
 
 @dataclass(frozen=True)
@@ -91,6 +142,15 @@ class DriveParams:
         steer_angle_limit: steering angle limit, rad (ignored by the disc, whose
             mount steers freely through any angle).
 
+    Upper bounds, physical: torques at most :data:`MAX_TORQUE` = 1e4 N·m (a wheel hub
+    drive of a 100 t vehicle, 1 m wheels, 1 g of traction, shared by 10 wheels, needs
+    about 1e5 N / 10 · 1 m = 1e4 N·m); rates at most :data:`MAX_RATE` = 1000 rad/s
+    (about 10,000 rpm at the wheel, a motor's speed with no gear); servo gains at most
+    what saturates that torque at an error of 1 mrad or 1 mrad/s: ``kv ≤ 1e4 N·m / 1e-3
+    rad/s = 1e7`` N·m·s/rad and ``kp ≤ 1e7`` N·m/rad (:data:`MAX_GAIN`); a stiffer servo is
+    a bang-bang switch, and ``kv·Δt`` far above the wheel inertia stalls the robot (see
+    ``wheel_armature``); armature at most 10 kg·m².
+
     """
 
     wheel_kv: float = 5.0
@@ -106,6 +166,12 @@ class DriveParams:
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("wheel_armature",))
         _check_range(self, "wheel_armature", 0.0, 10.0, low_inclusive=True)
+        for name in ("wheel_torque_limit", "steer_torque_limit"):
+            _check_range(self, name, 0.0, MAX_TORQUE)
+        for name in ("wheel_rate_limit", "steer_rate_limit"):
+            _check_range(self, name, 0.0, MAX_RATE)
+        for name in ("wheel_kv", "steer_kp", "steer_kv"):
+            _check_range(self, name, 0.0, MAX_GAIN)
         _check_range(self, "steer_angle_limit", 0.0, math.pi / 2.0 - 0.05)
 
 
@@ -170,6 +236,10 @@ class DiscParams:
     free_integrator: str = "RK4"
     free_timestep: float = 0.004
     free_rim: float = 0.002
+
+    #: Fields the model does not use (the mount steers through any angle): ``wmr info``
+    #: leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_angle_limit",)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
@@ -269,6 +339,13 @@ class TricycleParams:
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("chassis_com_x",))
         _check_range(self, "chassis_com_x", 0.05, 0.95, low_inclusive=True)
+        min_wb = self.rear_wheel.radius + self.front_wheel.radius
+        if self.wheelbase <= min_wb:
+            raise ValueError(
+                f"TricycleParams.wheelbase = {self.wheelbase!r} makes the front wheel "
+                f"overlap the rear ones; valid range is ({min_wb:g}, inf) (sum of the "
+                "wheel radii)"
+            )
         min_track = self.rear_wheel.width + 0.01
         max_track = 2.0 * self.wheelbase
         if not min_track < self.track <= max_track:
@@ -339,6 +416,11 @@ class OmniParams:
     sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
+    #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_kp", "drive.steer_kv",
+                                         "drive.steer_torque_limit",
+                                         "drive.steer_rate_limit",
+                                         "drive.steer_angle_limit")
 
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("roller_armature", "roller_damping",

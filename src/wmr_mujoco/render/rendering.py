@@ -7,9 +7,10 @@ is set (EGL by default, see :mod:`wmr_mujoco`).
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import os
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -26,6 +27,13 @@ SIM_RGBA = (0.1, 0.8, 0.2, 1.0)
 MODEL_RGBA = (0.95, 0.2, 0.2, 1.0)
 #: Largest frame size accepted (MuJoCo's offscreen buffer is sized to match).
 MAX_SIZE = 4096
+#: Trail radius relative to :attr:`Filmer.trail_width`: the model's trail is drawn wider
+#: and the simulated one narrower and on top of it, so where the two coincide the model's
+#: shows as a red rim around the green (equal capsules z-fight into dashes).
+SIM_TRAIL_SCALE = 0.6
+#: Shadow map size (texels a side) when shadows are off: MuJoCo allocates the map anyway.
+NO_SHADOW_MAP = 16
+MODEL_TRAIL_SCALE = 1.2
 
 
 @dataclass(frozen=True)
@@ -63,7 +71,8 @@ def check_output_path(path: Path, suffixes: Sequence[str]) -> Path:
                          f"valid suffixes are {', '.join(suffixes)}")
     folder = path.parent if str(path.parent) else Path(".")
     if not folder.is_dir():
-        raise ValueError(f"output folder {str(folder)!r} does not exist")
+        raise ValueError(f"output folder {str(folder)!r} does not exist; create it first "
+                         "(wmr writes only into existing folders)")
     if not os.access(folder, os.W_OK):
         raise ValueError(f"output folder {str(folder)!r} is not writable")
     return path
@@ -121,7 +130,6 @@ class Filmer:
         model.vis.global_.offheight = max(model.vis.global_.offheight, height)
         self.model = model
         self.trail_width = 0.02 * robot_size(model)
-        self.renderer = mujoco.Renderer(model, height=height, width=width, max_geom=20000)
         if isinstance(camera, str):
             if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, camera) < 0:
                 names = [model.camera(i).name for i in range(model.ncam)]
@@ -132,17 +140,28 @@ class Filmer:
         else:
             self.camera = tracking_camera(model, camera)
             settings = camera
+        if not settings.shadows:
+            # The shadow map (shadowsize² texels: 64 MB at MuJoCo's default 4096, in main
+            # memory with Mesa) is allocated even when shadows are off.
+            model.vis.quality.shadowsize = min(model.vis.quality.shadowsize, NO_SHADOW_MAP)
+        self.renderer = mujoco.Renderer(model, height=height, width=width, max_geom=20000)
         self.renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = settings.shadows
         self.renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = settings.reflections
 
     def frame(self, data: mujoco.MjData,
-              trails: Sequence[tuple[np.ndarray, Sequence[float]]] = ()) -> np.ndarray:
-        """Render ``data`` with polylines ``(points N×3, rgba)`` drawn on top."""
+              trails: Sequence[tuple[np.ndarray, Sequence[float]]
+                               | tuple[np.ndarray, Sequence[float], float]] = ()
+              ) -> np.ndarray:
+        """Render ``data`` with polylines ``(points N×3, rgba[, radius scale])`` on top.
+
+        The image is MuJoCo's buffer, overwritten by the next frame: copy it to keep it.
+        """
         self.renderer.update_scene(data, camera=self.camera)
-        for points, rgba in trails:
+        for points, rgba, *scale in trails:
             if len(points) > 1:
-                add_polyline(self.renderer.scene, np.asarray(points), rgba, self.trail_width)
-        return self.renderer.render().copy()
+                add_polyline(self.renderer.scene, np.asarray(points), rgba,
+                             self.trail_width * (scale[0] if scale else 1.0))
+        return self.renderer.render()
 
     def close(self) -> None:
         """Free the GL context."""
@@ -160,6 +179,27 @@ def _ffmpeg() -> None:
     import mediapy
 
     mediapy.set_ffmpeg(imageio_ffmpeg.get_ffmpeg_exe())
+
+
+@contextlib.contextmanager
+def video_writer(path: Path, width: int, height: int, fps: float = 30.0
+                 ) -> Iterator[Callable[[np.ndarray], None]]:
+    """Stream frames into an MP4 or GIF through ffmpeg, atomically.
+
+    Yields a function that encodes one ``(height, width, 3)`` frame; no frame is kept,
+    so memory does not grow with the clip's length. The file appears at ``path`` only
+    when the block ends normally; on any exception or interrupt the temporary file is
+    removed.
+    """
+    import mediapy
+
+    path = check_output_path(Path(path), VIDEO_SUFFIXES)
+    check_size(width, height)
+    _ffmpeg()
+    codec = "gif" if path.suffix.lower() == ".gif" else "h264"
+    with atomic_path(path) as tmp, mediapy.VideoWriter(tmp, shape=(height, width), fps=fps,
+                                                       codec=codec) as writer:
+        yield writer.add_image
 
 
 def write_media(path: Path, frames: Sequence[np.ndarray] | np.ndarray, fps: float = 30.0

@@ -2,7 +2,7 @@
 
 Kinematic and dynamic scenarios are filmed through the runner; a measurement scenario
 through its own ``film`` (the runs it measures, step by step), with the physics trail
-and, where the scenario gives one, its analytic path.
+and, where the scenario gives one, its analytic path. Frames stream to the encoder.
 
 Call :func:`wmr_mujoco.render.gl_backend.select_backend` before MuJoCo is first imported (the
 ``wmr render`` command does) to get the EGL → OSMesa fallback.
@@ -11,17 +11,20 @@ Call :func:`wmr_mujoco.render.gl_backend.select_backend` before MuJoCo is first 
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
 from pathlib import Path
 
 import mujoco
 import numpy as np
 
+from wmr_mujoco.progress import bar
 from wmr_mujoco.render import rendering
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.sim.stepping import SimulationDivergedError
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.runner import run_scenario
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.signals import Held
 
 #: Trail height above the floor, m.
 TRAIL_Z = 0.003
@@ -51,28 +54,60 @@ def pick_scenario(robot: str, name: str | None = None) -> Scenario:
     return options[0]
 
 
-def render_scenario(scenario: Scenario, width: int = 640, height: int = 480, fps: int = 30,
-                    camera: str = "track", duration: float | None = None) -> np.ndarray:
-    """Simulate ``scenario`` and return its frames ``(n, height, width, 3)``.
+#: Longest clip, s: an hour of 30 frames/s, far past any scenario held at its end.
+MAX_DURATION = 3600.0
 
-    The simulated path of the base is drawn in green and the analytic model's in red.
+
+def clip_scenario(scenario: Scenario, duration: float | None = None, hold: bool = False
+                  ) -> Scenario:
+    """The scenario cut to ``duration``, or held at its last input up to ``duration``.
 
     Raises:
-        ValueError: bad size, fps, duration or camera.
+        ValueError: ``duration`` outside ``(0, scenario.duration]`` (``(0, MAX_DURATION]``
+            with ``hold``), named with the valid range.
+    """
+    if duration is None:
+        return scenario
+    high = MAX_DURATION if hold else scenario.duration
+    if not (isinstance(duration, (int, float)) and 0 < duration <= high):
+        extra = "" if hold else " (longer only with hold: the last input kept)"
+        raise ValueError(f"duration = {duration!r} s; valid range is (0, {high:g}] for "
+                         f"{scenario.key}{extra}")
+    if duration > scenario.duration:
+        inputs = tuple(Held(sig, scenario.duration) for sig in scenario.inputs)
+        return dataclasses.replace(scenario, inputs=inputs, duration=duration)
+    return dataclasses.replace(scenario, duration=duration)
+
+
+def _check_fps(fps: int) -> None:
+    if not isinstance(fps, int) or not 1 <= fps <= 120:
+        raise ValueError(f"fps = {fps!r}; valid range is integers [1, 120]")
+
+
+def film_scenario(scenario: Scenario, on_frame: Callable[[np.ndarray], None],
+                  width: int = 640, height: int = 480, fps: int = 30,
+                  camera: str = "track") -> int:
+    """Simulate ``scenario`` and hand each frame to ``on_frame``; return the frame count.
+
+    Frames are drawn every ``1/fps`` of simulated time, the simulated path of the base in
+    green and the analytic model's in red (a measurement scenario: the runs of its
+    ``film``), and handed over at once, never kept: memory does not grow with the clip's
+    length beyond the trails' points. A frame is valid only
+    during the call (the renderer reuses its buffer). A progress bar runs on a terminal.
+
+    Raises:
+        ValueError: bad size, fps or camera.
         SimulationDivergedError: the run diverged.
     """
     rendering.check_size(width, height)
-    if not isinstance(fps, int) or not 1 <= fps <= 120:
-        raise ValueError(f"fps = {fps!r}; valid range is integers [1, 120]")
-    if duration is not None:
-        if not 0 < duration <= scenario.duration:
-            raise ValueError(f"duration = {duration!r} s; valid range is (0, "
-                             f"{scenario.duration:g}] for {scenario.key}")
-        scenario = dataclasses.replace(scenario, duration=duration)
-    frames: list[np.ndarray] = []
+    _check_fps(fps)
+    if scenario.kind is ScenarioKind.MEASUREMENT:
+        return _film_measurement(scenario, on_frame, width, height, fps, camera)
     sim_trail: list[np.ndarray] = []
     model_trail: list[np.ndarray] = []
-    state: dict[str, object] = {}
+    state: dict[str, object] = {"count": 0}
+    progress_bar = bar(int(scenario.duration * fps) + 1, f"wmr render {scenario.key}",
+                       unit="frame")
 
     def observe(model: mujoco.MjModel, data: mujoco.MjData, x: np.ndarray,
                 adapter: Adapter) -> None:
@@ -87,51 +122,105 @@ def render_scenario(scenario: Scenario, width: int = 640, height: int = 480, fps
         sim_trail.append(np.array([site[0], site[1], TRAIL_Z]))
         if adapter.state_names[:2] == ("x", "y"):
             model_trail.append(np.array([x[0], x[1], TRAIL_Z]))
-        frames.append(state["filmer"].frame(  # type: ignore[union-attr]
-            data, [(np.asarray(sim_trail), rendering.SIM_RGBA),
-                   (np.asarray(model_trail), rendering.MODEL_RGBA)]))
+        filmer = state["filmer"]
+        on_frame(filmer.frame(  # type: ignore[union-attr]
+            data, _trails(sim_trail, np.asarray(model_trail),
+                          filmer.trail_width)))  # type: ignore[union-attr]
+        state["count"] = int(state["count"]) + 1  # type: ignore[call-overload]
+        progress_bar.update()
 
-    if scenario.kind is ScenarioKind.MEASUREMENT:
-        _film_measurement(scenario, width, height, fps, camera, frames)
-        return np.asarray(frames)
     try:
         result = run_scenario(scenario, observer=observe)
     finally:
+        progress_bar.close()
         if "filmer" in state:
             state["filmer"].close()  # type: ignore[union-attr]
     if result.error is not None:
         if result.error.startswith("ValueError: "):
             raise ValueError(result.error.removeprefix("ValueError: "))
         raise SimulationDivergedError(f"{scenario.key}: {result.error}")
+    return int(state["count"])  # type: ignore[call-overload]
+
+
+def render_scenario(scenario: Scenario, width: int = 640, height: int = 480, fps: int = 30,
+                    camera: str = "track", duration: float | None = None,
+                    hold: bool = False) -> np.ndarray:
+    """Simulate ``scenario`` and return its frames ``(n, height, width, 3)``, in memory.
+
+    For short clips and tests; :func:`render_to_file` streams instead.
+
+    Raises:
+        ValueError: bad size, fps, duration or camera.
+        SimulationDivergedError: the run diverged.
+    """
+    rendering.check_size(width, height)
+    _check_fps(fps)
+    frames: list[np.ndarray] = []
+    film_scenario(clip_scenario(scenario, duration, hold), lambda f: frames.append(f.copy()),
+                  width, height, fps, camera)
     return np.asarray(frames)
 
 
 def render_to_file(robot: str, out: Path, scenario: str | None = None, width: int = 640,
                    height: int = 480, fps: int = 30, camera: str = "track",
-                   duration: float | None = None) -> Path:
-    """Render a scenario of ``robot`` to ``out`` (.mp4 or .gif), atomically.
+                   duration: float | None = None, hold: bool = False) -> Path:
+    """Render a scenario of ``robot`` to ``out`` (.mp4 or .gif), streamed and atomic.
 
-    The output path is checked before anything is simulated; a failure leaves no file.
+    A ``.png`` gets the last frame alone (a still of the whole trail).
+
+    Every argument is checked before anything is simulated; frames go to the encoder as
+    they are drawn (memory flat in the clip's length); a failure or an interrupt leaves
+    no file. ``hold`` allows a ``duration`` past the scenario's end, keeping its last
+    input.
     """
-    out = rendering.check_output_path(Path(out), rendering.VIDEO_SUFFIXES)
+    out = rendering.check_output_path(Path(out), rendering.VIDEO_SUFFIXES
+                                      + rendering.IMAGE_SUFFIXES)
     rendering.check_size(width, height)
-    frames = render_scenario(pick_scenario(robot, scenario), width, height, fps, camera,
-                             duration)
-    return rendering.write_media(out, frames, fps=fps)
+    _check_fps(fps)
+    clip = clip_scenario(pick_scenario(robot, scenario), duration, hold)
+    if out.suffix.lower() in rendering.IMAGE_SUFFIXES:  # a still: the last frame
+        last: list[np.ndarray] = []
+
+        def keep_last(frame: np.ndarray) -> None:
+            last[:] = [frame.copy()]
+
+        film_scenario(clip, keep_last, width, height, fps, camera)
+        return rendering.write_media(out, last[-1])
+    with rendering.video_writer(out, width, height, fps) as write:
+        film_scenario(clip, write, width, height, fps, camera)
+    return out
 
 
-def _film_measurement(scenario: Scenario, width: int, height: int, fps: int, camera: str,
-                      frames: list[np.ndarray]) -> None:
-    """Append frames of a measurement scenario's ``film`` over ``[0, scenario.duration)``.
+def _trails(sim: list[np.ndarray], model: np.ndarray | None, lift: float
+            ) -> list[tuple[np.ndarray, np.ndarray, float]]:
+    """The model trail (wide, underneath) and the physics trail (narrow, lifted on top)."""
+    trails = []
+    if model is not None and len(model):
+        trails.append((model, rendering.MODEL_RGBA, rendering.MODEL_TRAIL_SCALE))
+    trails.append((np.asarray(sim) + np.array([0.0, 0.0, lift]), rendering.SIM_RGBA,
+                   rendering.SIM_TRAIL_SCALE))
+    return trails
+
+
+def _film_measurement(scenario: Scenario, on_frame: Callable[[np.ndarray], None],
+                      width: int, height: int, fps: int, camera: str) -> int:
+    """Film a measurement scenario's ``film`` over ``[0, scenario.duration)``.
 
     Each run (a new ``data``) starts a new physics trail; its analytic path, if given, is
-    drawn whole. The filmed time runs on across runs.
+    drawn whole. The filmed time runs on across runs. Returns the frame count.
+
+    Raises:
+        ValueError: the scenario has no film.
     """
-    assert scenario.film is not None  # pick_scenario checked
+    if scenario.film is None:
+        raise ValueError(f"{scenario.key} is a measurement without a film")
     filmer: rendering.Filmer | None = None
     data: mujoco.MjData | None = None
     trail: list[np.ndarray] = []
     offset = next_t = 0.0
+    count = 0
+    progress_bar = bar(int(scenario.duration * fps) + 1, f"wmr render {scenario.key}",
+                       unit="frame")
     try:
         for frame in scenario.film(scenario, None):
             if frame.data is not data:
@@ -148,12 +237,15 @@ def _film_measurement(scenario: Scenario, width: int, height: int, fps: int, cam
             next_t += 1.0 / fps
             site = frame.data.site_xpos[frame.model.site("base").id]
             trail.append(np.array([site[0], site[1], TRAIL_Z]))
-            trails = [(np.asarray(trail), rendering.SIM_RGBA)]
+            ref = None
             if frame.reference is not None:
-                ref = np.asarray(frame.reference)
-                trails.append((np.column_stack([ref, np.full(len(ref), TRAIL_Z)]),
-                               rendering.MODEL_RGBA))
-            frames.append(filmer.frame(frame.data, trails))
+                r = np.asarray(frame.reference)
+                ref = np.column_stack([r, np.full(len(r), TRAIL_Z)])
+            on_frame(filmer.frame(frame.data, _trails(trail, ref, filmer.trail_width)))
+            count += 1
+            progress_bar.update()
     finally:
+        progress_bar.close()
         if filmer is not None:
             filmer.close()
+    return count

@@ -37,14 +37,42 @@ def hinge_inertia(model: mujoco.MjModel, joint: str) -> float:
     mujoco.mj_kinematics(model, data)
     jid = jnt.id
     root = int(jnt.bodyid[0])
-    axis, anchor = data.xaxis[jid], data.xanchor[jid]
+    bodies = [b for b in range(model.nbody) if in_subtree(model, b, root)]
+    total = inertia_about_axis(model, data, bodies, data.xanchor[jid], data.xaxis[jid])
+    return float(total + model.dof_armature[model.jnt_dofadr[jid]])
+
+
+def inertia_about_axis(model: mujoco.MjModel, data: mujoco.MjData, bodies: list[int],
+                       point: np.ndarray, axis: np.ndarray) -> float:
+    """Inertia of ``bodies`` about the line through ``point`` along unit ``axis``.
+
+    ``J = Σ_b (âᵀ I_b â + m_b |r_b⊥|²)`` with the frames of ``data`` (after
+    ``mj_kinematics``): ``I_b`` about the body's centre of mass in the world frame and
+    ``r_b⊥`` its offset from the line (parallel-axis theorem).
+    """
     total = 0.0
-    for b in range(model.nbody):
-        if not in_subtree(model, b, root):
-            continue
+    for b in bodies:
         rot = data.ximat[b].reshape(3, 3)
         inertia = rot @ np.diag(model.body_inertia[b]) @ rot.T
-        r = data.xipos[b] - anchor
+        r = data.xipos[b] - point
         r_perp = r - axis * (r @ axis)
         total += axis @ inertia @ axis + model.body_mass[b] * (r_perp @ r_perp)
-    return float(total + model.dof_armature[model.jnt_dofadr[jid]])
+    return float(total)
+
+
+def inertia_tensor_about(model: mujoco.MjModel, data: mujoco.MjData, bodies: list[int],
+                         point: np.ndarray) -> np.ndarray:
+    """Composite 3×3 inertia of ``bodies`` about ``point``, world frame.
+
+    ``I = Σ_b (I_b + m_b (|r_b|² 1 − r_b r_bᵀ))`` with the frames of ``data`` (after
+    ``mj_kinematics``): ``I_b`` about the body's centre of mass in the world frame and
+    ``r_b`` its offset from ``point`` (parallel-axis theorem); ``âᵀ I â`` is
+    :func:`inertia_about_axis`.
+    """
+    total = np.zeros((3, 3))
+    for b in bodies:
+        rot = data.ximat[b].reshape(3, 3)
+        r = data.xipos[b] - point
+        total += (rot @ np.diag(model.body_inertia[b]) @ rot.T
+                  + model.body_mass[b] * ((r @ r) * np.eye(3) - np.outer(r, r)))
+    return total

@@ -21,12 +21,35 @@ from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.atomic import atomic_path, write_text_atomic
 from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Series, Trace
 from wmr_mujoco.validation.runner import ScenarioResult
+from wmr_mujoco.validation.scenarios import Scenario
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
 #: Default output folder of ``wmr validate``.
 REPORTS_DIR = Path("reports")
+
+
+def check_report_folder(folder: Path) -> Path:
+    """Check a report folder before any work: a folder, or one to create in an existing one.
+
+    The rule is the one of ``wmr render``'s output file: ``wmr`` writes into an existing
+    folder; here it creates the report folder itself, never its parents.
+
+    Raises:
+        ValueError: ``folder`` is a file, its parent does not exist, or is not writable.
+    """
+    folder = Path(folder)
+    if folder.exists() and not folder.is_dir():
+        raise ValueError(f"--out {str(folder)!r} is a file; give a folder for the report "
+                         "(created if its parent exists)")
+    parent = folder if folder.is_dir() else (folder.parent if str(folder.parent) else Path("."))
+    if not parent.is_dir():
+        raise ValueError(f"--out {str(folder)!r}: folder {str(parent)!r} does not exist; "
+                         "create it first (wmr creates only the report folder itself)")
+    if not os.access(parent, os.W_OK):
+        raise ValueError(f"--out {str(folder)!r}: folder {str(parent)!r} is not writable")
+    return folder
 
 
 def _fmt(value: float) -> str:
@@ -257,15 +280,15 @@ def _plot_job(i: int) -> Path | None:
     return plot_scenario(result, path)
 
 
-def plot_all(results: Sequence[ScenarioResult], folder: Path) -> list[Path | None]:
-    """:func:`plot_scenario` of every result into ``folder``, on every core.
+def plot_all(jobs: Sequence[tuple[ScenarioResult, Path]]) -> list[Path | None]:
+    """:func:`plot_scenario` of every ``(result, path)``, on every core.
 
     Drawing is pure Python (matplotlib holds the GIL), so the plots are shared among
     forked worker processes, which inherit the results instead of receiving copies;
     where ``fork`` is unavailable, or for a single core, they are drawn one by one.
     """
     global _PLOT_JOBS
-    jobs = [(r, Path(folder) / f"{slug(r.scenario.key)}.png") for r in results]
+    jobs = list(jobs)
     workers = min(len(jobs), os.cpu_count() or 1)
     if workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
         return [plot_scenario(r, p) for r, p in jobs]
@@ -282,49 +305,143 @@ def plot_all(results: Sequence[ScenarioResult], folder: Path) -> list[Path | Non
         _PLOT_JOBS = []
 
 
-def to_json(results: Sequence[ScenarioResult]) -> str:
-    """Every metric of every scenario as JSON."""
+def _record(r: ScenarioResult) -> dict[str, object]:
+    """One scenario's JSON record: verdict, error and every metric."""
     def clean(x: float) -> float | None:
         return x if math.isfinite(x) else None
 
-    doc = {"passed": all(r.passed for r in results), "scenarios": [
-        {"robot": r.scenario.robot, "scenario": r.scenario.name, "kind": r.scenario.kind.value,
-         "passed": r.passed, "error": r.error,
-         "metrics": [{"metric": m.metric, "value": clean(m.value), "unit": m.unit,
-                      "target": m.target, "basis": m.basis, "passed": m.passed,
-                      "open": m.open, "note": m.note}
-                     for m in r.rows]} for r in results]}
+    return {"robot": r.scenario.robot, "scenario": r.scenario.name,
+            "kind": r.scenario.kind.value, "passed": r.passed, "error": r.error,
+            "metrics": [{"metric": m.metric, "value": clean(m.value), "unit": m.unit,
+                         "target": m.target, "basis": m.basis, "passed": m.passed,
+                         "open": m.open, "note": m.note} for m in r.rows]}
+
+
+def _restore(record: dict) -> ScenarioResult | None:
+    """A result from a JSON record of an earlier run; None if its scenario is gone."""
+    from wmr_mujoco.robots import ROBOTS
+
+    spec = ROBOTS.get(str(record.get("robot")))
+    scenario = next((s for s in (spec.scenarios if spec else ())
+                     if s.name == record.get("scenario")), None)
+    if scenario is None or scenario.kind.value != record.get("kind"):
+        return None
+    rows = [Row(scenario.robot, scenario.name, m["metric"],
+                float("nan") if m["value"] is None else float(m["value"]), m["unit"],
+                m["target"], m["passed"], m["note"], m["basis"], bool(m.get("open")))
+            for m in record.get("metrics", [])]
+    return ScenarioResult(scenario, rows, Trace(), record.get("error"))
+
+
+def _order(results: Sequence[ScenarioResult]) -> list[ScenarioResult]:
+    """Registry order: robots as registered, each robot's scenarios as listed."""
+    from wmr_mujoco.robots import ROBOTS
+
+    robots = list(ROBOTS)
+
+    def key(item: tuple[int, ScenarioResult]) -> tuple[int, int, int]:
+        i, r = item
+        spec = ROBOTS.get(r.scenario.robot)
+        names = [s.name for s in spec.scenarios] if spec else []
+        return (robots.index(r.scenario.robot) if spec else len(robots),
+                names.index(r.scenario.name) if r.scenario.name in names else len(names), i)
+
+    return [r for _, r in sorted(enumerate(results), key=key)]
+
+
+def merge_results(new: Sequence[ScenarioResult], folder: Path = REPORTS_DIR
+                  ) -> list[ScenarioResult]:
+    """Merge this run's results into the report already in ``folder``.
+
+    A scenario of this run replaces its earlier result; earlier results of the other
+    registered scenarios are kept (so ``wmr validate omni3`` never clobbers the full
+    report); results of scenarios no longer registered are dropped. An unreadable
+    earlier report counts as none.
+    """
+    try:
+        old = json.loads((Path(folder) / "validation.json").read_text())["scenarios"]
+    except (OSError, ValueError, KeyError, TypeError):
+        old = []
+    ran = {r.scenario.key for r in new}
+    kept = [res for rec in old if isinstance(rec, dict)
+            and (res := _restore(rec)) is not None and res.scenario.key not in ran]
+    return _order([*new, *kept])
+
+
+def missing_scenarios(results: Sequence[ScenarioResult]) -> list[str]:
+    """Registered scenarios without a result (empty: the report is complete)."""
+    from wmr_mujoco.robots import ROBOTS
+
+    have = {r.scenario.key for r in results}
+    return [s.key for spec in ROBOTS.values() for s in spec.scenarios if s.key not in have]
+
+
+def to_json(results: Sequence[ScenarioResult]) -> str:
+    """Every metric of every scenario as JSON, with whether every scenario is there."""
+    missing = missing_scenarios(results)
+    doc = {"passed": all(r.passed for r in results), "complete": not missing,
+           "missing": missing, "scenarios": [_record(r) for r in results]}
     return json.dumps(doc, indent=2)
 
 
+def plot_path(folder: Path, scenario: Scenario) -> Path:
+    """Where a scenario's plot goes: ``validation/<robot>/<scenario slug>.png``."""
+    return Path(folder) / "validation" / scenario.robot / f"{slug(scenario.name)}.png"
+
+
+def _remove_stale_plots(folder: Path, robots: set[str], results: Sequence[ScenarioResult]
+                        ) -> None:
+    """Delete plots, in the folders of the robots this run covered, of no kept scenario."""
+    kept = {plot_path(folder, r.scenario) for r in results}
+    for robot in robots:
+        for png in (Path(folder) / "validation" / robot).glob("*.png"):
+            if png not in kept:
+                png.unlink(missing_ok=True)
+
+
 def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) -> Path:
-    """Write ``validation.md``, ``validation.json`` and one PNG per scenario.
+    """Merge this run into ``folder``'s report; write the Markdown, JSON and PNG plots.
+
+    ``validation.md``, ``validation.json`` and ``summary.md`` cover this run's scenarios
+    and the earlier results of the others (:func:`merge_results`); the JSON says whether
+    every registered scenario is there (``complete``), which ``make readme`` requires.
+    Each scenario of this run gets a fresh plot; plots of the covered robots' scenarios
+    that are no longer reported are removed, nobody else's.
 
     Returns:
         Path of the Markdown report.
     """
     folder = Path(folder)
-    plots = folder / "validation"
-    plots.mkdir(parents=True, exist_ok=True)
-    failed = [r for r in results if not r.passed]
+    merged = merge_results(results, folder)
+    fresh = {r.scenario.key for r in results}
+    failed = [r for r in merged if not r.passed]
+    missing = missing_scenarios(merged)
     lines = ["# Validation: MuJoCo contact physics against the analytic models", "",
-             "Generated by `wmr validate`; every figure below comes from that run.", "",
-             f"**{summary_line(results)}.**", ""]
+             "Generated by `wmr validate`; every figure below comes from a run of it "
+             f"({len(fresh)} scenarios from the latest run, the others from earlier runs).",
+             "", f"**{summary_line(merged)}.**", ""]
     if failed:
         lines += ["Failed: " + ", ".join(f"`{r.scenario.key}`" for r in failed), ""]
-    lines += ["## Summary", "", summary_table(results), ""]
-    if open_table(results):
+    if missing:
+        lines += ["Not run yet: " + ", ".join(f"`{k}`" for k in missing), ""]
+    lines += ["## Summary", "", summary_table(merged), ""]
+    if open_table(merged):
         lines += ["## Open targets", "", "Required, not yet met by any model: shown with "
-                  "their figures, counted, not judged.", "", open_table(results), ""]
+                  "their figures, counted, not judged.", "", open_table(merged), ""]
     lines += ["## How the metrics are judged",
               "", DEFINITIONS, "", "## Every metric", "",
-              markdown_table(results), "", "## Plots", ""]
-    for r, png in zip(results, plot_all(results, plots), strict=True):
-        if png is not None:
-            lines += [f"### {r.scenario.key}", "", f"![{r.scenario.key}](validation/{png.name})",
-                      ""]
-    write_text_atomic(folder / "validation.json", to_json(results))
-    write_text_atomic(folder / "summary.md", summary_table(results) + "\n")
-    write_text_atomic(folder / "open.md", (open_table(results)
-                                           or "No open targets.") + "\n")
+              markdown_table(merged), "", "## Plots", ""]
+    jobs = [(r, plot_path(folder, r.scenario)) for r in merged if r.scenario.key in fresh]
+    for _, png in jobs:
+        png.parent.mkdir(parents=True, exist_ok=True)
+    drawn = dict(zip((r.scenario.key for r, _ in jobs), plot_all(jobs), strict=True))
+    for r in merged:
+        png = drawn.get(r.scenario.key, plot_path(folder, r.scenario))
+        if png is not None and png.is_file():
+            rel = png.relative_to(folder).as_posix()
+            lines += [f"### {r.scenario.key}", "", f"![{r.scenario.key}]({rel})", ""]
+    _remove_stale_plots(folder, {r.scenario.robot for r in results}, merged)
+    write_text_atomic(folder / "validation.json", to_json(merged))
+    write_text_atomic(folder / "summary.md", summary_table(merged) + "\n")
+    write_text_atomic(folder / "open.md", (open_table(merged) or "No open targets.") + "\n")
     return write_text_atomic(folder / "validation.md", "\n".join(lines) + "\n")

@@ -35,6 +35,7 @@ from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.metrics import (
     RECORD_EVERY,
+    Metric,
     Probe,
     Row,
     Sample,
@@ -172,6 +173,12 @@ def prepare(s: Scenario, params: RobotParams | None = None) -> Prepared:
 
 
 def measure(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Row]:
+    """Judged rows of a simulated scenario (:func:`measure_metrics`)."""
+    s = prep.scenario
+    return [Row.of(s.robot, s.name, m) for m in measure_metrics(prep, states, trace)]
+
+
+def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Metric]:
     """Metrics of a simulated scenario from its states (see :func:`simulate`).
 
     Every :data:`RECORD_EVERY`-th step is redone from its stored start, so that contacts
@@ -217,7 +224,7 @@ def measure(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Row]:
         metrics += slip_metrics(trace, adapter.lateral_wheels, spec.targets)
     for probe in probes:
         metrics += probe.metrics()
-    return [Row.of(s.robot, s.name, m) for m in metrics]
+    return metrics
 
 
 def batch_key(s: Scenario) -> tuple[str, str, float]:

@@ -52,7 +52,23 @@ class Sine:
                                                        + self.phase)
 
 
-Signal = Piecewise | Sine
+@dataclass(frozen=True)
+class Held:
+    """``signal`` up to ``until`` seconds, then its value at ``until`` held for ever."""
+
+    signal: Piecewise | Sine
+    until: float
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.until) and self.until >= 0):
+            raise ValueError(f"until = {self.until!r} s; must be a finite number >= 0")
+
+    def __call__(self, t: float) -> float:
+        """Value at time ``t``."""
+        return self.signal(min(t, self.until))
+
+
+Signal = Piecewise | Sine | Held
 
 
 def const(value: float, ramp: float = 0.0) -> Piecewise:

@@ -44,8 +44,8 @@ def build(params: BicycleParams) -> mjcf.RootElement:
                                              (wb, FRAME_WIDTH, FRAME_HEIGHT)))
     common.add_box_body_geoms(frame, (wb, 0.04, 0.04), pos=(wb / 2.0, 0, 0.45))
     common.add_box_body_geoms(frame, (0.04, 0.04, 0.45), pos=(0.25 * wb, 0, 0.25))
-    frame.add("geom", dclass="visual", type="capsule", fromto=(0, 0, 0, 0.25 * wb, 0, 0.45),
-              size=(0.015,), rgba=common.BODY_RGBA)
+    # Seat stays and chain stays: the rear wheel held on both sides, in its frame.
+    common.add_fork(frame, p.rear_wheel, tops=((0.25 * wb, 0.45), (0.25 * wb, 0.03)))
     site = frame.add("site", name="base", pos=(0, 0, 0))
     common.add_wheel(frame, "rear_wheel", p.rear_wheel, pos=(0, 0, 0),
                      armature=p.drive.wheel_armature)
@@ -54,7 +54,9 @@ def build(params: BicycleParams) -> mjcf.RootElement:
                      range=(-p.drive.steer_angle_limit, p.drive.steer_angle_limit))
     fork.add("inertial", pos=(0, 0, FORK_HEIGHT / 2.0), mass=p.fork_mass,
              diaginertia=common.box_inertia(p.fork_mass, (0.05, 0.1, FORK_HEIGHT)))
-    fork.add("geom", dclass="visual", type="capsule", fromto=(0, 0, 0, 0, 0, 0.5),
+    # Blades either side of the front wheel up to the crown, then the steerer tube.
+    common.add_fork(fork, p.front_wheel, tops=((0.0, rf + 0.05),))
+    fork.add("geom", dclass="visual", type="capsule", fromto=(0, 0, rf + 0.05, 0, 0, 0.5),
              size=(0.015,), rgba=common.BODY_RGBA)
     fork.add("geom", dclass="visual", type="capsule", fromto=(0, -0.25, 0.5, 0, 0.25, 0.5),
              size=(0.012,), rgba=common.BODY_RGBA)

@@ -58,13 +58,55 @@ def new_root(model: str, sim: SimParams) -> mjcf.RootElement:
     visual.geom.group = 2
     visual.geom.density = 0
     collision = main.add("default", dclass="collision")
-    collision.geom.group = 3
-    collision.geom.condim = 3
-    collision.geom.priority = 1
-    collision.geom.friction = (sim.friction, 0.005, 0.0001)
-    collision.geom.solref = (sim.contact_timeconst, 1.0)
-    collision.geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
+    _set_contact(collision.geom, sim)
     return root
+
+
+def _set_contact(geom: mjcf.Element, sim: SimParams) -> None:
+    """Collision group 3, ``condim`` 3, the floor's friction and ``sim``'s softness.
+
+    Contact softness: ``solref`` (time constant, critical damping) and ``solimp``.
+    """
+    geom.group = 3
+    geom.condim = 3
+    geom.priority = 1
+    geom.friction = (sim.friction, 0.005, 0.0001)
+    geom.solref = (sim.contact_timeconst, 1.0)
+    geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
+
+
+def add_roller_default(root: mjcf.RootElement, sim: SimParams, damping: float,
+                       armature: float) -> mjcf.Element:
+    """The ``roller`` default class of passive rollers on free hinges (omni and mecanum).
+
+    Hinges about the local z axis with the given damping and armature; collision geoms in
+    group 3 with ``condim`` 3, the floor friction and contact softness of ``sim``, that
+    touch the floor only (``contype`` 0, ``conaffinity`` 1: no two robot geoms collide).
+    """
+    roller = root.default.add("default", dclass="roller")
+    roller.joint.type = "hinge"
+    roller.joint.axis = (0, 0, 1)
+    roller.joint.damping = damping
+    roller.joint.armature = armature
+    _set_contact(roller.geom, sim)
+    roller.geom.contype = 0
+    roller.geom.conaffinity = 1
+    return roller
+
+
+def add_hub(wheel: mjcf.Element, mass: float, radius: float, width: float) -> None:
+    """A roller wheel's hub: a uniform cylinder's inertia and visual geoms.
+
+    The inertia is about the axle (local y); the geoms are a cylinder and a mark that
+    shows the wheel turning. ``I_y = m r² / 2``, ``I_x = I_z = m (r²/4 + w²/12)``.
+    """
+    diametral = mass * (radius**2 / 4 + width**2 / 12)
+    wheel.add("inertial", pos=(0, 0, 0), mass=mass,
+              diaginertia=(diametral, mass * radius**2 / 2, diametral))
+    wheel.add("geom", dclass="visual", type="cylinder", size=(radius, width / 2.0),
+              zaxis=(0, 1, 0), rgba=WHEEL_RGBA)
+    wheel.add("geom", dclass="visual", type="box", size=(0.9 * radius, width / 2 + 0.001,
+                                                           0.1 * radius), rgba=MARK_RGBA)
 
 
 def box_inertia(mass: float, size: Sequence[float]) -> tuple[float, float, float]:
@@ -82,6 +124,33 @@ def add_box_body_geoms(body: mjcf.Element, size: Sequence[float],
     """Add a visual-only box of full edge lengths ``size`` to ``body``."""
     body.add("geom", dclass="visual", type="box", size=[s / 2.0 for s in size],
              pos=list(pos), rgba=BODY_RGBA)
+
+
+#: Radius of the visual fork blades and axles, as a fraction of the wheel radius (with a
+#: floor of 6 mm), and the gap between a wheel face and a blade, m.
+FORK_RADIUS_RATIO = 0.06
+FORK_MIN_RADIUS = 0.006
+FORK_GAP = 0.008
+
+
+def add_fork(body: mjcf.Element, wheel: WheelParams,
+             tops: Sequence[tuple[float, float]], rgba: Sequence[float] = BODY_RGBA) -> None:
+    """Visual fork holding a wheel whose axle is ``body``'s y axis through its origin.
+
+    An axle across the wheel and both blades, and from each blade end a pair of blades
+    (one each side of the wheel, clear of its faces) up to each ``(x, z)`` in ``tops``,
+    joined there by a crown. Visual class only: no mass, no contact.
+    """
+    radius = max(FORK_RADIUS_RATIO * wheel.radius, FORK_MIN_RADIUS)
+    y = wheel.width / 2.0 + FORK_GAP + radius
+    body.add("geom", dclass="visual", type="capsule", size=(radius,),
+             fromto=(0, -y - radius, 0, 0, y + radius, 0), rgba=rgba)
+    for x, z in tops:
+        for side in (-1.0, 1.0):
+            body.add("geom", dclass="visual", type="capsule", size=(radius,),
+                     fromto=(0, side * y, 0, x, side * y, z), rgba=rgba)
+        body.add("geom", dclass="visual", type="capsule", size=(radius,),
+                 fromto=(x, -y, z, x, y, z), rgba=rgba)
 
 
 def add_wheel(parent: mjcf.Element, name: str, wheel: WheelParams,

@@ -38,8 +38,8 @@ def build(params: DiscParams) -> mjcf.RootElement:
     size = (0.06, 0.04, 0.04)
     carriage.add("inertial", pos=(0, 0, 0), mass=p.mount_mass,
                  diaginertia=common.box_inertia(p.mount_mass, size))
-    common.add_box_body_geoms(carriage, (0.02, p.wheel.width + 0.03, 0.02),
-                              pos=(0, 0, 0))
+    # A fork from the axle over the disc to the steering head on top.
+    common.add_fork(carriage, p.wheel, tops=((0.0, 1.05 * r),))
     carriage.add("geom", dclass="visual", type="box",
                  size=(0.01, 0.005, 0.12 * r), pos=(0, 0, 1.12 * r),
                  rgba=common.BODY_RGBA)

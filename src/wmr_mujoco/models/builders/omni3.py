@@ -18,6 +18,45 @@ BARREL_RINGS = 17
 BARREL_SEGMENTS = 48
 ROLLER_RGBA = (0.55, 0.55, 0.58, 1.0)
 ROLLER_MARK_RGBA = (0.9, 0.3, 0.1, 1.0)
+MOTOR_RGBA = (0.25, 0.25, 0.28, 1.0)
+METAL_RGBA = (0.72, 0.72, 0.75, 1.0)
+#: Visual drive of each wheel (fractions of the wheel radius r): gear-motor radius and
+#: length, axle radius; mounting plate thickness, m.
+MOTOR_RADIUS = 0.35
+MOTOR_LENGTH = 0.8
+AXLE_RADIUS = 0.12
+PLATE_THICKNESS = 0.004
+
+
+def _add_drive_visuals(platform: mjcf.Element, params: OmniParams, alpha: float) -> None:
+    """Add what holds the wheel at angle α: a plate, its gear motor and the axle.
+
+    The plate stands at the platform's rim, the motor passes through it, and the axle
+    runs from the motor through the hub. Visual only (no mass, no contact) and fixed to
+    the platform, so the hub turns about the axle.
+    """
+    p = params
+    r, L = p.wheel_radius, p.wheel_distance
+    u = np.array([math.cos(alpha), math.sin(alpha), 0.0])  # radial: the wheel's axle
+    inner = L - (p.row_offset + p.roller_half_width) - 0.002  # the wheel's inner face
+    motor_out = inner - 0.002
+    motor_in = motor_out - MOTOR_LENGTH * r
+
+    def segment(a: float, b: float) -> tuple[float, ...]:
+        return (*(a * u), *(b * u))
+
+    platform.add("geom", dclass="visual", type="cylinder", size=(MOTOR_RADIUS * r,),
+                 fromto=segment(motor_in, motor_out), rgba=MOTOR_RGBA)
+    platform.add("geom", dclass="visual", type="cylinder", size=(AXLE_RADIUS * r,),
+                 fromto=segment(motor_out, L + p.row_offset + p.roller_half_width + 0.003),
+                 rgba=METAL_RGBA)
+    half = (PLATE_THICKNESS / 2.0, 1.1 * MOTOR_RADIUS * r,
+            0.5 * (PLATFORM_THICKNESS + 1.1 * MOTOR_RADIUS * r))
+    plate_r = min(p.platform_radius + half[0], motor_out - half[0])
+    centre = plate_r * u + np.array([0.0, 0.0, half[2] - PLATFORM_THICKNESS / 2.0])
+    platform.add("geom", dclass="visual", type="box", size=half, pos=tuple(centre),
+                 quat=(math.cos(alpha / 2.0), 0.0, 0.0, math.sin(alpha / 2.0)),
+                 rgba=METAL_RGBA)
 
 
 def roller_profile(params: OmniParams) -> tuple[float, float]:
@@ -77,14 +116,7 @@ def _add_wheel(platform: mjcf.Element, root: mjcf.RootElement, params: OmniParam
     joint = wheel.add("joint", name=name, type="hinge", axis=(0, 1, 0),
                       armature=p.drive.wheel_armature)
     hub_r, hub_w = 0.55 * r, HUB_WIDTH_FACTOR * 2.0 * (p.row_offset + p.roller_half_width)
-    wheel.add("inertial", pos=(0, 0, 0), mass=p.hub_mass,
-              diaginertia=(p.hub_mass * (hub_r**2 / 4 + hub_w**2 / 12),
-                           p.hub_mass * hub_r**2 / 2,
-                           p.hub_mass * (hub_r**2 / 4 + hub_w**2 / 12)))
-    wheel.add("geom", dclass="visual", type="cylinder", size=(hub_r, hub_w / 2.0),
-              zaxis=(0, 1, 0), rgba=common.WHEEL_RGBA)
-    wheel.add("geom", dclass="visual", type="box", size=(0.9 * hub_r, hub_w / 2 + 0.001,
-                                                           0.1 * hub_r), rgba=common.MARK_RGBA)
+    common.add_hub(wheel, p.hub_mass, hub_r, hub_w)
     d, s_max = roller_profile(p)
     n = p.rollers_per_row
     b = p.roller_half_width
@@ -126,20 +158,7 @@ def build(params: OmniParams) -> mjcf.RootElement:
     p = params
     r = p.wheel_radius
     root = common.new_root("omni3", p.sim)
-    roller = root.default.add("default", dclass="roller")
-    roller.joint.type = "hinge"
-    roller.joint.axis = (0, 0, 1)
-    roller.joint.damping = p.roller_damping
-    roller.joint.armature = p.roller_armature
-    roller.geom.group = 3
-    roller.geom.condim = 3
-    roller.geom.priority = 1
-    roller.geom.friction = (p.sim.friction, 0.005, 0.0001)
-    roller.geom.solref = (p.sim.contact_timeconst, 1.0)
-    roller.geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
-    # Rollers touch the floor only: contype 0 so that no two robot geoms collide.
-    roller.geom.contype = 0
-    roller.geom.conaffinity = 1
+    common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
     if p.roller_shape == "barrel":
         root.asset.add("mesh", name="barrel", vertex=barrel_vertices(p).ravel())
     platform = root.worldbody.add("body", name="platform", pos=(0, 0, r))
@@ -154,6 +173,7 @@ def build(params: OmniParams) -> mjcf.RootElement:
                  pos=(0.4 * R, 0, PLATFORM_THICKNESS / 2), rgba=common.MARK_RGBA)
     site = platform.add("site", name="base", pos=(0, 0, 0))
     for i in range(3):
+        _add_drive_visuals(platform, p, 2.0 * math.pi * i / 3.0)
         _add_wheel(platform, root, p, i)
     common.add_joint_sensors(root, [f"wheel{i + 1}" for i in range(3)])
     common.add_frame_sensors(root, site)

@@ -53,7 +53,10 @@ def build(params: TricycleParams) -> mjcf.RootElement:
                      range=(-p.drive.steer_angle_limit, p.drive.steer_angle_limit))
     fork.add("inertial", pos=(0, 0, FORK_HEIGHT / 2.0), mass=p.fork_mass,
              diaginertia=common.box_inertia(p.fork_mass, (0.04, 0.06, FORK_HEIGHT)))
-    fork.add("geom", dclass="visual", type="capsule", fromto=(0, 0, 0, 0, 0, FORK_HEIGHT),
+    # Blades either side of the front wheel up to the crown, then the steerer tube.
+    crown = rf + 0.03
+    common.add_fork(fork, p.front_wheel, tops=((0.0, crown),))
+    fork.add("geom", dclass="visual", type="capsule", fromto=(0, 0, crown, 0, 0, FORK_HEIGHT),
              size=(0.012,), rgba=common.BODY_RGBA)
     common.add_wheel(fork, "front_wheel", p.front_wheel, pos=(0, 0, 0))
     if p.rear_drive == "differential":

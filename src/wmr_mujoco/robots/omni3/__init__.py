@@ -25,7 +25,7 @@ from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.omni3 import coasting, dynamics, traction
-from wmr_mujoco.robots.omni3.model import WHEELS
+from wmr_mujoco.robots.omni3.runs import WHEELS
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose

@@ -26,10 +26,15 @@ import numpy as np
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams, RobotParams
-from wmr_mujoco.robots.omni3.model import lagrange
 from wmr_mujoco.robots.omni3.runs import Run, RunSpec, cached_runs, hybrid
 from wmr_mujoco.validation.metrics import Metric, Series, Target, rms
-from wmr_mujoco.validation.omni_wheels import DIRECTIONS_DEG, SPEED, YAW_RATE, translation
+from wmr_mujoco.validation.omni_wheels import (
+    DIRECTIONS_DEG,
+    SPEED,
+    YAW_RATE,
+    lagrange_of,
+    translation,
+)
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
 SOURCE = "issue 16"
@@ -192,7 +197,7 @@ def lagrange_twists(params: RobotParams | None, torques: np.ndarray, twist0: np.
     ``(P + I_w HᵀH) ν̇ = Hᵀτ − c(ν)``, ``c = (−M r v, M r u, 0)``
     (:class:`~wmr_mujoco.analytic.omni_dynamics.OmniDynamics`).
     """
-    dyn = lagrange(hybrid(params))  # type: ignore[arg-type]
+    dyn = lagrange_of(hybrid(params))  # type: ignore[arg-type]
     out = np.zeros((n + 1, 3))
     out[0] = twist0
     nu = np.asarray(twist0, float)
@@ -215,7 +220,7 @@ def traction_metric(params: RobotParams | None, torques: np.ndarray, twists: np.
     balance with the wheels' angular momentum (:meth:`OmniHybrid.normal_loads`).
     """
     hy = hybrid(params)  # type: ignore[arg-type]
-    dyn = lagrange(hy)
+    dyn = lagrange_of(hy)
     worst = 0.0
     for nu in twists:
         force = dyn.traction_forces(nu, torques)

@@ -23,10 +23,14 @@ from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
 from wmr_mujoco.models.params import OmniParams
-from wmr_mujoco.robots.omni3.model import WHEELS, drive_from_model, hybrid_from_model
 from wmr_mujoco.sim.engine import STATE_SPEC, simulate, simulate_batch
 from wmr_mujoco.sim.stepping import check_healthy
+from wmr_mujoco.validation.omni_wheels import drive_from_model, hybrid_from_model, roller_rates
 
+#: omni3's wheel hinges (and their actuators), in layout order.
+WHEELS = ("wheel1", "wheel2", "wheel3")
+#: The body the platform's yaw inertia is taken about.
+CENTRE_BODY = "platform"
 #: Seconds at rest before a run (as the runner's scenarios).
 SETTLE = 0.5
 #: RK4 substeps of the hybrid model per simulation step (2 ms at the 4 ms step). The rate
@@ -144,17 +148,6 @@ def relative(pose: np.ndarray, start: np.ndarray) -> np.ndarray:
     return np.column_stack([c * d[:, 0] + s * d[:, 1], -s * d[:, 0] + c * d[:, 1], heading])
 
 
-def _roller_rates(model: mujoco.MjModel, state: np.ndarray) -> np.ndarray:
-    """(3, n) spins of every roller of every wheel, from a full-physics state."""
-    qvel = state[1 + model.nq:1 + model.nq + model.nv]
-    out = []
-    for wh in WHEELS:
-        wb = model.joint(wh).bodyid[0]
-        kids = [b for b in range(model.nbody) if model.body_parentid[b] == wb]
-        out.append([qvel[model.jnt_dofadr[model.body_jntadr[b]]] for b in kids])
-    return np.asarray(out)
-
-
 def _ramp(twist: Sequence[float], hy: oh.OmniHybrid, n: int, dt: float) -> np.ndarray:
     """Wheel rates ``H ν · min(1, t / 0.5 s)`` over n steps."""
     H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
@@ -174,7 +167,7 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None
     if len(set(names)) != len(names):
         raise ValueError(f"run names must be unique: {names}")
     models = {m: settled(m, params) for m in ActuationMode}
-    hy = hybrid_from_model(models[ActuationMode.TORQUE][0])
+    hy = _read(models[ActuationMode.TORQUE][0], params)
     dt = models[ActuationMode.TORQUE][0].opt.timestep
     starts: dict[str, np.ndarray] = {}
     states: dict[str, np.ndarray] = {}
@@ -218,12 +211,13 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None
     inputs = np.zeros((len(specs), nmax, 3))
     for b, s in enumerate(specs):
         inputs[b] = np.asarray(s.command, float)
-    drives = [drive_from_model(models[s.mode][0], s.mode) for s in specs]
+    drives = [drive_from_model(models[s.mode][0], WHEELS[0], s.mode) for s in specs]
     runs = oh.simulate_batch(
         hy, drives, inputs, dt, np.zeros((len(specs), 3)),
         np.array([phys[s.name][1][0] for s in specs]),
         np.array([phys[s.name][2][0] for s in specs]),
-        np.array([_roller_rates(model, starts[s.name]) for s in specs]), substeps=SUBSTEPS)
+        np.array([roller_rates(model, starts[s.name][1 + model.nq:], WHEELS)
+                  for s in specs]), substeps=SUBSTEPS)
     out = {}
     for s, run in zip(specs, runs, strict=True):
         pose, twist, th, rates = phys[s.name]
@@ -250,4 +244,11 @@ def hybrid(params: OmniParams | None = None) -> oh.OmniHybrid:
 def _hybrid(params: OmniParams | None) -> oh.OmniHybrid:
     from wmr_mujoco.models.loading import load  # the registry imports this module
 
-    return hybrid_from_model(load("omni3", params))
+    return _read(load("omni3", params), params)
+
+
+def _read(model: mujoco.MjModel, params: OmniParams | None) -> oh.OmniHybrid:
+    """:func:`~wmr_mujoco.validation.omni_wheels.hybrid_from_model` of omni3."""
+    p = params or OmniParams()
+    return hybrid_from_model(model, ok.symmetric_layout(p.wheel_radius, p.wheel_distance),
+                             CENTRE_BODY, WHEELS)

@@ -32,8 +32,7 @@ from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams, RobotParams
-from wmr_mujoco.robots.omni3.model import WHEELS
-from wmr_mujoco.robots.omni3.runs import base_states, hybrid, settled
+from wmr_mujoco.robots.omni3.runs import WHEELS, base_states, hybrid, settled
 from wmr_mujoco.sim.engine import simulate
 from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario

@@ -1,0 +1,212 @@
+"""The mecanum roller design study: ``python -m wmr_mujoco.bench.mecanum_study``.
+
+Roller colliders × roller counts, each measured in one run on this machine through the
+validation runner (:func:`wmr_mujoco.bench.trials.run_trial`, judged by ``mecanum4``'s
+registry entry): the rolling-radius ripple on the collision geometry
+(:func:`wmr_mujoco.robots.mecanum4.ripple.ripple`); open-loop tracking of the robot's
+kinematic scenarios (8 translations, rotation, translation+rotation; 0.5 s ramps and
+steps), shortened to :data:`STUDY_DURATION` so that the study stays a few minutes, worst
+over every run, against the roller-pitch-averaged kinematics and the ideal Lynch & Park
+model; and the real-time factor of the step loop on one thread. ``omni3`` (default model)
+is timed in the same process for the ratio; the default model's runs at the validation's
+turning length (10 s) are tabled too. The tables go between markers in
+``models/mecanum4/README.md`` (``make study``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from wmr_mujoco.analytic import pitch_averaged as pa
+from wmr_mujoco.bench.trials import TrialRun, run_trial
+from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.models.paths import MODELS_DIR
+from wmr_mujoco.robots import mecanum4, omni3
+from wmr_mujoco.robots.mecanum4 import kinematics, ripple
+from wmr_mujoco.validation.scenarios import Scenario
+
+README = MODELS_DIR / mecanum4.NAME / "README.md"
+COUNTS = (8, 12, 16, 20, 24)
+#: Seconds per study run (2 shared cores; the validation's turning runs last 10 s).
+STUDY_DURATION = 3.0
+#: The manoeuvre timed against omni3 (both robots have one by this name).
+TIMED = "translate+rotate"
+#: Default-model runs at the validation's turning length, tabled by :func:`long_runs_table`.
+LONG_RUNS = ("translate 90° (ramp)", "translate 45° (step)", "rotate (ramp)", "rotate (step)")
+LONG_DURATION = 10.0
+POSITION = ("worst position error", "% of path")
+HEADING = ("worst heading error", "deg")
+
+
+@dataclass(frozen=True)
+class Summary:
+    """One model's figures.
+
+    ``tracking[kind]``, kind ``"ramp"`` or ``"step"``: worst over the runs of
+    ``(position % of path, heading °)`` against the pitch-averaged model and then against
+    the ideal one.
+    """
+
+    label: str
+    ripple_pct: float
+    sideways_shortfall_pct: float
+    tracking: dict[str, tuple[float, float, float, float]]
+    real_time_factor: float
+
+
+def study_scenarios(duration: float = STUDY_DURATION) -> list[Scenario]:
+    """``mecanum4``'s kinematic scenarios, each lasting ``duration`` seconds."""
+    return [dataclasses.replace(s, duration=duration) for s in mecanum4.kinematic_runs()]
+
+
+def sideways_shortfall_pct(params: MecanumParams) -> float:
+    """Derived shortfall of a sideways run, ``100 (1 − 1/⟨sec φ⟩)`` % (φ_m = π/n)."""
+    k = pa.mean_secant(pa.roller_half_pitch(params.rollers_per_wheel))
+    return 100.0 * (1.0 - 1.0 / k)
+
+
+def _worst(runs: Sequence[TrialRun], metric: tuple[str, str]) -> float:
+    values = [abs(r.value(*metric)) for r in runs]
+    values = [v for v in values if np.isfinite(v)]
+    return max(values) if values else float("nan")
+
+
+def _ideal(metric: tuple[str, str]) -> tuple[str, str]:
+    return (f"{metric[0]}, ideal model", metric[1])
+
+
+def measure(params: MecanumParams, scenarios: Sequence[Scenario], label: str) -> Summary:
+    """Ripple, tracking and real-time factor of the model built from ``params``.
+
+    Raises:
+        SimulationDivergedError: a run diverged.
+    """
+    rip = ripple.ripple(scenarios[0], params).metrics[0].value
+    runs = {"ramp": [], "step": []}
+    rtf = []
+    for s in scenarios:
+        run = run_trial(s, params)
+        if run.result.error:
+            raise RuntimeError(f"{label}, {s.name}: {run.result.error}")
+        runs["step" if kinematics.is_step(s) else "ramp"].append(run)
+        rtf.append(run.real_time_factor)
+    tracking = {kind: (_worst(r, POSITION), _worst(r, HEADING), _worst(r, _ideal(POSITION)),
+                       _worst(r, _ideal(HEADING))) for kind, r in runs.items() if r}
+    return Summary(label, rip, sideways_shortfall_pct(params), tracking,
+                   float(np.median(rtf)))
+
+
+def study_configs() -> list[tuple[str, MecanumParams]]:
+    """Roller shapes × roller counts, everything else at the defaults."""
+    return [(f"{shape}, {n}", dataclasses.replace(MecanumParams(), roller_shape=shape,
+                                                   rollers_per_wheel=n))
+            for n in COUNTS for shape in MecanumParams.ROLLER_SHAPES]
+
+
+def _fmt(x: float, digits: int = 2) -> str:
+    return "n/a" if not np.isfinite(x) else f"{x:.{digits}f}"
+
+
+def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
+    """Markdown table: ramp and step tracking, pitch-averaged model / ideal model."""
+    lines = ["| rollers | ripple % | derived sideways shortfall % | ramps: worst position "
+             "% of path, averaged / ideal | ramps: worst heading °, averaged / ideal | "
+             "steps: worst position % of path, averaged / ideal | steps: worst heading °, "
+             "averaged / ideal | real-time factor |", "|---|---|---|---|---|---|---|---|"]
+    for s in rows:
+        label = f"**{s.label} (default)**" if s.label == default_label else s.label
+        cells = []
+        for kind in ("ramp", "step"):
+            pos, head, pos_i, head_i = s.tracking.get(kind, (np.nan,) * 4)
+            cells += [f"{_fmt(pos, 3)} / {_fmt(pos_i, 3)}", f"{_fmt(head)} / {_fmt(head_i)}"]
+        lines.append(f"| {label} | {_fmt(s.ripple_pct, 3)} | "
+                     f"{_fmt(s.sideways_shortfall_pct)} | " + " | ".join(cells)
+                     + f" | {_fmt(s.real_time_factor, 0)}× |")
+    return "\n".join(lines)
+
+
+def timing_table(params: MecanumParams, rounds: int = 3,
+                 duration: float = STUDY_DURATION) -> str:
+    """Real-time factors of mecanum4 and omni3, interleaved, best of ``rounds`` each.
+
+    Both on their translate+rotate scenario (0.3 m/s ahead at 0.5 rad/s), stepped in
+    Python by the same runner. The machine is shared: the best of a few interleaved
+    rounds is the figure least disturbed by other load.
+    """
+    ours_s = dataclasses.replace(mecanum4.SPEC.scenario(f"{TIMED} (ramp)"), duration=duration)
+    omni_s = dataclasses.replace(omni3.SPEC.scenario(TIMED), duration=duration)
+    ours, omni = [], []
+    for _ in range(rounds):
+        ours.append(run_trial(ours_s, params).real_time_factor)
+        omni.append(run_trial(omni_s).real_time_factor)
+    label = f"{params.roller_shape}, {params.rollers_per_wheel}"
+    return "\n".join([
+        f"| model (best of {rounds} interleaved runs, {TIMED}, {duration:g} s) | "
+        "real-time factor (one thread) |", "|---|---|",
+        f"| mecanum4 (default, {label}) | {max(ours):.0f}× |",
+        f"| omni3 (default) | {max(omni):.0f}× |",
+        f"| ratio mecanum4 / omni3 | {max(ours) / max(omni):.2f} |"])
+
+
+def long_runs_table(params: MecanumParams, duration: float = LONG_DURATION) -> str:
+    """Worst position and heading errors of :data:`LONG_RUNS`, both models, judged rows."""
+    lines = ["| run (10 s) | metric | pitch-averaged model | target | ideal model |",
+             "|---|---|---|---|---|"]
+    for name in LONG_RUNS:
+        s = dataclasses.replace(next(k for k in mecanum4.kinematic_runs() if k.name == name),
+                                duration=duration)
+        rows = run_trial(s, params).result.rows
+        for metric, unit in (POSITION, HEADING):
+            judged = next((r for r in rows if (r.metric, r.unit) == (metric, unit)), None)
+            ideal = next((r for r in rows if (r.metric, r.unit) == _ideal((metric, unit))),
+                         None)
+            if judged is None:
+                continue
+            target = "n/a" if judged.target is None else f"≤ {judged.target:.3g} {unit}"
+            lines.append(f"| {name} | {metric} | {_fmt(judged.value, 3)} {unit} | {target} "
+                         f"| {_fmt(ideal.value if ideal else np.nan, 3)} {unit} |")
+    return "\n".join(lines)
+
+
+def main(argv: Sequence[str] | None = None) -> None:
+    """Run the study; print the tables and update the README."""
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--no-write", action="store_true", help="print only")
+    parser.add_argument("--duration", type=float, default=STUDY_DURATION,
+                        help="seconds per study run")
+    parser.add_argument("--timing-only", action="store_true",
+                        help="only the mecanum4 / omni3 timing table (best of 5 rounds)")
+    args = parser.parse_args(argv)
+    default = MecanumParams()
+    if args.timing_only:
+        timing = timing_table(default, rounds=5, duration=args.duration)
+        print(timing)
+        if not args.no_write:
+            replace_between(README, "mecanum timing", timing)
+            print(f"wrote {README}")
+        return
+    scenarios = study_scenarios(args.duration)
+    default_label = f"{default.roller_shape}, {default.rollers_per_wheel}"
+    study = []
+    for label, params in study_configs():
+        study.append(measure(params, scenarios, label))
+        print(table(study[-1:]).splitlines()[-1], flush=True)
+    timing = timing_table(default, duration=args.duration)
+    study_md = table(study, default_label)
+    long_md = long_runs_table(default)
+    print(study_md, "", timing, "", long_md, sep="\n")
+    if not args.no_write:
+        replace_between(README, "mecanum roller study", study_md)
+        replace_between(README, "mecanum timing", timing)
+        replace_between(README, "mecanum long runs", long_md)
+        print(f"wrote {README}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,115 @@
+"""Parameters of the four-mecanum-wheel platform (``mecanum4``), a frozen validated dataclass.
+
+Lengths in metres, masses in kilograms, angles in radians (see :mod:`wmr_mujoco.models.params`).
+The roller geometry is derived in ``docs/mecanum.md``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from wmr_mujoco.models.params import DriveParams, SimParams, _check_positive_fields, _check_range
+
+
+@dataclass(frozen=True)
+class MecanumParams:
+    """Four mecanum wheels on a rectangular chassis, one row of passive rollers each.
+
+    Wheels at ``(±half_length, ±half_track)`` drive along the chassis x axis. Each carries
+    ``rollers_per_wheel`` rollers whose axes, at the contact, make the angle
+    ``roller_angle`` with the drive direction; the rollers' outer surface follows the
+    ideal mecanum profile (``docs/mecanum.md``), i.e. the wheel's cylindrical envelope of
+    radius ``wheel_radius``. Layout "O" on the floor (X seen from above): the contact
+    roller axis of every wheel is perpendicular to the line from the chassis centre to the
+    wheel when ``half_length = half_track``.
+
+    Attributes:
+        wheel_radius: R, radius of the cylindrical envelope over the rollers.
+        half_length: a, chassis centre to the wheel axles along x.
+        half_track: w, chassis centre to the wheel mid-planes along y.
+        roller_angle: γ, roller axis at the contact against the drive direction (π/4).
+        chassis_mass: chassis mass (a uniform box for its inertia).
+        hub_mass: mass of each wheel hub without rollers.
+        roller_mass: mass of each roller.
+        rollers_per_wheel: n, rollers on each wheel.
+        roller_shape: collision primitive of a roller: ``"ellipsoid"`` (osculating the
+            ideal profile at the roller middle), ``"profile"`` (convex mesh of the ideal
+            profile), ``"capsule"`` or ``"sphere"``.
+        roller_thickness: radial thickness b of a roller at its middle, as a fraction of R.
+        roller_overlap: extra wheel-rotation span of each roller beyond the ``π/n``
+            half-span needed for one roller to always touch, as a fraction.
+        roller_armature: rotor inertia added to each roller joint, kg·m².
+        roller_damping: viscous damping of each roller joint, N·m·s/rad.
+        drive: actuator settings (no steering).
+        sim: simulation settings.
+    """
+
+    wheel_radius: float = 0.05
+    half_length: float = 0.15
+    half_track: float = 0.15
+    roller_angle: float = math.pi / 4.0
+    chassis_mass: float = 3.0
+    hub_mass: float = 0.15
+    roller_mass: float = 0.004
+    rollers_per_wheel: int = 16
+    roller_shape: str = "ellipsoid"
+    roller_thickness: float = 0.1
+    roller_overlap: float = 0.1
+    roller_armature: float = 0.0
+    roller_damping: float = 0.0
+    drive: DriveParams = DriveParams(
+        wheel_kv=2.0, wheel_armature=0.004, wheel_torque_limit=3.0, wheel_rate_limit=60.0)
+    sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
+
+    ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
+
+    def __post_init__(self) -> None:
+        _check_positive_fields(self, exclude=("roller_armature", "roller_damping",
+                                              "rollers_per_wheel", "roller_overlap"))
+        _check_range(self, "roller_armature", 0.0, 1e-3, low_inclusive=True)
+        _check_range(self, "roller_damping", 0.0, 1e-2, low_inclusive=True)
+        _check_range(self, "roller_angle", math.pi / 12.0, 5.0 * math.pi / 12.0,
+                     low_inclusive=True)
+        _check_range(self, "roller_thickness", 0.02, 0.5)
+        _check_range(self, "roller_overlap", 0.0, 1.0, low_inclusive=True)
+        if not isinstance(self.rollers_per_wheel, int) or not 6 <= self.rollers_per_wheel <= 24:
+            raise ValueError(f"MecanumParams.rollers_per_wheel = {self.rollers_per_wheel!r}; "
+                             f"valid range is integers [6, 24]")
+        if self.roller_shape not in self.ROLLER_SHAPES:
+            raise ValueError(f"MecanumParams.roller_shape = {self.roller_shape!r}; valid "
+                             f"values are {', '.join(self.ROLLER_SHAPES)}")
+        if self.roller_half_span >= math.pi / 3.0:
+            raise ValueError(f"MecanumParams.roller_overlap = {self.roller_overlap!r} gives a "
+                             f"roller half-span of {math.degrees(self.roller_half_span):.1f}°; "
+                             f"valid half-spans are below 60° (fewer rollers or less overlap)")
+        _check_range(self, "half_length", self.wheel_radius * 1.05)
+        min_w = self.wheel_half_width + 0.01
+        _check_range(self, "half_track", min_w)
+
+    @property
+    def roller_half_width(self) -> float:
+        """Radial half-thickness b of a roller at its middle: ``roller_thickness · R``."""
+        return self.roller_thickness * self.wheel_radius
+
+    @property
+    def axis_distance(self) -> float:
+        """Distance d = R − b from the wheel axle to a roller axis."""
+        return self.wheel_radius - self.roller_half_width
+
+    @property
+    def roller_half_span(self) -> float:
+        """Half-span φ_m: half of the wheel rotation one roller covers: ``(π/n)(1 + overlap)``."""
+        return math.pi / self.rollers_per_wheel * (1.0 + self.roller_overlap)
+
+    @property
+    def wheel_half_width(self) -> float:
+        """Axial half-extent of the contact track, ``d tan φ_m tan γ``, plus b."""
+        return (self.axis_distance * math.tan(self.roller_half_span)
+                * math.tan(self.roller_angle) + self.roller_half_width)
+
+    @property
+    def total_mass(self) -> float:
+        """Chassis, hubs and rollers."""
+        return self.chassis_mass + 4 * (self.hub_mass
+                                        + self.rollers_per_wheel * self.roller_mass)

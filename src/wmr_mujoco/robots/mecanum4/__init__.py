@@ -1,0 +1,134 @@
+"""The mecanum platform: four mecanum wheels, 16 free ideal-profile rollers at 45° each.
+
+Kinematic inputs ``(u, v, r)``: the commanded body twist, driven as ideal wheel rates,
+judged against the roller-pitch-averaged kinematics with the ideal model beside it
+(:mod:`.kinematics`), from 0.5 s ramps and from steps (:mod:`.traction`); torque inputs
+against the reduced Lagrange equations (:mod:`.dynamics`); the collider ripple as a
+measurement (:mod:`.ripple`). Derivations: docs/mecanum.md.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import mujoco
+
+from wmr_mujoco.models.builders import mecanum4 as builder
+from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.robots.mecanum4 import dynamics, kinematics, ripple
+from wmr_mujoco.robots.mecanum4.grouped import Group
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation.adapters import Adapter
+from wmr_mujoco.validation.metrics import Probe, Target
+from wmr_mujoco.validation.omni_wheels import (
+    DIRECTIONS_DEG,
+    RAMP,
+    ROLLER_RATE_PCT,
+    SPEED,
+    YAW_RATE,
+    omni_probes,
+    translation,
+    twist_inputs,
+)
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.signals import const
+
+NAME = "mecanum4"
+SOURCE = "issue 15"
+#: Seconds of a translation run. Every error of a translation is a rate (a constant %
+#: of path) or a fixed lag (a larger % the shorter the run), so a shorter run is the
+#: harder test; turning runs last :data:`TURN_DURATION`, since a heading error grows
+#: with the angle turned.
+TRANSLATE_DURATION = 2.0
+TURN_DURATION = 10.0
+#: Constant wheel torques of the torque runs, N·m (FL, FR, RL, RR), and their length, s.
+TORQUE_AHEAD = (0.04, 0.04, 0.04, 0.04)
+TORQUE_MIXED = (0.04, -0.01, 0.03, 0.0)
+TORQUE_DURATION = 2.0
+
+TARGETS: Mapping[str, Target] = {
+    mt.POSITION_PCT: Target.requirement(1.0, f"{SOURCE}: position within 1 % of path "
+                                             "over the whole run"),
+    mt.HEADING_DEG: Target.requirement(1.0, f"{SOURCE}: heading within 1° over the "
+                                            "whole run"),
+    ROLLER_RATE_PCT: Target.requirement(5.0, "issue 3 (omni3's roller requirement, "
+                                             "applied to these rollers): spin rates within "
+                                             "5 % of slide speed / ρ (median over contacts)"),
+    dynamics.VELOCITY_PCT: Target.requirement(3.0, "issue 5 (omni3's torque target): "
+                                                   "body velocity within 3 % of the "
+                                                   "Lagrange model"),
+}
+
+
+TAGS = ((RAMP, "ramp"), (0.0, "step"))
+
+
+def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
+    """The eight translations at 0.3 m/s (a ramp of ``ramp`` seconds; 0: a step)."""
+    return tuple(Scenario(NAME, f"translate {deg}° ({tag})",
+                          twist_inputs(translation(deg), ramp), duration=TRANSLATE_DURATION)
+                 for deg in DIRECTIONS_DEG)
+
+
+def turning(ramp: float, tag: str) -> tuple[Scenario, ...]:
+    """Translation+rotation (0.3 m/s, 0.5 rad/s) and rotation on the spot at 1 rad/s.
+
+    The first is the robot's first kinematic scenario: the bench's cruising controls.
+    """
+    return (Scenario(NAME, f"translate+rotate ({tag})",
+                     twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE), ramp), duration=TURN_DURATION),
+            Scenario(NAME, f"rotate ({tag})", twist_inputs((0.0, 0.0, YAW_RATE), ramp),
+                     duration=TURN_DURATION))
+
+
+def kinematic_runs() -> tuple[Scenario, ...]:
+    """Every kinematic run, the grouped translations included (e.g. for the study)."""
+    return tuple(s for ramp, tag in TAGS for s in (*translations(ramp, tag),
+                                                   *turning(ramp, tag)))
+
+
+def _scenarios() -> tuple[Scenario, ...]:
+    out = []
+    for ramp, tag in TAGS:
+        out.append(Scenario(NAME, f"8 translations ({tag})", kind=ScenarioKind.MEASUREMENT,
+                            evaluate=Group(translations(ramp, tag)),
+                            description="eight kinematic runs, each judged over the run"))
+        out += turning(ramp, tag)
+    out += [Scenario(NAME, f"{dynamics.JUDGED_PREFIX}", tuple(const(t) for t in TORQUE_AHEAD),
+                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC),
+            Scenario(NAME, "torque mixed", tuple(const(t) for t in TORQUE_MIXED),
+                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC),
+            Scenario(NAME, "rolling-radius ripple", kind=ScenarioKind.MEASUREMENT,
+                     evaluate=ripple.ripple,
+                     description="collision geometry of wheel FL over one revolution")]
+    return tuple(out)
+
+
+SCENARIOS = _scenarios()
+
+
+def ramp_probes(scenario: Scenario, model: mujoco.MjModel, adapter: Adapter,
+                targets: Mapping[str, Target]) -> Probe | None:
+    """The omni-wheel probes (roller and wheel rates, yaw ripple) on the ramped runs.
+
+    A step run's rollers turn as the ramped run's after the first tens of milliseconds;
+    measuring them twice would only cost time.
+    """
+    if scenario.kind is ScenarioKind.KINEMATIC and kinematics.is_step(scenario):
+        return None
+    return omni_probes(scenario, model, adapter, targets)
+
+SPEC = RobotSpec(
+    name=NAME,
+    description="four mecanum wheels (O layout), each with 16 passive ideal-profile "
+                "rollers at 45 degrees on free hinges",
+    params_type=MecanumParams, build=builder.build, folder=NAME, robot_file="mecanum4.xml",
+    adapters={ScenarioKind.KINEMATIC: kinematics.kinematic_adapter,
+              ScenarioKind.DYNAMIC: dynamics.dynamic_adapter},
+    judges={ScenarioKind.KINEMATIC: kinematics.judge_kinematic,
+            ScenarioKind.DYNAMIC: dynamics.judge_torques},
+    probes=(ramp_probes,),
+    targets=TARGETS, scenarios=SCENARIOS, demo_scenario="translate+rotate (ramp)",
+    bench_scenario="translate+rotate (ramp)", render_scenario="translate+rotate (ramp)",
+)

@@ -1,0 +1,35 @@
+"""Ctrl-C and SIGTERM end a command with one line, exit 130/143, and leave no file."""
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src"
+
+
+@pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
+    env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
+    # A clip far longer than the test waits: the signal always arrives mid-render.
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "wmr_mujoco.cli", "render", "disc", "--out",
+         str(tmp_path / "clip.mp4"), "--duration", "600", "--hold", "--fps", "10",
+         "--width", "64", "--height", "48", "--quiet"],
+        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 60
+    # The temporary video appears once the writer is open, before the first frame.
+    while not list(tmp_path.glob(".clip.*.mp4")) and time.monotonic() < deadline:
+        assert proc.poll() is None, proc.communicate()
+        time.sleep(0.05)
+    time.sleep(0.2)
+    proc.send_signal(sig)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == code, err
+    assert err.strip().splitlines() == [
+        f"wmr render: {'interrupted' if code == 130 else 'terminated'}; nothing written"]
+    assert list(tmp_path.iterdir()) == []
