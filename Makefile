@@ -51,9 +51,11 @@ renders: $(STAMP)
 
 # The design and fidelity-versus-cost studies in the model READMEs: omni3's roller design
 # and peer table, the Whipple bicycle's eigenvalues, the free disc's settings,
-# mecanum4's roller design.
+# mecanum4's roller design; omni3's coasting energy budget and dynamics tables in
+# docs/omni-dynamics.md.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
+	$(BIN)/python -m wmr_mujoco.bench.omni_energy_study
 	$(BIN)/python -m wmr_mujoco.bench.whipple_study
 	$(BIN)/python -m wmr_mujoco.bench.disc_study
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_study

@@ -68,7 +68,12 @@ def _cmd_demo(_: argparse.Namespace) -> int:
 
 def _cmd_validate(args: argparse.Namespace) -> int:
     from wmr_mujoco.progress import bar, shown
-    from wmr_mujoco.validation.report import check_report_folder, text_table, write_report
+    from wmr_mujoco.validation.report import (
+        check_report_folder,
+        summary_line,
+        text_table,
+        write_report,
+    )
     from wmr_mujoco.validation.runner import run_all
     from wmr_mujoco.validation.scenarios import scenarios_for
 
@@ -99,7 +104,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     print(text_table(results, judged_only=not args.all_metrics))
     path = write_report(results, args.out)
     failed = [r.scenario.key for r in results if not r.passed]
-    print(f"\n{len(results) - len(failed)} of {len(results)} scenarios pass; report: {path}")
+    print(f"\n{summary_line(results)}; report: {path}")
     if failed:
         print(f"failed: {', '.join(failed)}", file=sys.stderr)
         return 1

@@ -65,3 +65,16 @@ def test_naive_substitution_disagrees_with_multipliers():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+@pytest.mark.parametrize("flip", [False, True])
+def test_psi_dot_cross_term_sign_newton_euler(flip, steady_turn_off_circle):
+    """The Lagrange model's ψ̇ cross-term c(ν) = (−M r v, M r u, 0) against Newton–Euler in
+    the world frame (a steady turn is a circle only under the centripetal force; see the
+    fixture): flipping its sign leaves the circle by centimetres within half a turn,
+    against ~1e-7 m of RK4 at 5 ms (global error ~ ρ (r Δt)⁴ / 5 per radian). The
+    multiplier and energy tests above cannot see this sign (issue 16)."""
+    model = OmniDynamics(2.54, 0.0245, 0.0042, ok.symmetric_layout(0.05, 0.15))
+    off = steady_turn_off_circle(model.body_acceleration, model.H, model.velocity_term,
+                                 model.mass, flip)
+    assert off > 0.01 if flip else off < 1e-6

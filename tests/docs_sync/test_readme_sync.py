@@ -34,10 +34,12 @@ def test_sync_pastes_each_report(tmp_path):
     reports.mkdir()
     (reports / "summary.md").write_text("| robot | pass |\n|---|---|\n| disc | pass |\n")
     (reports / "bench.md").write_text("# Benchmarks\n\n## Speed\n\n| x |\n")
+    (reports / "open.md").write_text("| omni3 | torque rotate | open |\n")
     _complete(reports)
     assert sync(readme, reports) == list(SECTIONS)
     text = readme.read_text()
     assert "old" not in text and "| disc | pass |" in text and "#### Speed" in text
+    assert "| omni3 | torque rotate | open |" in text
 
 
 def test_missing_report_names_the_command(tmp_path, capsys):
@@ -54,12 +56,13 @@ def test_only_the_sections_asked_for_and_nothing_when_one_is_missing(tmp_path):
     original = "\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS))
     readme.write_text(original)
     (tmp_path / "summary.md").write_text("| new |\n")
+    (tmp_path / "open.md").write_text("No open targets.\n")
     _complete(tmp_path)
     with pytest.raises(FileNotFoundError, match="`make bench` writes it"):
         sync(readme, tmp_path)
     assert readme.read_text() == original  # nothing written when a report is missing
     assert sync(readme, tmp_path, ["validation results"]) == ["validation results"]
-    assert readme.read_text().count("old") == 1 and "| new |" in readme.read_text()
+    assert readme.read_text().count("old") == 2 and "| new |" in readme.read_text()
     with pytest.raises(ValueError, match="unknown README sections"):
         sync(readme, tmp_path, ["results"])
 
@@ -77,6 +80,7 @@ def _refused(tmp_path, capsys):
 
 def _reports(tmp_path, summary="| disc | pass |\n", bench="# Benchmarks\n\n| x |\n"):
     (tmp_path / "summary.md").write_text(summary)
+    (tmp_path / "open.md").write_text("No open targets.\n")
     (tmp_path / "bench.md").write_text(bench)
 
 

@@ -71,3 +71,19 @@ def test_a_row_passes_on_magnitude_and_never_on_nan():
 def test_bad_targets_are_refused(value, kind, match):
     with pytest.raises(ValueError, match=match):
         Target(value, kind, "basis")
+
+
+def test_open_target_is_shown_and_counted_not_judged():
+    """An open target (a requirement no model meets yet) keeps its value and reason in
+    the row, is not judged (passed None) and says whether the figure now meets it."""
+    target = Target.open(1.0, "issue 16: within 1 %", "hand-overs smeared")
+    assert not target.judged and target.kind == "open"
+    assert target.label == "open: issue 16: within 1 %; not yet met: hand-overs smeared"
+    missed = Row.of("r", "s", Metric("u error", 1.4, "%", target))
+    met = Row.of("r", "s", Metric("u error", 0.6, "%", target))
+    assert missed.passed is None and missed.open and missed.verdict == "open"
+    assert met.passed is None and met.verdict == "open (met)"
+    judged = Row.of("r", "s", Metric("u error", 1.4, "%", Target.requirement(1.0, "x")))
+    assert judged.passed is False and not judged.open and judged.verdict == "FAIL"
+    with pytest.raises(ValueError, match="Target.value"):
+        Target.open(0.0, "x", "y")

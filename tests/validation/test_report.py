@@ -57,6 +57,22 @@ def test_markdown_cells_escape_pipes():
     assert line.count(" | ") + 2 == 9 and "\\|F\\|" in line and "\\|x\\|" in line
 
 
+def test_summary_line_counts_open_targets():
+    """Open rows are counted beside the verdict and do not fail a scenario."""
+    from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
+    from wmr_mujoco.validation.report import summary_line
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    s = Scenario("omni3", "x", (const(0.0),), duration=0.1)
+    rows = [Row.of("omni3", "x", Metric("a", 2.0, "%", Target.open(1.0, "i", "why"))),
+            Row.of("omni3", "x", Metric("b", 0.5, "%", Target.requirement(1.0, "i")))]
+    res = ScenarioResult(s, rows, Trace())
+    assert res.passed
+    assert summary_line([res]) == ("1 of 1 scenarios pass; 1 targets open (shown with "
+                                   "their figures, not judged)")
+    assert "open" in text_table([res], judged_only=True)
+
+
 def test_summary_headline_escapes_pipes():
     from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
     from wmr_mujoco.validation.report import summary_table

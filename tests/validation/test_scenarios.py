@@ -29,6 +29,10 @@ def test_every_robot_has_its_scenarios():
     # The robots validated since the first release keep their scenarios; every robot added
     # since brings its own (the registry test checks a spec's scenarios belong to it).
     assert {s.robot for s in scenarios} >= {"disc", "bicycle", "tricycle", "omni3"}
+    assert "disc" in {s.robot for s in scenarios if s.kind is ScenarioKind.DYNAMIC}
+    # omni3's torque inputs are judged against its hybrid model (measurement scenarios).
+    assert {s.name for s in scenarios if s.robot == "omni3"
+            and s.kind is ScenarioKind.MEASUREMENT} >= {"torque along x", "slip onset"}
     assert sum(s.name.startswith("translate ") for s in scenarios) >= 8
 
 

@@ -1,7 +1,8 @@
 """Paste the latest reports into the README: ``python -m wmr_mujoco.docs_sync.readme_sync``.
 
-``make demo`` writes ``reports/summary.md`` and ``make bench`` writes ``reports/bench.md``;
-this copies them between the README's ``validation results`` and ``benchmarks`` markers
+``make demo`` writes ``reports/summary.md`` and ``reports/open.md`` (the open targets) and
+``make bench`` writes ``reports/bench.md``; this copies them between the README's
+``validation results``, ``open targets`` and ``benchmarks`` markers
 (:mod:`wmr_mujoco.docs_sync.markers`), so that every figure in the README comes from a run of the
 code, never from typing. ``make readme`` runs it.
 """
@@ -21,6 +22,7 @@ from wmr_mujoco.validation.report import REPORTS_DIR
 
 #: README marker key -> (report file, command that writes it).
 SECTIONS = {"validation results": ("summary.md", "make demo"),
+            "open targets": ("open.md", "make demo"),
             "benchmarks": ("bench.md", "make bench")}
 
 
@@ -44,13 +46,14 @@ def refusal(key: str, reports: Path, text: str) -> str | None:
     left out), and any report naming a path of this machine.
     """
     reports = Path(reports)
-    if key == "validation results":
+    if SECTIONS[key][1] == "make demo":  # the validation results and open targets
         doc = _json(reports / "validation.json")
         if doc.get("complete") is not True:
             missing = doc.get("missing") or ["(validation.json missing or from an old run)"]
             shown = ", ".join(missing[:3]) + (f" and {len(missing) - 3} more"
                                               if len(missing) > 3 else "")
-            return f"{reports / 'summary.md'} is partial (not run: {shown}); run `make demo`"
+            return (f"{reports / SECTIONS[key][0]} is partial (not run: {shown}); run "
+                    "`make demo`")
     if key == "benchmarks":
         doc = _json(reports / "bench.json")
         if doc.get("quick", True):

@@ -58,3 +58,21 @@ def inertia_about_axis(model: mujoco.MjModel, data: mujoco.MjData, bodies: list[
         r_perp = r - axis * (r @ axis)
         total += axis @ inertia @ axis + model.body_mass[b] * (r_perp @ r_perp)
     return float(total)
+
+
+def inertia_tensor_about(model: mujoco.MjModel, data: mujoco.MjData, bodies: list[int],
+                         point: np.ndarray) -> np.ndarray:
+    """Composite 3×3 inertia of ``bodies`` about ``point``, world frame.
+
+    ``I = Σ_b (I_b + m_b (|r_b|² 1 − r_b r_bᵀ))`` with the frames of ``data`` (after
+    ``mj_kinematics``): ``I_b`` about the body's centre of mass in the world frame and
+    ``r_b`` its offset from ``point`` (parallel-axis theorem); ``âᵀ I â`` is
+    :func:`inertia_about_axis`.
+    """
+    total = np.zeros((3, 3))
+    for b in bodies:
+        rot = data.ximat[b].reshape(3, 3)
+        r = data.xipos[b] - point
+        total += (rot @ np.diag(model.body_inertia[b]) @ rot.T
+                  + model.body_mass[b] * ((r @ r) * np.eye(3) - np.outer(r, r)))
+    return total

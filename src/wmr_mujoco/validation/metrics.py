@@ -1,8 +1,11 @@
 """Judged metrics: targets, rows, per-step probes and the pose-tracking judge.
 
-A :class:`Target` is either a **requirement** (a number the project was asked for) or a
-**derived bound** (a number that follows from the physics, with its derivation beside
-it); a metric without a target is reported, not judged.
+A :class:`Target` is a **requirement** (a number the project was asked for), a **derived
+bound** (a number that follows from the physics, with its derivation beside it), or an
+**open** requirement (:meth:`Target.open`: asked for, but no model of the package meets it
+yet; the row shows the target, the measured figure and the reason, and is counted as open
+rather than judged, so that a run passes only if every judged target passes while the
+miss stays visible); a metric without a target is reported, not judged.
 
 Pose tracking (every scenario whose analytic state starts with ``(x, y, heading)``), with
 ``e(t) = |p_sim(t) − p_model(t)|`` the distance between the simulated and the analytic
@@ -54,7 +57,11 @@ DEFINITIONS = f"""\
 - Samples: every {RECORD_EVERY}th simulation step and the last one.
 - Each target is a **requirement** (asked for; the issue is named) or a **derived bound**
   (it follows from the physics; its derivation is given); a metric without a target is
-  reported, not judged."""
+  reported, not judged.
+- An **open** target is a requirement that no model meets yet: its row shows the
+  target, the measured figure and why it is missed (verdict `open`, or `open (met)` once
+  the figure meets it); it is counted in the summary line and does not decide whether
+  the run passes."""
 
 # Keys of a robot's target table used by the generic judges.
 POSITION_PCT = "worst position error % of path"
@@ -77,7 +84,7 @@ class Target:
     kind: str
     basis: str
 
-    KINDS = ("requirement", "derived bound")
+    KINDS = ("requirement", "derived bound", "open")
 
     def __post_init__(self) -> None:
         if self.kind not in self.KINDS:
@@ -94,6 +101,22 @@ class Target:
     def derived(cls, value: float, derivation: str) -> Target:
         """A bound derived from the physics, with its derivation."""
         return cls(value, "derived bound", derivation)
+
+    @classmethod
+    def open(cls, value: float, source: str, reason: str) -> Target:
+        """A requirement no model meets yet: shown with its figure, counted, not judged.
+
+        Args:
+            value: the required bound.
+            source: where it was asked for (e.g. the issue).
+            reason: why it is missed (what the model leaves out).
+        """
+        return cls(value, "open", f"{source}; not yet met: {reason}")
+
+    @property
+    def judged(self) -> bool:
+        """Whether a row with this target decides pass or fail (not an open target)."""
+        return self.kind != "open"
 
     @property
     def label(self) -> str:
@@ -113,7 +136,10 @@ class Metric(NamedTuple):
 
 @dataclass(frozen=True)
 class Row:
-    """One metric of one scenario, judged."""
+    """One metric of one scenario, judged.
+
+    ``passed`` None: not judged; ``open``: an open target, its figure shown against it.
+    """
 
     robot: str
     scenario: str
@@ -124,15 +150,29 @@ class Row:
     passed: bool | None = None
     note: str = ""
     basis: str = ""
+    open: bool = False
 
     @staticmethod
     def of(robot: str, scenario: str, m: Metric) -> Row:
-        """The row of a metric: passes when ``|value| <= target`` (and is finite)."""
+        """The row of a metric: passes when ``|value| <= target`` (and is finite).
+
+        An open target's row is not judged (``passed`` None, ``open`` True).
+        """
         t = m.target
-        passed = None if t is None else bool(np.isfinite(m.value) and abs(m.value) <= t.value)
+        meets = t is not None and bool(np.isfinite(m.value) and abs(m.value) <= t.value)
+        passed = None if t is None or not t.judged else meets
         return Row(robot, scenario, m.name, float(m.value), m.unit,
                    None if t is None else t.value, passed, m.note,
-                   "" if t is None else t.label)
+                   "" if t is None else t.label, open=t is not None and not t.judged)
+
+    @property
+    def verdict(self) -> str:
+        """``pass``, ``FAIL``, ``open`` / ``open (met)``, or empty (reported only)."""
+        if self.open:
+            meets = np.isfinite(self.value) and self.target is not None and abs(
+                self.value) <= self.target
+            return "open (met)" if meets else "open"
+        return "" if self.passed is None else ("pass" if self.passed else "FAIL")
 
 
 @dataclass(frozen=True)

@@ -18,8 +18,9 @@ import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
+from wmr_mujoco.analytic.omni_hybrid import Drive, OmniHybrid, RollerGeometry
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis
+from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis, inertia_tensor_about
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose, body_twist
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -132,6 +133,118 @@ def dynamics_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_bo
         mass=float(sum(model.body_mass[robot])),
         yaw_inertia=inertia_about_axis(model, data, robot, centre, np.array([0.0, 0.0, 1.0])),
         wheel_inertia=hinge_inertia(model, wheel_joint), layout=layout)
+
+
+def static_penetration(model: mujoco.MjModel, settle: float = 1.0) -> float:
+    """Mean penetration ``δ = −dist`` of the roller contacts of the robot at rest, m.
+
+    A static property of the soft contact (solref/solimp under the robot's weight),
+    measured once at rest: no motion, nothing taken from the runs it is used to predict.
+    """
+    data = mujoco.MjData(model)
+    for _ in range(round(settle / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+    mujoco.mj_forward(model, data)
+    floor = model.geom("floor").id
+    dist = [c.dist for c in data.contact[:data.ncon] if floor in (c.geom1, c.geom2)]
+    if not dist:
+        raise ValueError("the robot does not touch the floor after settling")
+    return float(max(0.0, -np.mean(dist)))
+
+
+def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body: str,
+                      wheel_joints: Sequence[str], compliant: bool = True) -> OmniHybrid:
+    """The hybrid model of a compiled three-omni-wheel model with ellipsoid rollers.
+
+    :class:`~wmr_mujoco.analytic.omni_hybrid.OmniHybrid` at the reference pose.
+
+    ``M``, ``I_w`` (hinge inertia with armature) from :func:`dynamics_from_model`, so the
+    Lagrange and the hybrid model come from one reading; the composite 3×3 inertia about
+    ``centre_body`` (:func:`~wmr_mujoco.sim.inertia.inertia_tensor_about`), in its frame;
+    the first wheel's rollers (child bodies of the wheel: angle around the axle, axial
+    offset, one ellipsoid collider each with its size, friction and solref time
+    constant; the roller hinge's inertia and armature); the wheel centres' radius and
+    angles. With ``compliant`` the hand-over loss of the soft contact uses
+    :func:`static_penetration`; without, contacts are rigid.
+
+    Raises:
+        ValueError: a wheel without roller bodies, or a roller without exactly one
+            ellipsoid collider.
+    """
+    lagrange = dynamics_from_model(model, layout, centre_body, wheel_joints[0])
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    base = model.body(centre_body).id
+    frame = data.xmat[base].reshape(3, 3)
+    robot = list(range(1, model.nbody))
+    inertia = frame.T @ inertia_tensor_about(model, data, robot, data.xpos[base]) @ frame
+    wheel = model.joint(wheel_joints[0])
+    wb = int(wheel.bodyid[0])
+    children = [b for b in range(model.nbody) if model.body_parentid[b] == wb]
+    if not children:
+        raise ValueError(f"wheel {wheel_joints[0]!r} has no roller bodies")
+    angles, offsets, size, friction, timeconst = [], [], None, 1.0, 0.0
+    for c in children:
+        x, y, z = model.body_pos[c]
+        angles.append(np.arctan2(x, z))
+        offsets.append(y)
+        geoms = [g for g in range(model.ngeom) if model.geom_bodyid[g] == c
+                 and model.geom_conaffinity[g]
+                 and model.geom_type[g] == mujoco.mjtGeom.mjGEOM_ELLIPSOID]
+        if len(geoms) != 1:
+            raise ValueError(f"roller body {model.body(c).name!r} has {len(geoms)} ellipsoid "
+                             f"colliders; the hybrid model needs exactly one")
+        size = model.geom_size[geoms[0]]
+        friction = float(model.geom_friction[geoms[0], 0])  # rollers have priority 1
+        timeconst = float(model.geom_solref[geoms[0], 0])
+    d = float(np.mean(np.hypot(model.body_pos[children, 0], model.body_pos[children, 2])))
+    roller_joint = int(model.body_jntadr[children[0]])
+    roller_axial = float(model.body_inertia[children[0]][2]
+                         + model.dof_armature[model.jnt_dofadr[roller_joint]])
+    rollers = RollerGeometry(d, float(size[0]), float(size[2]), np.asarray(angles),
+                             np.asarray(offsets))
+    wheel_pos = np.array([model.body_pos[model.joint(w).bodyid[0]] for w in wheel_joints])
+    armature = float(model.dof_armature[wheel.dofadr[0]])
+    return OmniHybrid(
+        mass=lagrange.mass, inertia=inertia,
+        wheel_axial=lagrange.wheel_inertia - armature, wheel_armature=armature,
+        roller_axial=roller_axial, radius=float(rollers.rolling_radius(0.0)),
+        distance=float(np.mean(np.linalg.norm(wheel_pos[:, :2], axis=1))),
+        rollers=rollers, wheel_angles=np.arctan2(wheel_pos[:, 1], wheel_pos[:, 0]),
+        gravity=float(-model.opt.gravity[2]),
+        penetration=static_penetration(model) if compliant else 0.0,
+        friction=friction, contact_timeconst=timeconst if compliant else 0.0)
+
+
+def lagrange_of(hy: OmniHybrid) -> OmniDynamics:
+    """The reduced Lagrange model inside a hybrid one: the same reading.
+
+    Mean lever L; no rows, roller spin, slip or impacts (:func:`dynamics_from_model`).
+    """
+    return OmniDynamics(mass=hy.mass, yaw_inertia=float(hy.inertia[2, 2]),
+                        wheel_inertia=hy.wheel_inertia,
+                        layout=ok.symmetric_layout(hy.radius, hy.distance))
+
+
+def drive_from_model(model: mujoco.MjModel, wheel_joint: str,
+                     mode: ActuationMode | str) -> Drive:
+    """Drive law of a wheel's actuator: gain ``k_v`` (rate mode) and ``forcerange``."""
+    act = model.actuator(wheel_joint)
+    limit = float(act.forcerange[1])
+    if ActuationMode(mode) is ActuationMode.RATE:
+        return Drive("rate", limit, gain=float(act.gainprm[0]))
+    return Drive("torque", limit)
+
+
+def roller_rates(model: mujoco.MjModel, qvel: np.ndarray,
+                 wheel_joints: Sequence[str]) -> np.ndarray:
+    """(wheels, rollers) spins of every roller (child body) of every wheel, from ``qvel``."""
+    out = []
+    for w in wheel_joints:
+        wb = model.joint(w).bodyid[0]
+        kids = [b for b in range(model.nbody) if model.body_parentid[b] == wb]
+        out.append([qvel[model.jnt_dofadr[model.body_jntadr[b]]] for b in kids])
+    return np.asarray(out)
 
 
 @dataclass(frozen=True)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+import multiprocessing
 import os
 import re
 from collections.abc import Sequence
@@ -60,16 +61,30 @@ def _fmt(value: float) -> str:
 
 
 def _verdict(row: Row) -> str:
-    return "" if row.passed is None else ("pass" if row.passed else "FAIL")
+    return row.verdict
+
+
+def summary_line(results: Sequence[ScenarioResult]) -> str:
+    """``N of M scenarios pass; K targets open (...)``: open targets counted, not judged."""
+    failed = [r for r in results if not r.passed]
+    opened = [r for res in results for r in res.rows if r.open]
+    line = f"{len(results) - len(failed)} of {len(results)} scenarios pass"
+    if opened:
+        met = sum(r.verdict == "open (met)" for r in opened)
+        line += (f"; {len(opened)} targets open (shown with their figures, not judged"
+                 f"{f'; {met} of them now met' if met else ''})")
+    return line
 
 
 def text_table(results: Sequence[ScenarioResult], judged_only: bool = False) -> str:
-    """Fixed-width table: robot, scenario, metric, value, target, pass."""
-    rows = [r for res in results for r in res.rows if not judged_only or r.passed is not None]
+    """Fixed-width table: robot, scenario, metric, value, target, pass (open rows shown)."""
+    rows = [r for res in results for r in res.rows
+            if not judged_only or r.passed is not None or r.open]
     header = ("robot", "scenario", "metric", "value", "target", "pass")
     body = [(r.robot, r.scenario, r.metric, f"{_fmt(r.value)} {r.unit}".strip(),
              "" if r.target is None else f"≤ {_fmt(r.target)} {r.unit}".strip(),
-             _verdict(r) + (f" ({r.note})" if r.note and r.passed is False else ""))
+             _verdict(r) + (f" ({r.note})" if r.note and (r.passed is False or r.open)
+                            else ""))
             for r in rows]
     widths = [max(len(x[i]) for x in [header, *body]) for i in range(len(header))]
     lines = ["  ".join(h.ljust(w) for h, w in zip(header, widths, strict=True))]
@@ -127,6 +142,23 @@ def summary_table(results: Sequence[ScenarioResult]) -> str:
                  _cell(_value(res, "final heading error", "deg"), "°"), slip]
         lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {_cell_text(headline)} | "
                      f"{' | '.join(cells)} | {verdict} |")
+    return "\n".join(lines)
+
+
+def open_table(results: Sequence[ScenarioResult]) -> str:
+    """Every open target: figure, required bound, where it was asked and why it is missed.
+
+    An empty string when none is open.
+    """
+    rows = [(res, r) for res in results for r in res.rows if r.open]
+    if not rows:
+        return ""
+    lines = ["| robot | scenario | metric | figure | target | verdict | asked for; why open |",
+             "|---|---|---|---|---|---|---|"]
+    for res, r in rows:
+        lines.append(f"| {r.robot} | {res.scenario.name} | {_cell_text(r.metric)} | "
+                     f"{_fmt(r.value)} {r.unit} | ≤ {_fmt(r.target or math.nan)} {r.unit} | "
+                     f"{r.verdict} | {_cell_text(r.basis)} |")
     return "\n".join(lines)
 
 
@@ -239,6 +271,40 @@ def plot_scenario(result: ScenarioResult, path: Path) -> Path | None:
     return path
 
 
+#: The plots :func:`plot_all` hands to its forked workers (inherited, never pickled).
+_PLOT_JOBS: list[tuple[ScenarioResult, Path]] = []
+
+
+def _plot_job(i: int) -> Path | None:
+    result, path = _PLOT_JOBS[i]
+    return plot_scenario(result, path)
+
+
+def plot_all(jobs: Sequence[tuple[ScenarioResult, Path]]) -> list[Path | None]:
+    """:func:`plot_scenario` of every ``(result, path)``, on every core.
+
+    Drawing is pure Python (matplotlib holds the GIL), so the plots are shared among
+    forked worker processes, which inherit the results instead of receiving copies;
+    where ``fork`` is unavailable, or for a single core, they are drawn one by one.
+    """
+    global _PLOT_JOBS
+    jobs = list(jobs)
+    workers = min(len(jobs), os.cpu_count() or 1)
+    if workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
+        return [plot_scenario(r, p) for r, p in jobs]
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot  # imported once, inherited by the workers
+
+    _PLOT_JOBS = jobs
+    try:
+        with multiprocessing.get_context("fork").Pool(workers) as pool:
+            return pool.map(_plot_job, range(len(jobs)), chunksize=1)
+    finally:
+        _PLOT_JOBS = []
+
+
 def _record(r: ScenarioResult) -> dict[str, object]:
     """One scenario's JSON record: verdict, error and every metric."""
     def clean(x: float) -> float | None:
@@ -248,7 +314,7 @@ def _record(r: ScenarioResult) -> dict[str, object]:
             "kind": r.scenario.kind.value, "passed": r.passed, "error": r.error,
             "metrics": [{"metric": m.metric, "value": clean(m.value), "unit": m.unit,
                          "target": m.target, "basis": m.basis, "passed": m.passed,
-                         "note": m.note} for m in r.rows]}
+                         "open": m.open, "note": m.note} for m in r.rows]}
 
 
 def _restore(record: dict) -> ScenarioResult | None:
@@ -262,7 +328,7 @@ def _restore(record: dict) -> ScenarioResult | None:
         return None
     rows = [Row(scenario.robot, scenario.name, m["metric"],
                 float("nan") if m["value"] is None else float(m["value"]), m["unit"],
-                m["target"], m["passed"], m["note"], m["basis"])
+                m["target"], m["passed"], m["note"], m["basis"], bool(m.get("open")))
             for m in record.get("metrics", [])]
     return ScenarioResult(scenario, rows, Trace(), record.get("error"))
 
@@ -353,23 +419,29 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) 
     lines = ["# Validation: MuJoCo contact physics against the analytic models", "",
              "Generated by `wmr validate`; every figure below comes from a run of it "
              f"({len(fresh)} scenarios from the latest run, the others from earlier runs).",
-             "", f"**{len(merged) - len(failed)} of {len(merged)} scenarios pass.**", ""]
+             "", f"**{summary_line(merged)}.**", ""]
     if failed:
         lines += ["Failed: " + ", ".join(f"`{r.scenario.key}`" for r in failed), ""]
     if missing:
         lines += ["Not run yet: " + ", ".join(f"`{k}`" for k in missing), ""]
-    lines += ["## Summary", "", summary_table(merged), "", "## How the metrics are judged",
+    lines += ["## Summary", "", summary_table(merged), ""]
+    if open_table(merged):
+        lines += ["## Open targets", "", "Required, not yet met by any model: shown with "
+                  "their figures, counted, not judged.", "", open_table(merged), ""]
+    lines += ["## How the metrics are judged",
               "", DEFINITIONS, "", "## Every metric", "",
               markdown_table(merged), "", "## Plots", ""]
+    jobs = [(r, plot_path(folder, r.scenario)) for r in merged if r.scenario.key in fresh]
+    for _, png in jobs:
+        png.parent.mkdir(parents=True, exist_ok=True)
+    drawn = dict(zip((r.scenario.key for r, _ in jobs), plot_all(jobs), strict=True))
     for r in merged:
-        png = plot_path(folder, r.scenario)
-        if r.scenario.key in fresh:
-            png.parent.mkdir(parents=True, exist_ok=True)
-            png = plot_scenario(r, png)
+        png = drawn.get(r.scenario.key, plot_path(folder, r.scenario))
         if png is not None and png.is_file():
             rel = png.relative_to(folder).as_posix()
             lines += [f"### {r.scenario.key}", "", f"![{r.scenario.key}]({rel})", ""]
     _remove_stale_plots(folder, {r.scenario.robot for r in results}, merged)
     write_text_atomic(folder / "validation.json", to_json(merged))
     write_text_atomic(folder / "summary.md", summary_table(merged) + "\n")
+    write_text_atomic(folder / "open.md", (open_table(merged) or "No open targets.") + "\n")
     return write_text_atomic(folder / "validation.md", "\n".join(lines) + "\n")

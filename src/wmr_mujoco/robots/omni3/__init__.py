@@ -1,9 +1,12 @@
 """The omni robot: three omni wheels at 120°, two staggered rows of free barrel rollers each.
 
 Kinematic inputs ``(u, v, r)``: body twist (``world_frame`` scenarios give world rates
-``(Ẋ, Ẏ, ψ̇)``), driven as wheel rates ``θ̇ = H ν``; state ``(X, Y, ψ)``. Torque inputs
-``(τ₁, τ₂, τ₃)``: state ``(X, Y, ψ, u, v, r)`` under the reduced Lagrange equations
-(:mod:`wmr_mujoco.analytic.omni_dynamics`), parameters read from the compiled model.
+``(Ẋ, Ẏ, ψ̇)``), driven as wheel rates ``θ̇ = H ν``; state ``(X, Y, ψ)``. The dynamic
+scenarios of issue 16 are measurement scenarios, one module per concept: step commands
+and torque inputs (:mod:`.dynamics`), coasting (:mod:`.coasting`) and the slip onset
+(:mod:`.traction`), all against the hybrid model
+(:mod:`wmr_mujoco.analytic.omni_hybrid`) read from the compiled model (:mod:`.model`);
+the dynamic runs are simulated together (:mod:`.runs`).
 """
 
 from __future__ import annotations
@@ -21,17 +24,17 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.omni3 import coasting, dynamics, traction
+from wmr_mujoco.robots.omni3.runs import WHEELS
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
-from wmr_mujoco.validation.metrics import Metric, Target, Trace
+from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.omni_wheels import (
     DIRECTIONS_DEG,
     ROLLER_RATE_PCT,
     SPEED,
     YAW_RATE,
-    OmniDynamicsAdapter,
-    dynamics_from_model,
     omni_probes,
     translation,
     twist_inputs,
@@ -40,11 +43,6 @@ from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Piecewise, Signal, const
 
 NAME = "omni3"
-WHEELS = ("wheel1", "wheel2", "wheel3")
-#: Key of the body-velocity target of torque runs.
-VELOCITY_PCT = "body velocity error % of peak"
-#: Gravity, m/s².
-GRAVITY = 9.81
 
 
 @dataclass(frozen=True)
@@ -99,54 +97,6 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
                           world_frame=scenario.world_frame)
 
 
-def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
-                    params: RobotParams | None) -> OmniDynamicsAdapter:
-    """The reduced Lagrange model, with parameters from the compiled model."""
-    p = params_or_default(params, OmniParams)
-    layout = ok.symmetric_layout(p.wheel_radius, p.wheel_distance)
-    return OmniDynamicsAdapter(dynamics_from_model(model, layout, "platform", WHEELS[0]),
-                               WHEELS, friction=p.sim.friction)
-
-
-def judge_torques(scenario: Scenario, trace: Trace, adapter: OmniDynamicsAdapter,
-                  targets: Mapping[str, Target]) -> list[Metric]:
-    """Each body-velocity component against the Lagrange model, worst over the run.
-
-    For ``q ∈ {u, v, r}`` (m/s, m/s, rad/s, never mixed):
-    ``max_t |q_sim(t) − q_model(t)| / max_t |q_model(t)|``. Traction: the largest wheel
-    traction force over the run against the Coulomb limit μ N, ``N = M g / 3``.
-    """
-    tr = trace.arrays()
-    sim, ana = tr["sim"], tr["analytic"]
-    out = []
-    for i, (name, unit) in enumerate(zip(("u", "v", "r"), ("m/s", "m/s", "rad/s"),
-                                         strict=True)):
-        q_sim, q_ana = sim[:, 3 + i], ana[:, 3 + i]
-        peak = float(np.max(np.abs(q_ana)))
-        worst = float(np.max(np.abs(q_sim - q_ana)))
-        out.append(Metric(f"worst {name} error", 100.0 * worst / peak, "% of peak",
-                          targets.get(VELOCITY_PCT),
-                          f"max over the run of |{name} − {name}_model| = {worst:.3g} "
-                          f"{unit}, peak |{name}_model| = {peak:.3g} {unit}; reported, not "
-                          f"judged: the {VELOCITY_REQUIREMENT.value:g} % requirement "
-                          "(issue 5) is not met component by component over the run by "
-                          "the reduced model (no roller inertia, row hand-overs); issue 16 "
-                          "addresses it"))
-    for i, name in enumerate(("u", "v", "r")):
-        out.append(Metric(f"final {name}: MuJoCo / Lagrange",
-                          sim[-1, 3 + i] / ana[-1, 3 + i] if abs(ana[-1, 3 + i]) > 1e-9
-                          else float("nan"), "ratio"))
-    dyn = adapter.dynamics
-    forces = [np.max(np.abs(dyn.traction_forces(x[3:6], scenario.input_at(t))))
-              for t, x in zip(tr["time"], ana, strict=True)]
-    limit = adapter.friction * dyn.mass * GRAVITY / 3.0
-    out.append(Metric("largest traction / μN", float(np.max(forces)) / limit, "",
-                      Target.derived(1.0, "Coulomb friction: a wheel rolls without slip "
-                                          "while |F_t| ≤ μ N, with N = M g / 3 on each of "
-                                          "three wheels around the centre of mass")))
-    return out
-
-
 TARGETS: Mapping[str, Target] = {
     mt.POSITION_PCT: req.position_pct(1.0),
     mt.HEADING_DEG: req.HEADING_DEG,
@@ -156,12 +106,6 @@ TARGETS: Mapping[str, Target] = {
     ROLLER_RATE_PCT: Target.requirement(5.0, "issue 3: roller spin rates within 5 % of "
                                              "slide speed / ρ (median over contacts)"),
 }
-#: Issue 5's body-velocity requirement; left out of :data:`TARGETS` until issue 16 (the
-#: torque rows are reported with this figure in their note).
-VELOCITY_REQUIREMENT = Target.requirement(3.0, f"{req.SOURCE}: body velocities within 3 % "
-                                               "of the Lagrange model under constant torques")
-
-
 def square_with_rotation(side: float = 0.6, speed: float = 0.24, yaw_rate: float = 0.4
                          ) -> tuple[Signal, ...]:
     """World-frame square (four legs) while the platform spins at a constant rate."""
@@ -176,14 +120,31 @@ def square_with_rotation(side: float = 0.6, speed: float = 0.24, yaw_rate: float
     return (Piecewise(tuple(xs)), Piecewise(tuple(ys)), const(yaw_rate, 0.5))
 
 
+#: Every dynamic run, simulated together once per parameter set (:mod:`.runs`).
+DYNAMIC_SPECS = (*dynamics.STEP_SPECS, *dynamics.TORQUE_SPECS, coasting.COAST_SPEC)
+
 SCENARIOS = (
     *(Scenario(NAME, f"translate {deg}°", twist_inputs(translation(deg)))
       for deg in DIRECTIONS_DEG),
     Scenario(NAME, "rotate", twist_inputs((0.0, 0.0, YAW_RATE))),
     Scenario(NAME, "translate+rotate", twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE))),
     Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True),
-    Scenario(NAME, "torque", (const(0.04), const(-0.03), const(0.01)), duration=2.0,
-             kind=ScenarioKind.DYNAMIC),
+    *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_step,
+               duration=s.duration, description="rate servo stepped to a twist (no ramp): "
+               "physics vs the hybrid model (servo law, torque limit) and the kinematics")
+      for s in dynamics.STEP_SPECS),
+    *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_torque,
+               duration=s.duration, description="constant wheel torques from rest: physics "
+               "vs the hybrid, Lagrange and kinematic models, windowed over the run")
+      for s in dynamics.TORQUE_SPECS),
+    Scenario(NAME, coasting.COAST_SPEC.name, kind=ScenarioKind.MEASUREMENT,
+             evaluate=coasting.evaluate_coast, duration=coasting.COAST_TIME,
+             description="drive at (u, 0, r), motors off: yaw-rate decay, turn rate of "
+                         "the velocity, energy lost per second"),
+    Scenario(NAME, "slip onset", kind=ScenarioKind.MEASUREMENT,
+             evaluate=traction.evaluate_slip, duration=traction.RAMP_TIME,
+             description="one slowly ramped push along x: the torque at which a wheel "
+                         "slips, against the traction limit μ N with load transfer"),
 )
 
 SPEC = RobotSpec(
@@ -191,9 +152,7 @@ SPEC = RobotSpec(
     description="three omni wheels at 120 degrees, each with two staggered rows of "
                 "passive barrel rollers on free hinges",
     params_type=OmniParams, build=builder.build, folder="omni3", robot_file="omni3.xml",
-    adapters={ScenarioKind.KINEMATIC: kinematic_adapter,
-              ScenarioKind.DYNAMIC: dynamic_adapter},
-    judges={ScenarioKind.DYNAMIC: judge_torques},
+    adapters={ScenarioKind.KINEMATIC: kinematic_adapter},
     probes=(omni_probes,),
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="square with rotation",
     bench_scenario="translate+rotate", render_scenario="square with rotation",

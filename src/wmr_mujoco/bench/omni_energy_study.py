@@ -1,0 +1,146 @@
+"""Where omni3's coasting energy goes, and the dynamics tables of ``docs/omni-dynamics.md``.
+
+``python -m wmr_mujoco.bench.omni_energy_study`` (``make study``, about a minute):
+
+1. the coasting energy budget (:func:`coast_energy_budget`) of three coasts: default
+   contacts, stiff contacts (the rigid limit), pure translation;
+2. omni3's dynamic scenarios (step commands, torque inputs, coasting, slip onset)
+   through the one runner (:func:`~wmr_mujoco.validation.runner.run_all`), every row;
+
+and pastes both tables between the markers of ``docs/omni-dynamics.md``.
+
+The budget instruments every step (too slow for ``wmr validate``): the work of every
+contact constraint force over a step, ``f · J (q̇ₖ + q̇ₖ₊₁)/2 Δt``, split into its normal
+row (contact damping: the hand-over impacts and the soft contact's own loss) and its
+tangential rows (slip), and by whether two rollers of that wheel touch at once (the
+rows' overlap). Their sum is checked against the change of kinetic + potential energy
+(closure row).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
+from wmr_mujoco.robots.omni3.runs import WHEELS, hybrid, settled
+from wmr_mujoco.sim.stepping import check_healthy
+from wmr_mujoco.validation.metrics import Metric
+
+DOC = Path(__file__).resolve().parents[3] / "docs" / "omni-dynamics.md"
+
+
+def _stiffen(model: mujoco.MjModel, timeconst: float) -> None:
+    """Roller contacts with solref time constant ``timeconst``, the step half of it."""
+    if not (math.isfinite(timeconst) and 0 < timeconst <= 0.1):
+        raise ValueError(f"contact_timeconst = {timeconst!r}; valid range is (0, 0.1] s")
+    rollers = [g for g in range(model.ngeom)
+               if model.geom_conaffinity[g] and model.geom_bodyid[g] != 0]
+    model.geom_solref[rollers, 0] = timeconst
+    model.opt.timestep = timeconst / 2.0
+
+
+def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
+                        drive_time: float = 1.5, duration: float = 3.0,
+                        contact_timeconst: float | None = None) -> list[Metric]:
+    """Where a coast's kinetic energy goes, measured in the physics, step by step.
+
+    Raises:
+        ValueError: non-finite twist, bad durations or contact time constant.
+    """
+    nu_cmd = np.asarray(twist, float)
+    if nu_cmd.shape != (3,) or not np.all(np.isfinite(nu_cmd)):
+        raise ValueError(f"twist = {twist!r}; needs 3 finite numbers")
+    for name, value in (("drive_time", drive_time), ("duration", duration)):
+        if not (math.isfinite(value) and 0 < value <= 30):
+            raise ValueError(f"{name} = {value!r} s; valid range is (0, 30] s")
+    model, data = settled(ActuationMode.RATE)
+    if contact_timeconst is not None:
+        _stiffen(model, contact_timeconst)
+    model.opt.enableflags |= mujoco.mjtEnableBit.mjENBL_ENERGY
+    hy = hybrid(None)
+    dt = model.opt.timestep
+    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
+    for k in range(round(drive_time / dt)):
+        data.ctrl[:] = min(1.0, k * dt / 0.5) * (H @ nu_cmd)
+        mujoco.mj_step(model, data)
+    set_actuation_mode(model, ActuationMode.TORQUE)
+    data.ctrl[:] = 0.0
+    mujoco.mj_forward(model, data)
+    energy0 = float(data.energy[0] + data.energy[1])
+    wheel_of = {model.body(w).id: i for i, w in enumerate(WHEELS)}
+    floor = model.geom("floor").id
+    work = {"single normal": 0.0, "single tangential": 0.0, "overlap normal": 0.0,
+            "overlap tangential": 0.0}
+    contact_floor = int(mujoco.mjtConstraint.mjCNSTR_CONTACT_FRICTIONLESS)
+    for _ in range(round(duration / dt)):
+        q0 = data.qvel.copy()
+        mujoco.mj_step(model, data)
+        jv = np.zeros(data.nefc)
+        mujoco.mj_mulJacVec(model, data, jv, 0.5 * (q0 + data.qvel))
+        wheel = np.full(data.ncon, -1)
+        for ci, c in enumerate(data.contact[:data.ncon]):
+            geom = c.geom2 if c.geom1 == floor else c.geom1
+            wheel[ci] = wheel_of.get(int(model.body_parentid[model.geom_bodyid[geom]]), -1)
+        per_wheel = np.bincount(wheel[wheel >= 0], minlength=3)
+        for j in range(data.nefc):
+            ci = int(data.efc_id[j])
+            if data.efc_type[j] < contact_floor or ci >= data.ncon or wheel[ci] < 0:
+                continue
+            normal = j == 0 or data.efc_id[j - 1] != ci or data.efc_type[j - 1] < contact_floor
+            key = ("overlap " if per_wheel[wheel[ci]] >= 2 else "single ") + (
+                "normal" if normal else "tangential")
+            work[key] += float(data.efc_force[j] * jv[j]) * dt
+    check_healthy(model, data)
+    mujoco.mj_forward(model, data)
+    change = float(data.energy[0] + data.energy[1]) - energy0
+    total = sum(work.values())
+    out = [Metric(f"contact work, {k}, per second", v / duration, "W") for k, v in work.items()]
+    out += [Metric("contact work, total, per second", total / duration, "W"),
+            Metric("mechanical energy change per second", change / duration, "W"),
+            Metric("closure: |work − change| / |change|",
+                   abs(total - change) / max(abs(change), 1e-12), "")]
+    return out
+
+
+def budget_table(budgets: dict[str, list[Metric]]) -> str:
+    """Markdown table of budgets by label."""
+    lines = ["| coast | metric | value | unit |", "|---|---|---|---|"]
+    for label, rows in budgets.items():
+        lines += [f"| {label} | {m.name.replace('|', chr(92) + '|')} | {m.value:.4g} | "
+                  f"{m.unit} |" for m in rows]
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about a minute
+    """Run the budgets and omni3's dynamic scenarios; print and paste the tables."""
+    from wmr_mujoco.robots import get_spec
+    from wmr_mujoco.validation.report import markdown_table
+    from wmr_mujoco.validation.runner import run_all
+    from wmr_mujoco.validation.scenarios import ScenarioKind
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--no-write", action="store_true", help="print only")
+    args = parser.parse_args(argv)
+    budgets = {"(0.3, 0, 1), default contacts": coast_energy_budget(),
+               "(0.3, 0, 1), solref 1 ms": coast_energy_budget(contact_timeconst=0.001,
+                                                               duration=2.0),
+               "(0.3, 0, 0), default contacts": coast_energy_budget((0.3, 0.0, 0.0))}
+    scenarios = [s for s in get_spec("omni3").scenarios if s.kind is ScenarioKind.MEASUREMENT]
+    results_md = markdown_table(run_all(scenarios))
+    budget_md = budget_table(budgets)
+    print(results_md, "", budget_md, sep="\n")
+    if not args.no_write:
+        replace_between(DOC, "omni dynamics: results", results_md)
+        replace_between(DOC, "omni dynamics: energy budget", budget_md)
+        print(f"wrote {DOC}")
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main()

@@ -1,0 +1,254 @@
+"""omni3's dynamic runs: the physics and the hybrid model on the same inputs, all at once.
+
+Every dynamic scenario of omni3 (step commands, torque inputs, coasting) is one
+:class:`RunSpec`. :func:`dynamic_runs` simulates all of them together: the physics in two
+batched, threaded ``mujoco.rollout`` calls (one per actuation mode, each from its own
+settled start) plus one for the coasts, and the hybrid model
+(:func:`~wmr_mujoco.analytic.omni_hybrid.simulate_batch`) in one vectorised integration of
+every run. The result is cached per parameter set, so the scenarios that read it share
+one simulation.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic import omni_hybrid as oh
+from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
+from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.sim.engine import STATE_SPEC, simulate, simulate_batch
+from wmr_mujoco.sim.stepping import check_healthy
+from wmr_mujoco.validation.omni_wheels import drive_from_model, hybrid_from_model, roller_rates
+
+#: omni3's wheel hinges (and their actuators), in layout order.
+WHEELS = ("wheel1", "wheel2", "wheel3")
+#: The body the platform's yaw inertia is taken about.
+CENTRE_BODY = "platform"
+#: Seconds at rest before a run (as the runner's scenarios).
+SETTLE = 0.5
+#: RK4 substeps of the hybrid model per simulation step (2 ms at the 4 ms step). The rate
+#: servo is stiff (k_v / I_w ≈ 480 /s): the worst step-command figure moves from 0.27 % of
+#: path at 2 ms to 0.15 % at 1 ms and 0.09 % at 0.5 ms (other directions by ±0.03 %), the
+#: torque and coasting figures by under 0.02 and 1 point; 2 ms keeps `wmr validate` fast.
+SUBSTEPS = 2
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    """One dynamic run.
+
+    Attributes:
+        name: label (unique).
+        mode: actuation during the judged phase (rate servo or torque).
+        command: constant wheel rates (rad/s, rate mode) or torques (N·m), held from rest
+            (a step: no ramp).
+        duration: judged phase, s.
+        lead_in: body twist driven (rate servo, 0.5 s linear ramp) for ``lead_time``
+            before the judged phase (a coast's drive), or None: the run starts at rest.
+        lead_time: s.
+    """
+
+    name: str
+    mode: ActuationMode
+    command: tuple[float, float, float]
+    duration: float
+    lead_in: tuple[float, float, float] | None = None
+    lead_time: float = 0.0
+
+    def __post_init__(self) -> None:
+        for label, vec in (("command", self.command), ("lead_in", self.lead_in or (0,) * 3)):
+            arr = np.asarray(vec, float)
+            if arr.shape != (3,) or not np.all(np.isfinite(arr)):
+                raise ValueError(f"{self.name}: {label} = {vec!r}; needs 3 finite numbers")
+        for label, value, low in (("duration", self.duration, 0.0),
+                                  ("lead_time", self.lead_time, -1.0)):
+            if not (math.isfinite(value) and low < value <= 30.0):
+                raise ValueError(f"{self.name}: {label} = {value!r} s; valid range is "
+                                 f"({max(low, 0.0):g}, 30] s")
+
+
+@dataclass(frozen=True)
+class Run:
+    """One run through the physics and the hybrid model, from the same measured start.
+
+    Attributes:
+        spec: the run.
+        t: (N + 1,) times from the start of the judged phase, s.
+        pose: (N + 1, 3) physics pose in the start frame (X, Y, ψ), ψ unwrapped.
+        twist: (N + 1, 3) physics body twist (u, v, r).
+        wheel_angles, wheel_rates: (N + 1, 3) physics wheel hinges.
+        hybrid: the hybrid model's run.
+        dt: simulation step, s.
+    """
+
+    spec: RunSpec
+    t: np.ndarray
+    pose: np.ndarray
+    twist: np.ndarray
+    wheel_angles: np.ndarray
+    wheel_rates: np.ndarray
+    hybrid: oh.HybridRun
+    dt: float
+
+
+def settled(mode: ActuationMode, params: OmniParams | None = None
+            ) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    """omni3 in ``mode``, settled at rest on the floor for :data:`SETTLE` s."""
+    from wmr_mujoco.models.loading import load  # the registry imports this module
+
+    model = load("omni3", params)
+    set_actuation_mode(model, mode)
+    data = mujoco.MjData(model)
+    for _ in range(round(SETTLE / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+    check_healthy(model, data)
+    mujoco.mj_forward(model, data)
+    return model, data
+
+
+def base_states(model: mujoco.MjModel, states: np.ndarray
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """World pose, body twist, wheel angles and rates from full-physics states (N, ·).
+
+    The ``base`` site is the platform's origin (checked): with the free joint's
+    ``(p, q)`` and ``(v_world, ω_body)``, ``ψ = atan2(R₁₀, R₀₀)`` and
+    ``(u, v) = (Rᵀ v_world)_xy``, ``r = ω_body,z`` (what ``mj_objectVelocity`` gives).
+    """
+    site = model.site("base").id
+    if model.site_bodyid[site] != 1 or np.any(model.site_pos[site]) or not np.allclose(
+            model.site_quat[site], [1, 0, 0, 0]):
+        raise ValueError("the base site is not the free body's origin")
+    nq = model.nq
+    qpos, qvel = states[:, 1:1 + nq], states[:, 1 + nq:1 + nq + model.nv]
+    w, x, y, z = qpos[:, 3], qpos[:, 4], qpos[:, 5], qpos[:, 6]
+    r00, r10, r20 = 1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)
+    r01, r11, r21 = 2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)
+    vw = qvel[:, :3]
+    u = r00 * vw[:, 0] + r10 * vw[:, 1] + r20 * vw[:, 2]
+    v = r01 * vw[:, 0] + r11 * vw[:, 1] + r21 * vw[:, 2]
+    pose = np.column_stack([qpos[:, 0], qpos[:, 1], np.arctan2(r10, r00)])
+    twist = np.column_stack([u, v, qvel[:, 5]])
+    jq = [model.jnt_qposadr[model.joint(wh).id] for wh in WHEELS]
+    jv = [model.jnt_dofadr[model.joint(wh).id] for wh in WHEELS]
+    return pose, twist, qpos[:, jq], qvel[:, jv]
+
+
+def relative(pose: np.ndarray, start: np.ndarray) -> np.ndarray:
+    """Pose in the start frame (every model starts at the origin, heading 0), ψ unwrapped."""
+    d = pose[:, :2] - start[:2]
+    c, s = math.cos(start[2]), math.sin(start[2])
+    heading = np.unwrap(np.angle(np.exp(1j * (pose[:, 2] - start[2]))))
+    return np.column_stack([c * d[:, 0] + s * d[:, 1], -s * d[:, 0] + c * d[:, 1], heading])
+
+
+def _ramp(twist: Sequence[float], hy: oh.OmniHybrid, n: int, dt: float) -> np.ndarray:
+    """Wheel rates ``H ν · min(1, t / 0.5 s)`` over n steps."""
+    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
+    return np.clip(np.arange(n) * dt / 0.5, 0.0, 1.0)[:, None] * (H @ np.asarray(twist))
+
+
+def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None
+                  ) -> dict[str, Run]:
+    """Every run through the physics (batched rollouts) and the hybrid model (one batch).
+
+    Raises:
+        ValueError: duplicate names, or a command beyond the actuators' range.
+        SimulationDivergedError: the physics diverged.
+        FloatingPointError: the hybrid model diverged.
+    """
+    names = [s.name for s in specs]
+    if len(set(names)) != len(names):
+        raise ValueError(f"run names must be unique: {names}")
+    models = {m: settled(m, params) for m in ActuationMode}
+    hy = _read(models[ActuationMode.TORQUE][0], params)
+    dt = models[ActuationMode.TORQUE][0].opt.timestep
+    starts: dict[str, np.ndarray] = {}
+    states: dict[str, np.ndarray] = {}
+    # 1. Lead-ins (rate servo) and step commands from the settled rate-mode start.
+    rate_model, _rate_data = models[ActuationMode.RATE]
+    limit = float(rate_model.actuator(WHEELS[0]).ctrlrange[1])
+    groups: dict[ActuationMode, list[tuple[str, np.ndarray]]] = {m: [] for m in ActuationMode}
+    for s in specs:
+        n = round(s.duration / dt)
+        if s.mode is ActuationMode.RATE and np.any(np.abs(s.command) > limit):
+            raise ValueError(f"{s.name}: wheel rates {s.command} beyond the rate limit "
+                             f"±{limit:g} rad/s")
+        if s.lead_in is not None:
+            groups[ActuationMode.RATE].append(
+                (f"lead-in {s.name}", _ramp(s.lead_in, hy, round(s.lead_time / dt), dt)))
+        else:
+            groups[s.mode].append((s.name, np.tile(np.asarray(s.command, float), (n, 1))))
+    for mode, members in groups.items():
+        if members:
+            model, data = models[mode]
+            for (name, _), traj in zip(members, simulate_batch(
+                    model, data, [c for _, c in members]), strict=True):
+                states[name] = traj
+    # 2. Runs after a lead-in, from its end state, in their own mode.
+    for s in specs:
+        if s.lead_in is not None:
+            model, data = models[s.mode]
+            data = mujoco.MjData(model)
+            mujoco.mj_setState(model, data, states.pop(f"lead-in {s.name}")[-1], STATE_SPEC)
+            mujoco.mj_forward(model, data)
+            states[s.name] = simulate(model, data, np.tile(np.asarray(s.command, float),
+                                                           (round(s.duration / dt), 1)))
+    model = models[ActuationMode.TORQUE][0]
+    phys = {}
+    for s in specs:
+        pose, twist, th, rates = base_states(model, states[s.name])
+        phys[s.name] = (relative(pose, pose[0]), twist, th, rates)
+        starts[s.name] = states[s.name][0]
+    # 3. The hybrid model, every run in one batch from the measured starts.
+    nmax = max(len(states[s.name]) - 1 for s in specs)
+    inputs = np.zeros((len(specs), nmax, 3))
+    for b, s in enumerate(specs):
+        inputs[b] = np.asarray(s.command, float)
+    drives = [drive_from_model(models[s.mode][0], WHEELS[0], s.mode) for s in specs]
+    runs = oh.simulate_batch(
+        hy, drives, inputs, dt, np.zeros((len(specs), 3)),
+        np.array([phys[s.name][1][0] for s in specs]),
+        np.array([phys[s.name][2][0] for s in specs]),
+        np.array([roller_rates(model, starts[s.name][1 + model.nq:], WHEELS)
+                  for s in specs]), substeps=SUBSTEPS)
+    out = {}
+    for s, run in zip(specs, runs, strict=True):
+        pose, twist, th, rates = phys[s.name]
+        n = len(pose)
+        cut = oh.HybridRun(run.t[:n], run.pose[:n], run.twist[:n], run.thetas[:n],
+                           run.torques[:n], [w for w in run.switches if w[0] <= run.t[n - 1]])
+        out[s.name] = Run(s, cut.t, pose, twist, th, rates, cut, dt)
+    return out
+
+
+@functools.lru_cache(maxsize=4)
+def cached_runs(specs: tuple[RunSpec, ...], params: OmniParams | None = None
+                ) -> dict[str, Run]:
+    """:func:`simulate_runs`, once per (specs, params): the scenarios share it."""
+    return simulate_runs(specs, params)
+
+
+def hybrid(params: OmniParams | None = None) -> oh.OmniHybrid:
+    """The hybrid model of omni3 (default: the checked-in model)."""
+    return _hybrid(params)
+
+
+@functools.lru_cache(maxsize=4)
+def _hybrid(params: OmniParams | None) -> oh.OmniHybrid:
+    from wmr_mujoco.models.loading import load  # the registry imports this module
+
+    return _read(load("omni3", params), params)
+
+
+def _read(model: mujoco.MjModel, params: OmniParams | None) -> oh.OmniHybrid:
+    """:func:`~wmr_mujoco.validation.omni_wheels.hybrid_from_model` of omni3."""
+    p = params or OmniParams()
+    return hybrid_from_model(model, ok.symmetric_layout(p.wheel_radius, p.wheel_distance),
+                             CENTRE_BODY, WHEELS)

@@ -1,0 +1,68 @@
+"""omni3's step commands and torque inputs: physics against the predicting models."""
+
+import math
+
+import numpy as np
+import pytest
+
+from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.robots import omni3
+from wmr_mujoco.robots.omni3 import dynamics as dy
+from wmr_mujoco.robots.omni3.runs import RunSpec
+
+
+def _metrics(name, evaluate):
+    res = evaluate(omni3.SPEC.scenario(name), None)
+    return {m.name: m for m in res.metrics}, res.series
+
+
+def test_step_command_hybrid_beats_kinematics():
+    """Step to 0.3 m/s along x: the servo saturates at its torque limit, so the kinematic
+    prediction runs ahead; the hybrid model with the servo law meets issue 16's 0.3 % of
+    path and 0.2°, and is at least three times closer than the kinematics."""
+    m, series = _metrics("step 0°", dy.evaluate_step)
+    hybrid = m["hybrid: worst position error"]
+    assert hybrid.target is dy.STEP_PATH and hybrid.value <= 0.3
+    assert m["hybrid: worst heading error"].value <= 0.2
+    assert m["kinematic: worst position error"].value > 3 * hybrid.value
+    assert {s.label for s in series} >= {"physics", "kinematic", "hybrid"}
+
+
+def test_torque_rows_judged_or_open_as_declared():
+    """Along x: u is an open target (shown, not judged), v and r are judged and pass (no
+    yaw: the push is symmetric); the old single-instant figure is reported only."""
+    m, _ = _metrics("torque along x", dy.evaluate_torque)
+    assert m["hybrid: worst u error"].target.kind == "open"
+    for c in "vr":
+        row = m[f"hybrid: worst {c} error"]
+        assert row.target.kind == "requirement" and row.value <= row.target.value
+    assert m["Lagrange: |Δν| / |ν| at the last instant"].target is None
+    assert m["Lagrange: worst u error"].target is None
+
+
+def test_kinematic_pose_of_a_steady_turn_is_a_circle():
+    """Constant (u, 0, r): the exact path is the arc (ρ sin rt, ρ (1 − cos rt), rt) with
+    ρ = u/r; the midpoint rule's error over 2 s at 4 ms is ~ρ (r Δt)² t / 24 < 1e-6 m."""
+    dt, n, u, r = 0.004, 500, 0.3, 1.0
+    pose = dy.kinematic_pose(np.tile([u, 0.0, r], (n + 1, 1)), dt)
+    t = np.arange(n + 1) * dt
+    exact = np.column_stack([u / r * np.sin(r * t), u / r * (1 - np.cos(r * t)), r * t])
+    np.testing.assert_allclose(pose, exact, atol=1e-6)
+
+
+def test_path_of_a_pure_rotation_is_the_wheel_arc():
+    """Turning in place through ψ: the path is L ψ (the arc of the wheel centres)."""
+    pose = np.column_stack([np.zeros(11), np.zeros(11), np.linspace(0.0, 2.0, 11)])
+    assert dy.path_length(pose, 0.15) == pytest.approx(0.3)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"command": (0.3, math.nan, 0.0)}, "command"),
+    ({"duration": -1.0}, "duration"),
+    ({"lead_in": (math.inf, 0.0, 0.0)}, "lead_in"),
+])
+def test_bad_run_is_rejected(kwargs, match):
+    args = {"name": "x", "mode": ActuationMode.RATE, "command": (1.0, 1.0, 1.0),
+            "duration": 1.0, **kwargs}
+    with pytest.raises(ValueError, match=match):
+        RunSpec(**args)
