@@ -50,6 +50,7 @@ def test_scaling_reports_threads_beside_processes():
     assert set(res) == {"disc", "bicycle"}
     for figures in res.values():
         assert figures["threads"] == 2 and figures["nbatch"] % 2 == 0
-        # Both ratios are at most N = 2 for work that shares nothing; a single round can
-        # overshoot by the machine's noise (tens of %), not by 50 %.
-        assert 0 < figures["rollout_speedup"] < 3 and 0 < figures["process_ceiling"] < 3
+        # Ratios of two timings: positive and finite. Their size is the machine's (and its
+        # load's), so it is reported by the bench, never asserted in a test.
+        for key in ("rollout_speedup", "process_ceiling"):
+            assert np.isfinite(figures[key]) and figures[key] > 0
