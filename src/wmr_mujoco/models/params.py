@@ -310,6 +310,11 @@ class FreeDiscParams(DiscParams):
         "mount_mass", "sim.timestep",
         *(f"drive.{f.name}" for f in fields(DriveParams)))
 
+    @property
+    def total_mass(self) -> float:
+        """Mass of everything that moves: the disc alone (no mount)."""
+        return self.wheel.mass
+
 
 @dataclass(frozen=True)
 class BicycleParams:
