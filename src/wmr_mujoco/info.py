@@ -109,8 +109,10 @@ def describe(robot: str) -> str:
         target = _name(model, objtype, model.actuator_trnid[a, 0])
         lo, hi = model.actuator_ctrlrange[a]
         flo, fhi = model.actuator_forcerange[a]
+        torque = (f"torque [{flo:g}, {fhi:g}] N·m" if model.actuator_forcelimited[a]
+                  else "torque unlimited")
         lines.append(f"  {_name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, a):<22} {trn} {target:<18}"
-                     f" ctrl [{lo:g}, {hi:g}]  torque [{flo:g}, {fhi:g}] N·m")
+                     f" ctrl [{lo:g}, {hi:g}]  {torque}")
     if model.nkey:
         keys = ", ".join(_name(model, mujoco.mjtObj.mjOBJ_KEY, k) for k in range(model.nkey))
         lines.append(f"keyframes: {keys}")

@@ -24,7 +24,7 @@ def test_defaults_are_table_1():
     ("rear_frame_inertia", (9.2, 11.0, 2.8, 6.0), "positive definite"),  # xz > sqrt(xx zz)
     ("front_inertia", (0.1405, -0.28), "front_inertia"),
     ("rear_inertia", (0.01, 0.12), "A + B >= C"),  # not a real body: 0.02 < 0.12
-    ("head_angle", math.pi / 2, "(-pi/2, pi/2)"),
+    ("head_angle", math.pi / 2, "(-1.5708, 1.5708)"),  # ±π/2, open
     ("head_angle", -2.0, "head_angle"),
     ("rear_radius", 0.7, "overlap"),  # 0.7 + 0.35 > 1.02
     ("rear_frame_com", (0.3, 0.2), "above the floor"),

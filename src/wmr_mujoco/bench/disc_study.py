@@ -27,7 +27,7 @@ import numpy as np
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.models.builders import common
 from wmr_mujoco.models.loading import build_scene
-from wmr_mujoco.models.params import DiscParams
+from wmr_mujoco.models.params import DiscParams, FreeDiscParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import disc, disc_free
 from wmr_mujoco.robots.disc_free import measurements as ms
@@ -89,7 +89,7 @@ class Setting:
 
     def model(self, params: DiscParams | None = None) -> mujoco.MjModel:
         """The free disc and floor compiled under this setting (``params`` None: defaults)."""
-        params = DiscParams() if params is None else params
+        params = FreeDiscParams() if params is None else params
         p = replace(params, free_integrator=self.integrator, free_timestep=self.timestep,
                     free_rim=self.rim,
                     sim=replace(params.sim, contact_timeconst=self.contact_timeconst,

@@ -23,47 +23,82 @@ def _is_number(value: object) -> bool:
 
 
 def _check_range(obj: Any, name: str, low: float, high: float = math.inf,
-                 low_inclusive: bool = False) -> None:
-    """Raise ``ValueError`` unless ``low < obj.name <= high`` (``low <=`` if inclusive).
+                 low_inclusive: bool = False, high_inclusive: bool = True) -> None:
+    """Raise ``ValueError`` unless ``low < obj.name <= high`` (bounds as the flags say).
 
     A value that is not a number (a string, None, a bool) is refused the same way.
     """
     value = getattr(obj, name)
     ok = _is_number(value) and math.isfinite(value)
     if ok:
-        ok = (value >= low if low_inclusive else value > low) and value <= high
+        ok = ((value >= low if low_inclusive else value > low)
+              and (value <= high if high_inclusive else value < high))
     if not ok:
         bracket = "[" if low_inclusive else "("
-        high_txt = "inf)" if math.isinf(high) else f"{high:g}]"
+        close = "]" if high_inclusive and not math.isinf(high) else ")"
+        high_txt = "inf" if math.isinf(high) else f"{high:g}"
         raise ValueError(
             f"{type(obj).__name__}.{name} = {value!r} is not physical; "
-            f"valid range is {bracket}{low:g}, {high_txt}"
+            f"valid range is {bracket}{low:g}, {high_txt}{close}"
         )
+
+
+def _check_count(obj: Any, name: str, low: int, high: int) -> None:
+    """Raise ``ValueError`` unless ``obj.name`` is an integer in ``[low, high]``."""
+    value = getattr(obj, name)
+    if not (isinstance(value, int) and not isinstance(value, bool) and low <= value <= high):
+        raise ValueError(f"{type(obj).__name__}.{name} = {value!r}; valid range is "
+                         f"integers [{low}, {high}]")
+
+
+def _check_choice(obj: Any, name: str, choices: tuple[str, ...]) -> None:
+    """Raise ``ValueError`` unless ``obj.name`` is one of ``choices``."""
+    value = getattr(obj, name)
+    if value not in choices:
+        raise ValueError(f"{type(obj).__name__}.{name} = {value!r}; valid values are "
+                         f"{', '.join(choices)}")
 
 
 #: Field annotations (as strings: ``from __future__ import annotations``) of numbers.
 _NUMBER_TYPES = ("float", "int")
+#: Annotations of tuples of numbers, with their lengths.
+_TUPLE_TYPES = {"tuple[float, float]": 2, "tuple[float, float, float]": 3,
+                "tuple[float, float, float, float]": 4}
+
+
+def _type_error(obj: Any, name: str, annotation: str, default: object) -> str | None:
+    """Why ``obj.name`` does not fit its annotation, or None if it does."""
+    value = getattr(obj, name)
+    if annotation == "int" and not (isinstance(value, int) and not isinstance(value, bool)):
+        return "is not an integer; give an integer"
+    if annotation == "float" and not _is_number(value):
+        return "is not a number; give a number (SI units)"
+    if annotation in _TUPLE_TYPES:
+        n = _TUPLE_TYPES[annotation]
+        if not (isinstance(value, tuple) and len(value) == n
+                and all(_is_number(v) and math.isfinite(v) for v in value)):
+            return f"is not {n} finite numbers; give a tuple of {n} numbers (SI units)"
+    if annotation == "str" and not isinstance(value, str):
+        return "is not a string; give a string"
+    if annotation == "bool" and not isinstance(value, bool):
+        return "is not True or False; give a bool"
+    if is_dataclass(default) and not isinstance(value, type(default)):
+        return f"is not a {type(default).__name__}; give a {type(default).__name__}"
+    return None
 
 
 def _check_types(obj: Any) -> None:
     """Raise ``ValueError`` for a field of the wrong type, before any arithmetic on it.
 
-    Number fields (annotated ``float``/``int``) must hold numbers; a field whose default
-    is a parameter dataclass must hold an instance of that dataclass; a ``str`` field a
-    string.
+    Number fields (annotated ``float``/``int``) must hold numbers (``int`` fields
+    integers); tuple fields a tuple of that many finite numbers; a field whose default is
+    a parameter dataclass an instance of that dataclass; ``str``/``bool`` fields a string
+    or a bool. The message names the class, the field and the value.
     """
     for f in fields(obj):
-        value = getattr(obj, f.name)
-        default = f.default
-        if str(f.type) in _NUMBER_TYPES and not _is_number(value):
-            raise ValueError(f"{type(obj).__name__}.{f.name} = {value!r} is not a number; "
-                             f"give {'an integer' if str(f.type) == 'int' else 'a number'} "
-                             "(SI units)")
-        if is_dataclass(default) and not isinstance(value, type(default)):
-            raise ValueError(f"{type(obj).__name__}.{f.name} = {value!r}; give a "
-                             f"{type(default).__name__}")
-        if str(f.type) == "str" and not isinstance(value, str):
-            raise ValueError(f"{type(obj).__name__}.{f.name} = {value!r}; give a string")
+        why = _type_error(obj, f.name, str(f.type), f.default)
+        if why is not None:
+            raise ValueError(f"{type(obj).__name__}.{f.name} = {getattr(obj, f.name)!r} {why}")
 
 
 def _check_positive_fields(obj: Any, exclude: tuple[str, ...] = ()) -> None:
@@ -194,6 +229,7 @@ class SimParams:
     friction: float = 1.0
 
     def __post_init__(self) -> None:
+        _check_types(self)
         _check_range(self, "timestep", 0.0, 0.02)
         _check_range(self, "contact_timeconst", 0.0, 0.1)
         _check_range(self, "impratio", 1.0, 1000.0, low_inclusive=True)
@@ -220,11 +256,17 @@ class DiscParams:
             ``"implicit"``, ``"implicitfast"`` or ``"Euler"``. ``implicitfast`` (and
             ``implicit``, identical here) miss steady precession by an error proportional to
             the timestep; RK4 does not (study table in ``models/disc/README.md``).
-        free_timestep: timestep of the free disc, s.
-        free_rim: half-thickness of the free disc's collision ellipsoid ``(R, rim, R)``, m.
-            A thin rim makes a leaning disc touch where a thin disc would; the wheel's
-            full half-width puts a leaning disc's contact off the thin-disc point and
-            misses steady precession by more than its target (study table).
+        free_timestep: timestep of the free disc, s, in (0, 0.02] like
+            :attr:`SimParams.timestep`.
+        free_rim: half-thickness of the free disc's collision ellipsoid ``(R, rim, R)``, m,
+            in (0, w/2]: physically bounded by the wheel, whose half-width ``w/2`` is the
+            thickest rim it has. A thin rim makes a leaning disc touch where a thin disc
+            would; the wheel's full half-width puts a leaning disc's contact off the
+            thin-disc point and misses steady precession by more than its target (study
+            table).
+
+    The mounted disc (``disc``) ignores the ``free_*`` fields; the free disc
+    (``disc_free``, :class:`FreeDiscParams`) ignores the mount and its actuators.
 
     """
 
@@ -237,22 +279,41 @@ class DiscParams:
     free_timestep: float = 0.004
     free_rim: float = 0.002
 
-    #: Fields the model does not use (the mount steers through any angle): ``wmr info``
-    #: leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_angle_limit",)
+    #: Fields the model does not use (the mount steers through any angle; the free disc's
+    #: settings belong to ``disc_free``): ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_angle_limit", "free_integrator",
+                                         "free_timestep", "free_rim")
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
         _check_range(self, "free_timestep", 0.0, 0.02)
         _check_range(self, "free_rim", 0.0, 0.5 * self.wheel.width)
-        if self.free_integrator not in FREE_INTEGRATORS:
-            raise ValueError(f"DiscParams.free_integrator = {self.free_integrator!r}; "
-                             f"valid values are {FREE_INTEGRATORS}")
+        _check_choice(self, "free_integrator", FREE_INTEGRATORS)
 
     @property
     def total_mass(self) -> float:
         """Mass of everything that moves: mount plus disc."""
         return self.mount_mass + self.wheel.mass
+
+
+@dataclass(frozen=True)
+class FreeDiscParams(DiscParams):
+    """The same disc on a free joint (``disc_free``): no mount, no actuators.
+
+    Its fields are :class:`DiscParams`'s (one disc, one set of numbers); the free disc
+    uses the wheel, the contact settings of ``sim`` and the ``free_*`` fields, and its
+    own timestep ``free_timestep`` in place of ``sim.timestep``.
+    """
+
+    #: Fields the free disc's model does not use: ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = (
+        "mount_mass", "sim.timestep",
+        *(f"drive.{f.name}" for f in fields(DriveParams)))
+
+    @property
+    def total_mass(self) -> float:
+        """Mass of everything that moves: the disc alone (no mount)."""
+        return self.wheel.mass
 
 
 @dataclass(frozen=True)
@@ -354,11 +415,7 @@ class TricycleParams:
                 f"({min_track:g}, {max_track:g}] (wider than a rear wheel, at most twice "
                 f"the wheelbase)"
             )
-        if self.rear_drive not in self.REAR_DRIVES:
-            raise ValueError(
-                f"TricycleParams.rear_drive = {self.rear_drive!r}; valid values are "
-                f"{', '.join(self.REAR_DRIVES)}"
-            )
+        _check_choice(self, "rear_drive", self.REAR_DRIVES)
 
     @property
     def total_mass(self) -> float:
@@ -431,12 +488,8 @@ class OmniParams:
         _check_range(self, "roller_thickness", 0.05, 0.8)
         _check_range(self, "roller_overlap", 0.0, 1.0, low_inclusive=True)
         _check_range(self, "row_offset_ratio", 0.0, 3.0, low_inclusive=True)
-        if not isinstance(self.rollers_per_row, int) or not 2 <= self.rollers_per_row <= 20:
-            raise ValueError(f"OmniParams.rollers_per_row = {self.rollers_per_row!r}; valid "
-                             f"range is integers [2, 20]")
-        if self.roller_shape not in self.ROLLER_SHAPES:
-            raise ValueError(f"OmniParams.roller_shape = {self.roller_shape!r}; valid values "
-                             f"are {', '.join(self.ROLLER_SHAPES)}")
+        _check_count(self, "rollers_per_row", 2, 20)
+        _check_choice(self, "roller_shape", self.ROLLER_SHAPES)
         max_r = self.wheel_distance * 0.9
         if self.wheel_radius >= max_r:
             raise ValueError(f"OmniParams.wheel_radius = {self.wheel_radius!r} is too large for "

@@ -8,8 +8,19 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import ClassVar
 
-from wmr_mujoco.models.params import DriveParams, SimParams, _check_positive_fields, _check_range
+from wmr_mujoco.models.params import (
+    MAX_WHEEL_MASS,
+    MAX_WHEEL_RADIUS,
+    DriveParams,
+    SimParams,
+    _check_choice,
+    _check_count,
+    _check_positive_fields,
+    _check_range,
+    _check_types,
+)
 
 
 @dataclass(frozen=True)
@@ -43,6 +54,20 @@ class MecanumParams:
         roller_damping: viscous damping of each roller joint, N·m·s/rad.
         drive: actuator settings (no steering).
         sim: simulation settings.
+
+    Bounds, physical: ``wheel_radius`` at most
+    :data:`~wmr_mujoco.models.params.MAX_WHEEL_RADIUS` = 2.5 m and ``hub_mass`` at most
+    :data:`~wmr_mujoco.models.params.MAX_WHEEL_MASS` = 1e4 kg (the largest wheels built);
+    ``roller_mass`` at most ``hub_mass`` (a roller is a small part of its wheel);
+    ``roller_angle`` in [π/12, 5π/12] (at 0 the rollers lock, at π/2 the wheel cannot
+    drive along x); ``roller_thickness`` in (0.02, 0.5] (a roller's half-thickness b is
+    inside the wheel, b ≤ R/2); ``roller_overlap`` in [0, 1] and a half-span below 60°
+    (a longer roller would reach past the wheel's side); ``rollers_per_wheel`` integers
+    [6, 24] (the sizes made); ``half_length`` above 1.05 R (the wheels do not touch fore
+    and aft); ``half_track`` above the contact track's half-width plus 0.01 m (the wheels
+    clear the chassis centre); ``roller_armature`` in [0, 1e-3] kg·m² and
+    ``roller_damping`` in [0, 1e-2] N·m·s/rad (a free roller: far above a roller's own
+    inertia they would lock it). The chassis mass has no upper bound of its own.
     """
 
     wheel_radius: float = 0.05
@@ -63,8 +88,16 @@ class MecanumParams:
     sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
+    #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_kp", "drive.steer_kv",
+                                         "drive.steer_torque_limit",
+                                         "drive.steer_rate_limit",
+                                         "drive.steer_angle_limit")
 
     def __post_init__(self) -> None:
+        _check_types(self)  # before any range: a message that names the wrong type
+        _check_range(self, "wheel_radius", 0.0, MAX_WHEEL_RADIUS)
+        _check_range(self, "hub_mass", 0.0, MAX_WHEEL_MASS)
         _check_positive_fields(self, exclude=("roller_armature", "roller_damping",
                                               "rollers_per_wheel", "roller_overlap"))
         _check_range(self, "roller_armature", 0.0, 1e-3, low_inclusive=True)
@@ -73,12 +106,9 @@ class MecanumParams:
                      low_inclusive=True)
         _check_range(self, "roller_thickness", 0.02, 0.5)
         _check_range(self, "roller_overlap", 0.0, 1.0, low_inclusive=True)
-        if not isinstance(self.rollers_per_wheel, int) or not 6 <= self.rollers_per_wheel <= 24:
-            raise ValueError(f"MecanumParams.rollers_per_wheel = {self.rollers_per_wheel!r}; "
-                             f"valid range is integers [6, 24]")
-        if self.roller_shape not in self.ROLLER_SHAPES:
-            raise ValueError(f"MecanumParams.roller_shape = {self.roller_shape!r}; valid "
-                             f"values are {', '.join(self.ROLLER_SHAPES)}")
+        _check_range(self, "roller_mass", 0.0, self.hub_mass)
+        _check_count(self, "rollers_per_wheel", 6, 24)
+        _check_choice(self, "roller_shape", self.ROLLER_SHAPES)
         if self.roller_half_span >= math.pi / 3.0:
             raise ValueError(f"MecanumParams.roller_overlap = {self.roller_overlap!r} gives a "
                              f"roller half-span of {math.degrees(self.roller_half_span):.1f}°; "

@@ -17,7 +17,9 @@ Rolling without slip on the floor, a ball pushed at its centre by force F accele
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from typing import ClassVar
 
 from wmr_mujoco.models.params import (
     DriveParams,
@@ -26,6 +28,25 @@ from wmr_mujoco.models.params import (
     _check_positive_fields,
     _check_range,
 )
+
+#: Densest engineering metal a caster ball could be made of (tungsten), kg/m³.
+MAX_BALL_DENSITY = 2.0e4
+#: Largest chassis plate edge, m: a modelling bound, ten times the default robots' size.
+MAX_CHASSIS_EDGE = 5.0
+#: Largest distance of a wheel or caster from the chassis origin, m (modelling bound,
+#: the reach of a 4 m long platform, as :data:`MAX_CHASSIS_EDGE`).
+MAX_REACH = 2.0
+#: Steering fields of :class:`~wmr_mujoco.models.params.DriveParams` (no steering).
+_STEERING = ("drive.steer_kp", "drive.steer_kv", "drive.steer_torque_limit",
+             "drive.steer_rate_limit", "drive.steer_angle_limit")
+
+
+def _check_chassis_size(obj: object) -> None:
+    """Each edge of ``obj.chassis_size`` in (0, :data:`MAX_CHASSIS_EDGE`] m."""
+    size = obj.chassis_size  # type: ignore[attr-defined]
+    if not all(0.0 < s <= MAX_CHASSIS_EDGE for s in size):
+        raise ValueError(f"{type(obj).__name__}.chassis_size = {size!r} is not physical; "
+                         f"valid range of each edge is (0, {MAX_CHASSIS_EDGE:g}] m")
 
 #: Wheel, fork and drive shared by the three robots (the tricycle's proven sizes).
 _WHEEL = WheelParams(radius=0.08, width=0.03, mass=0.4)
@@ -39,8 +60,10 @@ class BallCasterParams:
     """A passive ball caster: a sphere in a socket on the chassis.
 
     Attributes:
-        radius: ball radius r_c.
-        mass: ball mass m_c.
+        radius: ball radius r_c, in [0.002, 0.2] m: the sizes ball transfer units are
+            made in (2 mm to 200 mm balls).
+        mass: ball mass m_c, in (0, ρ_max (4/3) π r_c³] kg: physically at most a solid
+            ball of the densest engineering metal, tungsten (:data:`MAX_BALL_DENSITY`).
         rolling_friction: False (default): contact condim 3, sliding friction only, so
             the ball rolls and spins freely. True: condim 6, MuJoCo's torsional and
             rolling friction act too: a torque ``|τ_roll| ≤ μ_r N`` (``μ_r``, m, the
@@ -54,8 +77,10 @@ class BallCasterParams:
     rolling_friction: bool = False
 
     def __post_init__(self) -> None:
-        _check_positive_fields(self, exclude=("rolling_friction",))
-        _check_range(self, "radius", 0.002, 0.2)
+        _check_positive_fields(self)
+        _check_range(self, "radius", 0.002, 0.2, low_inclusive=True)
+        _check_range(self, "mass", 0.0, MAX_BALL_DENSITY * 4.0 / 3.0 * math.pi
+                     * self.radius**3)
 
     @property
     def inertia(self) -> float:
@@ -96,6 +121,14 @@ class DiffDriveParams:
         drive: actuator settings (the steering entries are unused).
         sim: simulation settings.
 
+    Bounds: ``track`` in (w + 0.01, 2] m (wider than a wheel, so the wheels do not
+    touch; at most :data:`MAX_REACH`, a modelling bound); ``caster_x`` in
+    (-2, -(R + r_c)] m (the ball clears the wheels; :data:`MAX_REACH`);
+    ``chassis_com_x`` in (caster_x, 0]: physical, the weight rests on all three contacts
+    only with the CoM between caster and axle;
+    caster radius below the wheel radius; ``chassis_size`` edges in (0, 5] m
+    (:data:`MAX_CHASSIS_EDGE`). Masses: positive, no upper bound of their own.
+
     """
 
     wheel: WheelParams = _WHEEL
@@ -108,24 +141,21 @@ class DiffDriveParams:
     drive: DriveParams = _DRIVE
     sim: SimParams = _SIM
 
+    #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = _STEERING
+
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("caster_x", "chassis_com_x"))
-        _check_range(self, "track", self.wheel.width + 0.01, 2.0)
-        _check_range(self, "caster_x", -2.0, -(self.wheel.radius + self.caster.radius))
+        _check_range(self, "track", self.wheel.width + 0.01, MAX_REACH)
+        _check_range(self, "caster_x", -MAX_REACH, -(self.wheel.radius + self.caster.radius))
         _check_range(self, "chassis_com_x", self.caster_x, 0.0)
         _check_caster_fits(self, self.wheel, self.caster)
-        _check_size(self, self.chassis_size)
+        _check_chassis_size(self)
 
     @property
     def total_mass(self) -> float:
         """Chassis, two wheels and the ball."""
         return self.chassis_mass + 2.0 * self.wheel.mass + self.caster.mass
-
-
-def _check_size(obj: object, size: tuple[float, float, float]) -> None:
-    if len(size) != 3 or not all(isinstance(s, (int, float)) and 0 < s < 5 for s in size):
-        raise ValueError(f"{type(obj).__name__}.chassis_size = {size!r}; valid: three edge "
-                         f"lengths in (0, 5) m")
 
 
 @dataclass(frozen=True)
@@ -151,6 +181,12 @@ class SingleSteerParams:
         drive: actuator settings.
         sim: simulation settings.
 
+    Bounds: ``caster_x`` in (R + r_c, 2] m (the balls clear the wheel;
+    :data:`MAX_REACH`); ``caster_y`` in (r_c, 1] m (the two balls do not touch);
+    ``chassis_com_x`` in (0.05, 0.95] · caster_x: physical, the CoM inside the support
+    triangle with a margin so that no contact unloads; caster radius below the wheel
+    radius; ``chassis_size`` edges in (0, 5] m. Masses: positive, no upper bound.
+
     """
 
     wheel: WheelParams = _WHEEL
@@ -166,11 +202,11 @@ class SingleSteerParams:
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
-        _check_range(self, "caster_x", self.wheel.radius + self.caster.radius, 2.0)
-        _check_range(self, "caster_y", self.caster.radius, 1.0)
+        _check_range(self, "caster_x", self.wheel.radius + self.caster.radius, MAX_REACH)
+        _check_range(self, "caster_y", self.caster.radius, MAX_REACH / 2.0)
         _check_range(self, "chassis_com_x", 0.05 * self.caster_x, 0.95 * self.caster_x)
         _check_caster_fits(self, self.wheel, self.caster)
-        _check_size(self, self.chassis_size)
+        _check_chassis_size(self)
 
     @property
     def total_mass(self) -> float:
@@ -198,6 +234,12 @@ class DoubleSteerParams:
         drive: actuator settings.
         sim: simulation settings.
 
+    Bounds: ``half_wheelbase`` in (R + 0.01, 2] m (the wheels clear the origin;
+    :data:`MAX_REACH`); ``caster_y`` in (R + r_c, 2] m (the ball clears the wheels);
+    ``chassis_com_y`` in (0.05, 0.9] · caster_y: physical, the CoM inside the support
+    triangle with a margin; caster radius below the wheel radius; ``chassis_size`` edges
+    in (0, 5] m. Masses: positive, no upper bound.
+
     """
 
     wheel: WheelParams = _WHEEL
@@ -213,11 +255,11 @@ class DoubleSteerParams:
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
-        _check_range(self, "half_wheelbase", self.wheel.radius + 0.01, 2.0)
-        _check_range(self, "caster_y", self.wheel.radius + self.caster.radius, 2.0)
+        _check_range(self, "half_wheelbase", self.wheel.radius + 0.01, MAX_REACH)
+        _check_range(self, "caster_y", self.wheel.radius + self.caster.radius, MAX_REACH)
         _check_range(self, "chassis_com_y", 0.05 * self.caster_y, 0.9 * self.caster_y)
         _check_caster_fits(self, self.wheel, self.caster)
-        _check_size(self, self.chassis_size)
+        _check_chassis_size(self)
 
     @property
     def total_mass(self) -> float:

@@ -20,7 +20,23 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from wmr_mujoco.models.params import SimParams, _check_range
+from wmr_mujoco.models.params import (
+    MAX_WHEEL_MASS,
+    MAX_WHEEL_RADIUS,
+    SimParams,
+    _check_choice,
+    _check_count,
+    _check_positive_fields,
+    _check_range,
+    _check_types,
+)
+
+#: Largest gravity, N/kg: Jupiter's, 24.8 N/kg at its cloud tops, the strongest of any
+#: planet in the solar system.
+MAX_GRAVITY = 25.0
+#: Largest trail magnitude, m: the steer axis meets the floor within a wheel diameter of
+#: the front contact on any bicycle (motorcycles and choppers stay under 0.2 m).
+MAX_TRAIL = 1.0
 
 #: Integrators the study compares (MuJoCo names).
 INTEGRATORS = ("implicitfast", "implicit", "RK4", "Euler")
@@ -47,6 +63,14 @@ class WhippleSimParams(SimParams):
             lean φ, where a knife edge would not move.
         noslip_iterations: MuJoCo's no-slip post-solver iterations (0: off).
 
+    Bounds: ``timestep`` in (0, 0.01] s, a tenth of the fastest benchmark mode's time
+    constant (the capsize/weave eigenvalues reach about 10 1/s over the studied speeds);
+    ``contact_dampratio`` in (0, 10] (past critical damping, 1, a larger ratio only slows
+    the contact); ``solimp_dmax`` in (0.5, 0.9999]: MuJoCo's impedance is a fraction below
+    1, and below 0.5 the wheel sinks by half its load deflection; ``wheel_half_width`` in
+    (0, 0.05] m, a bicycle tyre's half-width at most (knife-edge model: thinner is closer);
+    ``noslip_iterations`` integers [0, 100] (numerical, no physical bound).
+
     """
 
     timestep: float = 0.001
@@ -60,17 +84,13 @@ class WhippleSimParams(SimParams):
     noslip_iterations: int = 0
 
     def __post_init__(self) -> None:
-        super().__post_init__()
+        super().__post_init__()  # the types of every field, then SimParams's ranges
         _check_range(self, "timestep", 0.0, 0.01)
-        if self.integrator not in INTEGRATORS:
-            raise ValueError(f"WhippleSimParams.integrator = {self.integrator!r}; valid "
-                             f"values are {', '.join(INTEGRATORS)}")
+        _check_choice(self, "integrator", INTEGRATORS)
         _check_range(self, "contact_dampratio", 0.0, 10.0)
         _check_range(self, "solimp_dmax", 0.5, 0.9999)
         _check_range(self, "wheel_half_width", 0.0, 0.05)
-        if not (isinstance(self.noslip_iterations, int) and 0 <= self.noslip_iterations <= 100):
-            raise ValueError(f"WhippleSimParams.noslip_iterations = {self.noslip_iterations!r}; "
-                             f"valid range is integers [0, 100]")
+        _check_count(self, "noslip_iterations", 0, 100)
 
 
 def _frame_tensor(i: tuple[float, float, float, float]) -> np.ndarray:
@@ -105,6 +125,16 @@ class WhippleParams:
         front_inertia: (I_Fxx, I_Fyy).
         sim: simulation settings of the MuJoCo model.
 
+    Bounds, physical: masses, lengths, ``gravity`` and the wheels' inertias positive;
+    wheel radii at most :data:`~wmr_mujoco.models.params.MAX_WHEEL_RADIUS` = 2.5 m and
+    wheel masses at most :data:`~wmr_mujoco.models.params.MAX_WHEEL_MASS` = 1e4 kg (the
+    largest tyres built); ``gravity`` at most :data:`MAX_GRAVITY` = 25 N/kg (Jupiter);
+    ``|trail|`` at most :data:`MAX_TRAIL` = 1 m; ``head_angle`` strictly inside
+    (-π/2, π/2) (a horizontal steer axis never meets the floor); the two wheels fit in
+    the wheelbase, ``r_R + r_F < w``; centres of mass above the floor (``z < 0``); every
+    inertia tensor positive definite with principal moments satisfying ``A + B >= C``
+    (a real body). The frame masses have no physical upper bound of their own.
+
     """
 
     wheelbase: float = 1.02
@@ -128,18 +158,17 @@ class WhippleParams:
 
     def __post_init__(self) -> None:
         name = type(self).__name__
-        for f in ("rear_mass", "rear_frame_mass", "front_frame_mass", "front_mass",
-                  "gravity", "rear_radius", "front_radius", "wheelbase"):
-            _check_range(self, f, 0.0)
-        _check_range(self, "trail", -1.0, 1.0)
-        lim = math.pi / 2.0
-        if not (isinstance(self.head_angle, (int, float)) and -lim < self.head_angle < lim):
-            raise ValueError(f"{name}.head_angle = {self.head_angle!r} is not physical; "
-                             f"valid range is (-pi/2, pi/2) = ({-lim:.6f}, {lim:.6f}) rad "
-                             f"(tilt of the steer axis from the vertical)")
+        _check_types(self)  # before any range: a message that names the wrong type
+        for f in ("rear_radius", "front_radius"):
+            _check_range(self, f, 0.0, MAX_WHEEL_RADIUS)
+        for f in ("rear_mass", "front_mass"):
+            _check_range(self, f, 0.0, MAX_WHEEL_MASS)
+        _check_range(self, "gravity", 0.0, MAX_GRAVITY)
+        _check_positive_fields(self, exclude=("trail", "head_angle"))
+        _check_range(self, "trail", -MAX_TRAIL, MAX_TRAIL, low_inclusive=True)
+        _check_range(self, "head_angle", -math.pi / 2.0, math.pi / 2.0, high_inclusive=False)
         for f in ("rear_frame_com", "front_frame_com"):
-            x, z = getattr(self, f)
-            if not (math.isfinite(x) and math.isfinite(z) and z < 0.0):
+            if not getattr(self, f)[1] < 0.0:
                 raise ValueError(f"{name}.{f} = {getattr(self, f)!r} is not physical; "
                                  f"valid range is z in (-inf, 0) (z points down: the "
                                  f"centre of mass must be above the floor)")

@@ -111,6 +111,7 @@ def build(params: WhippleParams = DEFAULT_PARAMS) -> mjcf.RootElement:
     s = p.sim
     root = common.new_root("whipple", s)
     root.option.integrator = s.integrator
+    root.option.gravity = (0.0, 0.0, -p.gravity)  # the benchmark's g, z up
     if s.noslip_iterations:
         root.option.noslip_iterations = s.noslip_iterations
     root.size.nuser_actuator = 0

@@ -15,7 +15,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.models.builders import disc as builder
-from wmr_mujoco.models.params import DiscParams, RobotParams
+from wmr_mujoco.models.params import FreeDiscParams, RobotParams
 from wmr_mujoco.robots.disc_free import measurements as ms
 from wmr_mujoco.robots.disc_free.state import FreeRun
 from wmr_mujoco.robots.spec import Picture, RobotSpec
@@ -101,7 +101,7 @@ SPEC = RobotSpec(
     name=NAME,
     description="free thin disc on a free joint, no actuators; rolling-disc dynamics "
                 "against the classic solutions",
-    params_type=DiscParams, build=builder.build_free, folder="disc",
+    params_type=FreeDiscParams, build=builder.build_free, folder="disc",
     robot_file="disc_free.xml", scene_file="scene_free.xml", scenarios=SCENARIOS,
     render_scenario="steady precession", picture=Picture(keyframe="leaning"),
 )
