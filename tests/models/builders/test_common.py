@@ -53,3 +53,69 @@ def test_exported_xml_is_clean():
     text = to_xml(build(DiscParams()))
     assert 'class="/"' not in text and "unnamed" not in text
     assert "0.15" in text and "0.1499999" not in text
+
+
+# ---- Visual mounts, forks and stems leave the physics untouched (issue 17 item 8) ----
+
+#: The robots whose wheels are held by visual motor mounts, axles, forks or caster stems.
+MOUNTED = ("omni3", "mecanum4", "diffdrive", "single_steer", "double_steer", "whipple",
+           "bicycle", "tricycle", "disc")
+#: Compiled arrays that define the dynamics: bodies, joints and dofs, actuators.
+PHYSICS_ARRAYS = ("body_parentid", "body_pos", "body_quat", "body_mass", "body_inertia",
+                  "body_ipos", "body_iquat", "jnt_type", "jnt_axis", "jnt_pos", "jnt_range",
+                  "dof_armature", "dof_damping", "dof_frictionloss", "actuator_trnid",
+                  "actuator_gainprm", "actuator_biasprm", "actuator_ctrlrange", "opt.timestep")
+#: Compiled arrays of the colliders (every geom with a contact bit set).
+COLLIDER_ARRAYS = ("geom_type", "geom_bodyid", "geom_size", "geom_pos", "geom_quat",
+                   "geom_contype", "geom_conaffinity", "geom_condim", "geom_friction",
+                   "geom_solref", "geom_solimp", "geom_margin")
+
+
+def _compile(robot: str, strip_visual: bool) -> mujoco.MjModel:
+    from wmr_mujoco.models.loading import build_scene
+
+    root = build_scene(robot)
+    if strip_visual:
+        for geom in root.find_all("geom"):
+            if geom.dclass == "visual":
+                geom.remove()
+    return mujoco.MjModel.from_xml_string(to_xml(root), root.get_assets())
+
+
+def _attr(model: mujoco.MjModel, name: str) -> np.ndarray:
+    obj = model
+    for part in name.split("."):
+        obj = getattr(obj, part)
+    return np.asarray(obj)
+
+
+@pytest.mark.parametrize("robot", MOUNTED)
+def test_visual_geoms_leave_the_physics_bit_identical(robot):
+    # The mounts are geoms of class ``visual`` only: contype = conaffinity = 0 and density
+    # 0 on bodies with explicit inertials. Removing every visual geom must therefore leave
+    # every dynamics array and every collider exactly equal (no tolerance: the compiler
+    # is deterministic), and a rollout of the two models must agree bit for bit.
+    full, bare = _compile(robot, False), _compile(robot, True)
+    assert full.ngeom > bare.ngeom
+    visual = full.geom_group == 2
+    assert np.all(full.geom_contype[visual] == 0) and np.all(full.geom_conaffinity[visual] == 0)
+    assert (full.nq, full.nv, full.nu, full.nbody) == (bare.nq, bare.nv, bare.nu, bare.nbody)
+    for name in PHYSICS_ARRAYS:
+        np.testing.assert_array_equal(_attr(full, name), _attr(bare, name), err_msg=name)
+    colliders = [(m.geom_contype | m.geom_conaffinity) != 0 for m in (full, bare)]
+    for name in COLLIDER_ARRAYS:
+        np.testing.assert_array_equal(_attr(full, name)[colliders[0]],
+                                      _attr(bare, name)[colliders[1]], err_msg=name)
+    rng = np.random.default_rng(0)
+    ctrl = rng.uniform(full.actuator_ctrlrange[:, 0], full.actuator_ctrlrange[:, 1]) \
+        if full.nu else np.zeros(0)
+    runs = []
+    for model in (full, bare):
+        data = mujoco.MjData(model)
+        if model.nkey:
+            mujoco.mj_resetDataKeyframe(model, data, model.nkey - 1)
+        data.ctrl[:] = ctrl
+        for _ in range(100):
+            mujoco.mj_step(model, data)
+        runs.append(np.concatenate([data.qpos, data.qvel]))
+    np.testing.assert_array_equal(runs[0], runs[1])

@@ -20,7 +20,7 @@ BALL_CONAFFINITY = 1
 
 
 def add_ball_caster(parent: mjcf.Element, name: str, caster: BallCasterParams,
-                    pos: Sequence[float]) -> mjcf.Element:
+                    pos: Sequence[float], mount_z: float | None = None) -> mjcf.Element:
     """Add a ball of radius r_c on a frictionless ball joint centred at ``pos``.
 
     The ball's inertia is the uniform sphere's ``(2/5) m r_c²`` about every axis. The
@@ -36,6 +36,8 @@ def add_ball_caster(parent: mjcf.Element, name: str, caster: BallCasterParams,
             (``{name}_collision``).
         caster: ball radius and mass.
         pos: ball centre in the parent frame.
+        mount_z: height of the chassis underside in the parent frame; when given, a
+            visual stem joins the socket's top to it.
 
     Returns:
         The ball body.
@@ -44,6 +46,10 @@ def add_ball_caster(parent: mjcf.Element, name: str, caster: BallCasterParams,
     r = caster.radius
     parent.add("geom", dclass="visual", type="cylinder", size=(1.15 * r, 0.6 * r),
                pos=(pos[0], pos[1], pos[2] + 0.6 * r), rgba=SOCKET_RGBA)
+    if mount_z is not None and mount_z > pos[2] + 1.2 * r:
+        parent.add("geom", dclass="visual", type="cylinder", size=(0.5 * r,),
+                   fromto=(pos[0], pos[1], pos[2] + 1.2 * r, pos[0], pos[1], mount_z),
+                   rgba=common.METAL_RGBA)
     body = parent.add("body", name=name, pos=list(pos))
     body.add("joint", name=name, type="ball")
     body.add("inertial", pos=(0, 0, 0), mass=caster.mass, diaginertia=(caster.inertia,) * 3)

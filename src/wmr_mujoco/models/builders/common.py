@@ -32,6 +32,8 @@ XML_PRECISION = 12
 WHEEL_RGBA = (0.15, 0.15, 0.17, 1.0)
 MARK_RGBA = (0.95, 0.75, 0.1, 1.0)
 BODY_RGBA = (0.2, 0.45, 0.8, 1.0)
+MOTOR_RGBA = (0.25, 0.25, 0.28, 1.0)
+METAL_RGBA = (0.72, 0.72, 0.75, 1.0)
 
 
 def new_root(model: str, sim: SimParams) -> mjcf.RootElement:
@@ -134,23 +136,43 @@ FORK_GAP = 0.008
 
 
 def add_fork(body: mjcf.Element, wheel: WheelParams,
-             tops: Sequence[tuple[float, float]], rgba: Sequence[float] = BODY_RGBA) -> None:
-    """Visual fork holding a wheel whose axle is ``body``'s y axis through its origin.
+             tops: Sequence[tuple[float, float]], rgba: Sequence[float] = BODY_RGBA,
+             centre: tuple[float, float] = (0, 0)) -> None:
+    """Visual fork holding a wheel whose axle is parallel to ``body``'s y axis.
 
-    An axle across the wheel and both blades, and from each blade end a pair of blades
-    (one each side of the wheel, clear of its faces) up to each ``(x, z)`` in ``tops``,
-    joined there by a crown. Visual class only: no mass, no contact.
+    The axle passes through ``centre = (x, z)`` in ``body``'s frame (its origin unless
+    given). An axle across the wheel and both blades, and from each blade end a pair of
+    blades (one each side of the wheel, clear of its faces) up to each ``(x, z)`` in
+    ``tops``, joined there by a crown. Visual class only: no mass, no contact.
     """
     radius = max(FORK_RADIUS_RATIO * wheel.radius, FORK_MIN_RADIUS)
     y = wheel.width / 2.0 + FORK_GAP + radius
+    cx, cz = centre
     body.add("geom", dclass="visual", type="capsule", size=(radius,),
-             fromto=(0, -y - radius, 0, 0, y + radius, 0), rgba=rgba)
+             fromto=(cx, -y - radius, cz, cx, y + radius, cz), rgba=rgba)
     for x, z in tops:
         for side in (-1.0, 1.0):
             body.add("geom", dclass="visual", type="capsule", size=(radius,),
-                     fromto=(0, side * y, 0, x, side * y, z), rgba=rgba)
+                     fromto=(cx, side * y, cz, x, side * y, z), rgba=rgba)
         body.add("geom", dclass="visual", type="capsule", size=(radius,),
                  fromto=(x, -y, z, x, y, z), rgba=rgba)
+
+
+def add_drive_mount(body: mjcf.Element, motor_from: Sequence[float],
+                    motor_to: Sequence[float], axle_to: Sequence[float],
+                    motor_radius: float, axle_radius: float) -> None:
+    """Visual gear motor and axle holding a driven wheel on ``body`` (the chassis).
+
+    The motor housing is the cylinder from ``motor_from`` to ``motor_to`` (its face
+    beside the wheel), the axle the thinner cylinder from ``motor_to`` through the hub to
+    ``axle_to``, beyond the wheel's outer face; all three points lie on the wheel's
+    axle line. Visual class only: no mass, no contact; fixed to ``body``, so the hub
+    turns about the axle.
+    """
+    body.add("geom", dclass="visual", type="cylinder", size=(motor_radius,),
+             fromto=(*motor_from, *motor_to), rgba=MOTOR_RGBA)
+    body.add("geom", dclass="visual", type="cylinder", size=(axle_radius,),
+             fromto=(*motor_to, *axle_to), rgba=METAL_RGBA)
 
 
 def add_wheel(parent: mjcf.Element, name: str, wheel: WheelParams,

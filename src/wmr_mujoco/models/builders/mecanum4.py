@@ -23,6 +23,11 @@ PROFILE_SEGMENTS = 40
 CAPSULE_RADIUS_FACTOR = 0.8
 ROLLER_RGBA = (0.55, 0.55, 0.58, 1.0)
 ROLLER_MARK_RGBA = (0.9, 0.3, 0.1, 1.0)
+#: Visual drive of each wheel (fractions of the wheel radius R): gear-motor radius (it
+#: stands out above and below the chassis) and length, axle radius.
+MOTOR_RADIUS = 0.5
+MOTOR_LENGTH = 1.2
+AXLE_RADIUS = 0.12
 
 #: Wheels: name, x sign, y sign, roller-angle sign (γ_i = sign · roller_angle).
 #: Layout "O" on the floor: FL −γ, FR +γ, RL +γ, RR −γ, as
@@ -125,6 +130,21 @@ def _add_wheel(chassis: mjcf.Element, root: mjcf.RootElement, params: MecanumPar
     common.add_wheel_actuator(root, name, p.drive, joint=joint)
 
 
+def _add_drive_visuals(chassis: mjcf.Element, params: MecanumParams, sx: float,
+                       sy: float) -> None:
+    """Gear motor in the chassis side and the axle through the hub of wheel (sx, sy)."""
+    p = params
+    R, x = p.wheel_radius, sx * p.half_length
+    motor_out = p.half_track - p.wheel_half_width - 0.002  # clear of the rollers
+    axle_end = p.half_track + p.wheel_half_width + 0.003
+
+    def point(y: float) -> tuple[float, float, float]:
+        return (x, sy * y, 0.0)
+
+    common.add_drive_mount(chassis, point(motor_out - MOTOR_LENGTH * R), point(motor_out),
+                           point(axle_end), MOTOR_RADIUS * R, AXLE_RADIUS * R)
+
+
 def build(params: MecanumParams) -> mjcf.RootElement:
     """Four-mecanum-wheel platform on a free joint.
 
@@ -157,6 +177,7 @@ def build(params: MecanumParams) -> mjcf.RootElement:
                 pos=(0.2 * size[0], 0, CHASSIS_HEIGHT / 2), rgba=common.MARK_RGBA)
     site = chassis.add("site", name="base", pos=(0, 0, 0))
     for name, sx, sy, sg in WHEELS:
+        _add_drive_visuals(chassis, p, sx, sy)
         _add_wheel(chassis, root, p, name, sx, sy, sg)
     common.add_joint_sensors(root, list(WHEEL_NAMES))
     common.add_frame_sensors(root, site)

@@ -18,8 +18,8 @@ BARREL_RINGS = 17
 BARREL_SEGMENTS = 48
 ROLLER_RGBA = (0.55, 0.55, 0.58, 1.0)
 ROLLER_MARK_RGBA = (0.9, 0.3, 0.1, 1.0)
-MOTOR_RGBA = (0.25, 0.25, 0.28, 1.0)
-METAL_RGBA = (0.72, 0.72, 0.75, 1.0)
+MOTOR_RGBA = common.MOTOR_RGBA
+METAL_RGBA = common.METAL_RGBA
 #: Visual drive of each wheel (fractions of the wheel radius r): gear-motor radius and
 #: length, axle radius; mounting plate thickness, m.
 MOTOR_RADIUS = 0.35
@@ -42,14 +42,9 @@ def _add_drive_visuals(platform: mjcf.Element, params: OmniParams, alpha: float)
     motor_out = inner - 0.002
     motor_in = motor_out - MOTOR_LENGTH * r
 
-    def segment(a: float, b: float) -> tuple[float, ...]:
-        return (*(a * u), *(b * u))
-
-    platform.add("geom", dclass="visual", type="cylinder", size=(MOTOR_RADIUS * r,),
-                 fromto=segment(motor_in, motor_out), rgba=MOTOR_RGBA)
-    platform.add("geom", dclass="visual", type="cylinder", size=(AXLE_RADIUS * r,),
-                 fromto=segment(motor_out, L + p.row_offset + p.roller_half_width + 0.003),
-                 rgba=METAL_RGBA)
+    axle_end = L + p.row_offset + p.roller_half_width + 0.003
+    common.add_drive_mount(platform, motor_in * u, motor_out * u, axle_end * u,
+                           MOTOR_RADIUS * r, AXLE_RADIUS * r)
     half = (PLATE_THICKNESS / 2.0, 1.1 * MOTOR_RADIUS * r,
             0.5 * (PLATFORM_THICKNESS + 1.1 * MOTOR_RADIUS * r))
     plate_r = min(p.platform_radius + half[0], motor_out - half[0])

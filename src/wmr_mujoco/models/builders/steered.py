@@ -23,6 +23,8 @@ from wmr_mujoco.models.params_wheeled import (
 
 CHASSIS_COM_HEIGHT = 0.04
 FORK_HEIGHT = 0.12
+#: Height of the visual fork crown above the wheel's top, m.
+FORK_CROWN_GAP = 0.02
 
 
 def fork_yaw_inertia(fork_mass: float) -> float:
@@ -47,6 +49,8 @@ def add_steered_wheel(root: mjcf.RootElement, chassis: mjcf.Element, prefix: str
              diaginertia=common.box_inertia(fork_mass, (0.04, 0.06, FORK_HEIGHT)))
     fork.add("geom", dclass="visual", type="capsule", fromto=(0, 0, 0, 0, 0, FORK_HEIGHT),
              size=(0.01,), rgba=common.BODY_RGBA)
+    # Blades either side of the wheel up to a crown on the steering column.
+    common.add_fork(fork, wheel, tops=((0.0, wheel.radius + FORK_CROWN_GAP),))
     name = f"{prefix}_wheel"
     common.add_wheel(fork, name, wheel, pos=(0, 0, 0), armature=drive.wheel_armature)
     common.add_wheel_actuator(root, name, drive, joint=name)
@@ -92,7 +96,8 @@ def build_single(params: SingleSteerParams = SINGLE_STEER) -> mjcf.RootElement:
     add_steered_wheel(root, chassis, "drive", p.wheel, p.fork_mass, p.drive, (0, 0, 0))
     for side, y in (("left", 1.0), ("right", -1.0)):
         add_ball_caster(chassis, f"caster_{side}", p.caster,
-                        pos=(p.caster_x, y * p.caster_y, rc - r))
+                        pos=(p.caster_x, y * p.caster_y, rc - r),
+                        mount_z=CHASSIS_COM_HEIGHT - p.chassis_size[2] / 2.0)
     common.add_joint_sensors(root, ["drive_wheel"], ["drive_steer"])
     common.add_frame_sensors(root, site)
     return root
@@ -119,7 +124,8 @@ def build_double(params: DoubleSteerParams = DOUBLE_STEER) -> mjcf.RootElement:
                 fromto=(-a, 0, FORK_HEIGHT, a, 0, FORK_HEIGHT), rgba=common.BODY_RGBA)
     for prefix, x in (("front", a), ("rear", -a)):
         add_steered_wheel(root, chassis, prefix, p.wheel, p.fork_mass, p.drive, (x, 0, 0))
-    add_ball_caster(chassis, "caster", p.caster, pos=(0, p.caster_y, rc - r))
+    add_ball_caster(chassis, "caster", p.caster, pos=(0, p.caster_y, rc - r),
+                    mount_z=CHASSIS_COM_HEIGHT - p.chassis_size[2] / 2.0)
     common.add_joint_sensors(root, ["front_wheel", "rear_wheel"], ["front_steer", "rear_steer"])
     common.add_frame_sensors(root, site)
     return root

@@ -37,6 +37,7 @@ import numpy as np
 from dm_control import mjcf
 
 from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.params import WheelParams
 from wmr_mujoco.models.params_whipple import DEFAULT_PARAMS, WhippleParams
 
 #: Paper frame to MuJoCo world: rotation by π about x.
@@ -47,6 +48,8 @@ MOTOR_LIMIT = 100.0
 KEY_SPEED = 5.0
 FRAME_RGBA = (0.75, 0.2, 0.15, 1.0)
 FORK_RGBA = (0.8, 0.8, 0.85, 1.0)
+#: Half-width of the drawn wheels, m (the collider is the thin ellipsoid).
+WHEEL_VISUAL_HALF_WIDTH = 0.012
 
 
 def mj_tensor(tensor_paper: np.ndarray) -> np.ndarray:
@@ -86,7 +89,7 @@ def _add_wheel(parent: mjcf.Element, name: str, pos: np.ndarray, radius: float,
     body.add("inertial", pos=(0, 0, 0), mass=mass, diaginertia=(ixx, iyy, ixx))
     body.add("geom", name=f"{name}_collision", dclass="collision", type="ellipsoid",
              size=(radius, half_width, radius))
-    body.add("geom", dclass="visual", type="cylinder", size=(radius, 0.012),
+    body.add("geom", dclass="visual", type="cylinder", size=(radius, WHEEL_VISUAL_HALF_WIDTH),
              zaxis=(0, 1, 0), rgba=common.WHEEL_RGBA)
     for side in (-1.0, 1.0):
         body.add("geom", dclass="visual", type="box",
@@ -98,6 +101,14 @@ def _tube(body: mjcf.Element, a: np.ndarray, b: np.ndarray, rgba: tuple,
           radius: float = 0.015) -> None:
     body.add("geom", dclass="visual", type="capsule", fromto=[*a, *b], size=(radius,),
              rgba=rgba)
+
+
+def _visual_wheel(radius: float) -> WheelParams:
+    """The drawn wheel (the visual cylinder's width) for sizing its fork.
+
+    Its mass is a placeholder: :func:`common.add_fork` uses only radius and width.
+    """
+    return WheelParams(radius=radius, width=2.0 * WHEEL_VISUAL_HALF_WIDTH, mass=1.0)
 
 
 def build(params: WhippleParams = DEFAULT_PARAMS) -> mjcf.RootElement:
@@ -134,6 +145,10 @@ def build(params: WhippleParams = DEFAULT_PARAMS) -> mjcf.RootElement:
     head_top = pivot - 0.25 * axis
     _tube(rear, np.zeros(3), head_top - axle_r, FRAME_RGBA)
     _tube(rear, np.zeros(3), com_b, FRAME_RGBA)
+    # Stays either side of the rear wheel, from its axle to the frame's joints.
+    common.add_fork(rear, _visual_wheel(p.rear_radius),
+                    tops=((com_b[0], com_b[2]), ((head_top - axle_r)[0], (head_top - axle_r)[2])),
+                    rgba=FRAME_RGBA)
     _tube(rear, com_b, head_top - axle_r, FRAME_RGBA)
     rear.add("geom", dclass="visual", type="sphere", size=(0.05,), pos=list(com_b),
              rgba=FRAME_RGBA)
@@ -145,6 +160,10 @@ def build(params: WhippleParams = DEFAULT_PARAMS) -> mjcf.RootElement:
               fullinertia=full_inertia(mj_tensor(p.tensor("front_frame_inertia"))))
     centre_f = mj_point(p.wheelbase, -p.front_radius) - pivot
     _tube(front, -0.25 * axis, centre_f, FORK_RGBA, 0.012)
+    # Fork blades either side of the front wheel, from its axle up to the steer axis.
+    crown = -0.2 * axis
+    common.add_fork(front, _visual_wheel(p.front_radius), tops=((crown[0], crown[2]),),
+                    rgba=FORK_RGBA, centre=(centre_f[0], centre_f[2]))
     bar = -0.3 * axis
     _tube(front, bar + np.array([0, 0.25, 0]), bar - np.array([0, 0.25, 0]), FORK_RGBA,
           0.012)
