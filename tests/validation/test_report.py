@@ -72,7 +72,7 @@ def test_plot_series_draws_points_and_curves(tmp_path):
     import numpy as np
 
     from wmr_mujoco.validation.metrics import Series
-    from wmr_mujoco.validation.report import plot_series
+    from wmr_mujoco.validation.plots import plot_series
 
     x = np.linspace(0.0, 1.0, 11)
     series = [Series("curve", x, x ** 2, "v", "s", style="k-"),

@@ -233,7 +233,9 @@ def batch_key(s: Scenario) -> tuple[str, str, float]:
 
 
 def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None = None,
-            engine: Engine | str = Engine.ROLLOUT) -> list[ScenarioResult]:
+            engine: Engine | str = Engine.ROLLOUT,
+            on_result: Callable[[ScenarioResult], None] | None = None
+            ) -> list[ScenarioResult]:
     """Run every scenario; a failure does not stop the others.
 
     With ``engine="rollout"``, kinematic and dynamic scenarios with the same
@@ -242,15 +244,19 @@ def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | Non
     simulate one batch, Python computes the next batch's analytic schedule, then measures
     the finished ones. A batch that fails is rerun one scenario at a time so that each
     failure is attributed. ``"loop"`` steps each scenario in Python, one after the other.
-    Measurement scenarios run through their own ``evaluate``.
+    Measurement scenarios run through their own ``evaluate``. ``on_result`` sees each
+    scenario's final result as soon as it is there (e.g. to start drawing its plot).
     """
     engine = parse_choice(Engine, engine, "engine")
-    results = _run_batched(scenarios, progress) if engine is Engine.ROLLOUT else {}
+    results = (_run_batched(scenarios, progress, on_result) if engine is Engine.ROLLOUT
+               else {})
     for i, s in enumerate(scenarios):
         if i not in results:
             if progress:
                 progress(f"[{i + 1}/{len(scenarios)}] {s.key}")
             results[i] = run_scenario(s, progress, engine=engine)
+            if on_result:
+                on_result(results[i])
     return [results[i] for i in range(len(scenarios))]
 
 
@@ -259,7 +265,8 @@ def _simulate_prepared(prepared: list[Prepared], nthread: int) -> list[np.ndarra
     return simulate_batch(first.model, first.data, [p.controls for p in prepared], nthread)
 
 
-def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None
+def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None,
+                 on_result: Callable[[ScenarioResult], None] | None = None
                  ) -> dict[int, ScenarioResult]:
     """The scenarios that ran cleanly in batches, by index; failures are left out."""
     groups: dict[tuple[str, str, float], list[int]] = {}
@@ -295,4 +302,6 @@ def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] 
                                                 trace)
                 except Exception:
                     continue
+                if on_result:
+                    on_result(results[i])
     return results
