@@ -15,6 +15,7 @@ probes).
 
 from __future__ import annotations
 
+import copy
 import os
 import traceback
 from collections.abc import Callable, Sequence
@@ -156,9 +157,14 @@ class Prepared:
     analytic: np.ndarray
 
 
-def prepare(s: Scenario, params: RobotParams | None = None) -> Prepared:
-    """Load, settle at rest for ``s.settle`` seconds, and compute the schedule."""
-    model = load(s.robot, params)
+def prepare(s: Scenario, params: RobotParams | None = None,
+            model: mujoco.MjModel | None = None) -> Prepared:
+    """Load, settle at rest for ``s.settle`` seconds, and compute the schedule.
+
+    ``model``: the robot's compiled model to use (and modify) instead of loading it.
+    """
+    if model is None:
+        model = load(s.robot, params)
     adapter = make_adapter(s, model, params)
     if adapter.mode is not None:
         set_actuation_mode(model, adapter.mode)
@@ -276,13 +282,20 @@ def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] 
     # One core stays with the Python thread that schedules and measures.
     nthread = max(1, (os.cpu_count() or 1) - 1)
     results: dict[int, ScenarioResult] = {}
+    # Each robot is compiled once; every scenario gets its own copy (adapters set the
+    # actuation mode on it), identical to a fresh load.
+    compiled: dict[str, mujoco.MjModel] = {}
     pending: list[tuple[list[tuple[int, Prepared]], Future[list[np.ndarray]]]] = []
     with ThreadPoolExecutor(max_workers=1, thread_name_prefix="wmr-rollout") as pool:
         for members in groups.values():
             prepared = []
             for i in members:
+                robot = scenarios[i].robot
                 try:
-                    prepared.append((i, prepare(scenarios[i])))
+                    if robot not in compiled:
+                        compiled[robot] = load(robot)
+                    model = copy.copy(compiled[robot])
+                    prepared.append((i, prepare(scenarios[i], model=model)))
                 except Exception:  # reported by the one-at-a-time rerun
                     continue
             if prepared:
