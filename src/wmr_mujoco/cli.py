@@ -68,7 +68,7 @@ def _cmd_demo(_: argparse.Namespace) -> int:
 
 def _cmd_validate(args: argparse.Namespace) -> int:
     from wmr_mujoco.progress import bar, shown
-    from wmr_mujoco.validation.plot_pool import PlotPool
+    from wmr_mujoco.validation.pool import ValidationPool
     from wmr_mujoco.validation.report import check_report_folder, text_table, write_report
     from wmr_mujoco.validation.runner import run_all
     from wmr_mujoco.validation.scenarios import scenarios_for
@@ -93,14 +93,16 @@ def _cmd_validate(args: argparse.Namespace) -> int:
                 return
         progress_bar.write(msg, file=sys.stderr)
 
-    # Each scenario's plot is drawn in a worker process while the next ones run.
-    with PlotPool(args.out) as plots:
+    # Worker processes run the measurement scenarios and draw each scenario's plot
+    # while the main process simulates and measures the others.
+    with ValidationPool(args.out) as pool:
         try:
-            results = run_all(scenarios, progress=progress, on_result=plots.submit)
+            results = run_all(scenarios, progress=progress, on_result=pool.plot,
+                              offload=pool.measure)
         finally:
             progress_bar.close()
         print(text_table(results, judged_only=not args.all_metrics))
-        path = write_report(results, args.out, plots.collect())
+        path = write_report(results, args.out, pool.collect())
     failed = [r.scenario.key for r in results if not r.passed]
     print(f"\n{len(results) - len(failed)} of {len(results)} scenarios pass; report: {path}")
     if failed:

@@ -1,7 +1,7 @@
 """The report's figures: a scenario's states against the model, or a measurement's curves.
 
 Drawing only (matplotlib's Agg backend, imported when a figure is drawn); every file is
-written atomically. :mod:`wmr_mujoco.validation.plot_pool` draws them in worker
+written atomically. `wmr validate` draws them (:mod:`wmr_mujoco.validation.pool`) in worker
 processes while the scenarios still run.
 """
 

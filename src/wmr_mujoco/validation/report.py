@@ -256,7 +256,7 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR,
     Each scenario of this run gets a fresh plot; plots of the covered robots' scenarios
     that are no longer reported are removed, nobody else's. ``plots`` holds figures
     already drawn (by scenario key: a finished file to rename into place, or None for
-    nothing to plot; see :class:`~wmr_mujoco.validation.plot_pool.PlotPool`); the
+    nothing to plot; see :class:`~wmr_mujoco.validation.pool.ValidationPool`); the
     scenarios it lacks are drawn here.
 
     Returns:

@@ -78,6 +78,11 @@ def make_adapter(scenario: Scenario, model: mujoco.MjModel,
     return factory(scenario, model, params)
 
 
+#: What a run elsewhere gives back: rows, trace, error and progress messages.
+Outcome = tuple[list[Row], Trace, str | None, list[str]]
+#: Starts a measurement scenario elsewhere; None: run it here.
+Offload = Callable[[Scenario], Future[Outcome] | None]
+
 #: Called after every step with ``(model, data, analytic_state, adapter)``.
 Observer = Callable[[mujoco.MjModel, mujoco.MjData, np.ndarray, Adapter], None]
 
@@ -240,8 +245,8 @@ def batch_key(s: Scenario) -> tuple[str, str, float]:
 
 def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None = None,
             engine: Engine | str = Engine.ROLLOUT,
-            on_result: Callable[[ScenarioResult], None] | None = None
-            ) -> list[ScenarioResult]:
+            on_result: Callable[[ScenarioResult], None] | None = None,
+            offload: Offload | None = None) -> list[ScenarioResult]:
     """Run every scenario; a failure does not stop the others.
 
     With ``engine="rollout"``, kinematic and dynamic scenarios with the same
@@ -250,19 +255,44 @@ def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | Non
     simulate one batch, Python computes the next batch's analytic schedule, then measures
     the finished ones. A batch that fails is rerun one scenario at a time so that each
     failure is attributed. ``"loop"`` steps each scenario in Python, one after the other.
-    Measurement scenarios run through their own ``evaluate``. ``on_result`` sees each
+    Measurement scenarios run through their own ``evaluate``; ``offload`` may start
+    them elsewhere first (e.g. :meth:`~wmr_mujoco.validation.pool.ValidationPool.measure`:
+    worker processes), and those are collected as they finish. ``on_result`` sees each
     scenario's final result as soon as it is there (e.g. to start drawing its plot).
     """
     engine = parse_choice(Engine, engine, "engine")
-    results = (_run_batched(scenarios, progress, on_result) if engine is Engine.ROLLOUT
-               else {})
+    away: dict[int, Future[Outcome]] = {}
+    if offload is not None:
+        for i, s in enumerate(scenarios):
+            if s.kind is ScenarioKind.MEASUREMENT and (future := offload(s)) is not None:
+                away[i] = future
+    results: dict[int, ScenarioResult] = {}
+
+    def collect(wait: bool) -> None:
+        for i, future in list(away.items()):
+            if wait or future.done():
+                del away[i]
+                rows, trace, error, messages = future.result()
+                if progress:
+                    for msg in messages:
+                        progress(msg)
+                    progress(f"[{i + 1}/{len(scenarios)}] {scenarios[i].key}")
+                results[i] = ScenarioResult(scenarios[i], rows, trace, error)
+                if on_result:
+                    on_result(results[i])
+
+    if engine is Engine.ROLLOUT:
+        results.update(_run_batched(scenarios, progress, on_result,
+                                    lambda: collect(wait=False)))
     for i, s in enumerate(scenarios):
-        if i not in results:
+        if i not in results and i not in away:
             if progress:
                 progress(f"[{i + 1}/{len(scenarios)}] {s.key}")
             results[i] = run_scenario(s, progress, engine=engine)
             if on_result:
                 on_result(results[i])
+            collect(wait=False)
+    collect(wait=True)
     return [results[i] for i in range(len(scenarios))]
 
 
@@ -272,8 +302,8 @@ def _simulate_prepared(prepared: list[Prepared], nthread: int) -> list[np.ndarra
 
 
 def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None,
-                 on_result: Callable[[ScenarioResult], None] | None = None
-                 ) -> dict[int, ScenarioResult]:
+                 on_result: Callable[[ScenarioResult], None] | None = None,
+                 between: Callable[[], None] | None = None) -> dict[int, ScenarioResult]:
     """The scenarios that ran cleanly in batches, by index; failures are left out."""
     groups: dict[tuple[str, str, float], list[int]] = {}
     for i, s in enumerate(scenarios):
@@ -286,6 +316,27 @@ def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] 
     # actuation mode on it), identical to a fresh load.
     compiled: dict[str, mujoco.MjModel] = {}
     pending: list[tuple[list[tuple[int, Prepared]], Future[list[np.ndarray]]]] = []
+
+    def finish(prepared: list[tuple[int, Prepared]], future: Future[list[np.ndarray]]
+               ) -> None:
+        try:
+            batch = future.result()
+        except Exception:
+            return
+        for (i, prep), states in zip(prepared, batch, strict=True):
+            if progress:
+                progress(f"[{i + 1}/{len(scenarios)}] {prep.scenario.key}")
+            trace = Trace()
+            try:
+                results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace),
+                                            trace)
+            except Exception:
+                continue
+            if on_result:
+                on_result(results[i])
+            if between:
+                between()
+
     with ThreadPoolExecutor(max_workers=1, thread_name_prefix="wmr-rollout") as pool:
         for members in groups.values():
             prepared = []
@@ -298,23 +349,15 @@ def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] 
                     prepared.append((i, prepare(scenarios[i], model=model)))
                 except Exception:  # reported by the one-at-a-time rerun
                     continue
+            if between:
+                between()
+            # The batch before the one just submitted has had a batch's scheduling time
+            # to simulate: measure it now, so that results come out steadily.
+            if len(pending) > 1:
+                finish(*pending.pop(0))
             if prepared:
                 pending.append((prepared, pool.submit(_simulate_prepared,
                                                       [p for _, p in prepared], nthread)))
         for prepared, future in pending:
-            try:
-                batch = future.result()
-            except Exception:
-                continue
-            for (i, prep), states in zip(prepared, batch, strict=True):
-                if progress:
-                    progress(f"[{i + 1}/{len(scenarios)}] {prep.scenario.key}")
-                trace = Trace()
-                try:
-                    results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace),
-                                                trace)
-                except Exception:
-                    continue
-                if on_result:
-                    on_result(results[i])
+            finish(prepared, future)
     return results

@@ -1,11 +1,11 @@
-"""Plots drawn in worker processes give the same report as plots drawn one by one."""
+"""Worker processes (measurements and plots) give the same report as one process."""
 
 import matplotlib.image as mpimg
 import numpy as np
 import pytest
 
 from wmr_mujoco.robots import get_spec
-from wmr_mujoco.validation.plot_pool import PlotPool
+from wmr_mujoco.validation.pool import ValidationPool
 from wmr_mujoco.validation.report import write_report
 from wmr_mujoco.validation.runner import run_all
 from wmr_mujoco.validation.scenarios import Scenario
@@ -25,11 +25,13 @@ def _files(folder):
     return sorted(p.relative_to(folder).as_posix() for p in folder.rglob("*"))
 
 
-def test_parallel_plots_give_the_serial_report(scenarios, tmp_path):
+def test_workers_give_the_serial_report(scenarios, tmp_path):
     serial, parallel = tmp_path / "serial", tmp_path / "parallel"
     write_report(run_all(scenarios), serial)
-    with PlotPool(parallel, workers=2) as pool:
-        results = run_all(scenarios, on_result=pool.submit)
+    with ValidationPool(parallel, workers=2) as pool:
+        # The registered measurement runs in a worker; the custom scenarios here.
+        assert pool.measure(scenarios[1]) is not None and pool.measure(scenarios[0]) is None
+        results = run_all(scenarios, on_result=pool.plot, offload=pool.measure)
         write_report(results, parallel, pool.collect())
     assert _files(parallel) == _files(serial)
     assert "validation/disc/sliding-wheel.png" in _files(parallel)
@@ -41,9 +43,9 @@ def test_parallel_plots_give_the_serial_report(scenarios, tmp_path):
 
 def test_interrupted_pool_leaves_nothing(scenarios, tmp_path):
     folder = tmp_path / "report"
-    with pytest.raises(KeyboardInterrupt), PlotPool(folder, workers=1) as pool:
-        run_all(scenarios[:1], on_result=pool.submit)
+    with pytest.raises(KeyboardInterrupt), ValidationPool(folder, workers=1) as pool:
+        run_all(scenarios[:2], on_result=pool.plot, offload=pool.measure)
         raise KeyboardInterrupt
     assert not folder.exists()
     with pytest.raises(ValueError, match="workers = 0"):
-        PlotPool(folder, workers=0)
+        ValidationPool(folder, workers=0)

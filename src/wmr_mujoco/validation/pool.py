@@ -1,0 +1,134 @@
+"""Worker processes for ``wmr validate``: measurement scenarios and the report's plots.
+
+A figure takes a fraction of a second of matplotlib and a measurement scenario steps its
+own runs in Python; both hold the GIL, so threads would not help. :class:`ValidationPool`
+runs them in ``os.cpu_count()`` processes while the main process schedules, simulates
+(threaded ``mujoco.rollout``) and measures the batched kinematic and dynamic scenarios:
+a registered measurement scenario is run by a worker
+(:func:`~wmr_mujoco.validation.runner.run_scenario`, the same code as in the main
+process, so its metrics are the same), and each finished scenario's figure is drawn by
+one (:func:`~wmr_mujoco.validation.plots.plot_trace`).
+
+The workers are forked from a ``forkserver`` that has imported matplotlib, MuJoCo and the
+robots once (never from the main process, whose rollout threads may be running). They
+draw into a hidden staging folder inside the report folder;
+:func:`~wmr_mujoco.validation.report.write_report` renames each finished file into
+place. Leaving the ``with`` block any way (error, Ctrl-C, SIGTERM) waits for the tasks
+under way, cancels the others and removes the staging folder, and the report folder too
+if the pool created it, so an interrupted run leaves nothing behind. Each figure is
+written atomically (:func:`wmr_mujoco.atomic.atomic_path`).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import shutil
+import tempfile
+from collections.abc import Mapping
+from concurrent.futures import Future, ProcessPoolExecutor
+from pathlib import Path
+from types import TracebackType
+from typing import TYPE_CHECKING
+
+from wmr_mujoco.validation.plots import plot_trace
+
+if TYPE_CHECKING:
+    from wmr_mujoco.validation.metrics import Row, Trace
+    from wmr_mujoco.validation.runner import ScenarioResult
+    from wmr_mujoco.validation.scenarios import Scenario
+
+#: Imported once by the forkserver, so that each worker starts ready.
+PRELOAD = ("matplotlib", "matplotlib.pyplot", "wmr_mujoco.validation.plots",
+           "wmr_mujoco.validation.runner")
+
+
+class ValidationPool:
+    """Run measurement scenarios and draw plots in worker processes; a context manager.
+
+    Args:
+        folder: the report folder (created if missing; removed again on exit if it is
+            still empty).
+        workers: processes (default ``os.cpu_count()``).
+
+    Raises:
+        ValueError: ``workers`` < 1.
+    """
+
+    def __init__(self, folder: Path, workers: int | None = None) -> None:
+        n = workers if workers is not None else (os.cpu_count() or 1)
+        if n < 1:
+            raise ValueError(f"workers = {n}; must be >= 1")
+        self.folder = Path(folder)
+        self.workers = n
+        self._created_folder = False
+        self._staging: Path | None = None
+        self._pool: ProcessPoolExecutor | None = None
+        self._plots: dict[str, Future[Path | None]] = {}
+
+    def __enter__(self) -> ValidationPool:
+        if not self.folder.is_dir():
+            self.folder.mkdir()
+            self._created_folder = True
+        self._staging = Path(tempfile.mkdtemp(prefix=".plots-", dir=self.folder))
+        context = multiprocessing.get_context("forkserver")
+        context.set_forkserver_preload(list(PRELOAD))
+        self._pool = ProcessPoolExecutor(self.workers, mp_context=context)
+        return self
+
+    def _executor(self) -> ProcessPoolExecutor:
+        if self._pool is None or self._staging is None:
+            raise RuntimeError("ValidationPool used outside its `with` block")
+        return self._pool
+
+    def measure(self, scenario: Scenario) -> Future[tuple[list[Row], Trace, str | None,
+                                                          list[str]]] | None:
+        """Start a registered scenario in a worker; None for one not in the registry.
+
+        The future gives ``(rows, trace, error, messages)`` of
+        :func:`~wmr_mujoco.validation.runner.run_scenario` (the scenario itself, which
+        may hold closures, stays here; the worker finds it by robot and name).
+        """
+        from wmr_mujoco.robots import ROBOTS
+
+        spec = ROBOTS.get(scenario.robot)
+        registered = next((s for s in (spec.scenarios if spec else ())
+                           if s.name == scenario.name), None)
+        if registered is None or registered != scenario or \
+                registered.evaluate is not scenario.evaluate:
+            return None
+        return self._executor().submit(_run_registered, scenario.robot, scenario.name)
+
+    def plot(self, result: ScenarioResult) -> None:
+        """Start drawing ``result``'s figure (a later result of the same scenario wins)."""
+        key = result.scenario.key
+        assert self._staging is not None  # set with the executor
+        path = self._staging / f"{len(self._plots)}.png"
+        self._plots[key] = self._executor().submit(plot_trace, result.trace, key, path)
+
+    def collect(self) -> Mapping[str, Path | None]:
+        """Wait for every figure: its staged file by scenario key (None: nothing to plot).
+
+        Raises:
+            Exception: whatever drawing a figure raised.
+        """
+        return {key: future.result() for key, future in self._plots.items()}
+
+    def __exit__(self, kind: type[BaseException] | None, err: BaseException | None,
+                 tb: TracebackType | None) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+        if self._staging is not None:
+            shutil.rmtree(self._staging, ignore_errors=True)
+        if self._created_folder and not any(self.folder.iterdir()):
+            self.folder.rmdir()
+
+
+def _run_registered(robot: str, name: str) -> tuple[list[Row], Trace, str | None, list[str]]:
+    """A registered scenario through the runner, in a worker (messages returned)."""
+    from wmr_mujoco.robots import get_spec
+    from wmr_mujoco.validation.runner import run_scenario
+
+    messages: list[str] = []
+    result = run_scenario(get_spec(robot).scenario(name), messages.append)
+    return result.rows, result.trace, result.error, messages
