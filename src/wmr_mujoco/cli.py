@@ -93,12 +93,12 @@ def _cmd_validate(args: argparse.Namespace) -> int:
                 return
         progress_bar.write(msg, file=sys.stderr)
 
-    # Worker processes run the measurement scenarios and draw each scenario's plot
-    # while the main process simulates and measures the others.
+    # Worker processes run the scenarios (a batch or a measurement each) and draw each
+    # scenario's plot as soon as its result is back.
     with ValidationPool(args.out) as pool:
         try:
             results = run_all(scenarios, progress=progress, on_result=pool.plot,
-                              offload=pool.measure)
+                              offload=pool.run)
         finally:
             progress_bar.close()
         print(text_table(results, judged_only=not args.all_metrics))

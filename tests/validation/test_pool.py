@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.robots import get_spec
+from wmr_mujoco.sim.engine import Engine
 from wmr_mujoco.validation.pool import ValidationPool
 from wmr_mujoco.validation.report import write_report
 from wmr_mujoco.validation.runner import run_all
@@ -30,8 +31,8 @@ def test_workers_give_the_serial_report(scenarios, tmp_path):
     write_report(run_all(scenarios), serial)
     with ValidationPool(parallel, workers=2) as pool:
         # The registered measurement runs in a worker; the custom scenarios here.
-        assert pool.measure(scenarios[1]) is not None and pool.measure(scenarios[0]) is None
-        results = run_all(scenarios, on_result=pool.plot, offload=pool.measure)
+        assert pool.run(scenarios[:1], Engine.ROLLOUT) is None
+        results = run_all(scenarios, on_result=pool.plot, offload=pool.run)
         write_report(results, parallel, pool.collect())
     assert _files(parallel) == _files(serial)
     assert "validation/disc/sliding-wheel.png" in _files(parallel)
@@ -44,7 +45,7 @@ def test_workers_give_the_serial_report(scenarios, tmp_path):
 def test_interrupted_pool_leaves_nothing(scenarios, tmp_path):
     folder = tmp_path / "report"
     with pytest.raises(KeyboardInterrupt), ValidationPool(folder, workers=1) as pool:
-        run_all(scenarios[:2], on_result=pool.plot, offload=pool.measure)
+        run_all(scenarios[:2], on_result=pool.plot, offload=pool.run)
         raise KeyboardInterrupt
     assert not folder.exists()
     with pytest.raises(ValueError, match="workers = 0"):

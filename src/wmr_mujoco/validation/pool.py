@@ -25,7 +25,7 @@ import multiprocessing
 import os
 import shutil
 import tempfile
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from pathlib import Path
 from types import TracebackType
@@ -34,8 +34,8 @@ from typing import TYPE_CHECKING
 from wmr_mujoco.validation.plots import plot_trace
 
 if TYPE_CHECKING:
-    from wmr_mujoco.validation.metrics import Row, Trace
-    from wmr_mujoco.validation.runner import ScenarioResult
+    from wmr_mujoco.sim.engine import Engine
+    from wmr_mujoco.validation.runner import Outcome, ScenarioResult
     from wmr_mujoco.validation.scenarios import Scenario
 
 #: Imported once by the forkserver, so that each worker starts ready.
@@ -81,23 +81,26 @@ class ValidationPool:
             raise RuntimeError("ValidationPool used outside its `with` block")
         return self._pool
 
-    def measure(self, scenario: Scenario) -> Future[tuple[list[Row], Trace, str | None,
-                                                          list[str]]] | None:
-        """Start a registered scenario in a worker; None for one not in the registry.
+    def run(self, scenarios: Sequence[Scenario], engine: Engine
+            ) -> Future[tuple[list[Outcome], list[str]]] | None:
+        """Start registered scenarios in a worker; None if one is not in the registry.
 
-        The future gives ``(rows, trace, error, messages)`` of
-        :func:`~wmr_mujoco.validation.runner.run_scenario` (the scenario itself, which
-        may hold closures, stays here; the worker finds it by robot and name).
+        The worker runs them through :func:`~wmr_mujoco.validation.runner.run_all` (the
+        same code as in this process, so the same metrics) and gives back their outcomes
+        and progress messages. The scenarios themselves, which may hold closures, stay
+        here; the worker finds them by robot and name.
         """
         from wmr_mujoco.robots import ROBOTS
 
-        spec = ROBOTS.get(scenario.robot)
-        registered = next((s for s in (spec.scenarios if spec else ())
-                           if s.name == scenario.name), None)
-        if registered is None or registered != scenario or \
-                registered.evaluate is not scenario.evaluate:
-            return None
-        return self._executor().submit(_run_registered, scenario.robot, scenario.name)
+        for scenario in scenarios:
+            spec = ROBOTS.get(scenario.robot)
+            registered = next((s for s in (spec.scenarios if spec else ())
+                               if s.name == scenario.name), None)
+            if registered is None or registered != scenario or \
+                    registered.evaluate is not scenario.evaluate:
+                return None
+        return self._executor().submit(_run_registered,
+                                       [(s.robot, s.name) for s in scenarios], engine)
 
     def plot(self, result: ScenarioResult) -> None:
         """Start drawing ``result``'s figure (a later result of the same scenario wins)."""
@@ -124,11 +127,15 @@ class ValidationPool:
             self.folder.rmdir()
 
 
-def _run_registered(robot: str, name: str) -> tuple[list[Row], Trace, str | None, list[str]]:
-    """A registered scenario through the runner, in a worker (messages returned)."""
+def _run_registered(keys: list[tuple[str, str]], engine: Engine
+                    ) -> tuple[list[Outcome], list[str]]:
+    """Registered scenarios (robot, name) through the runner, in a worker."""
     from wmr_mujoco.robots import get_spec
-    from wmr_mujoco.validation.runner import run_scenario
+    from wmr_mujoco.validation.runner import run_all
 
     messages: list[str] = []
-    result = run_scenario(get_spec(robot).scenario(name), messages.append)
-    return result.rows, result.trace, result.error, messages
+    results = run_all([get_spec(robot).scenario(name) for robot, name in keys],
+                      messages.append, engine)
+    # Per-scenario "[i/n]" lines are the caller's to print, with its own numbering.
+    return ([(r.rows, r.trace, r.error) for r in results],
+            [m for m in messages if not m.startswith("[")])

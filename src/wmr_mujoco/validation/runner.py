@@ -19,7 +19,7 @@ import copy
 import os
 import traceback
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor, as_completed
 from dataclasses import dataclass
 
 import mujoco
@@ -78,10 +78,12 @@ def make_adapter(scenario: Scenario, model: mujoco.MjModel,
     return factory(scenario, model, params)
 
 
-#: What a run elsewhere gives back: rows, trace, error and progress messages.
-Outcome = tuple[list[Row], Trace, str | None, list[str]]
-#: Starts a measurement scenario elsewhere; None: run it here.
-Offload = Callable[[Scenario], Future[Outcome] | None]
+#: A scenario's result as it travels between processes: rows, trace, error.
+Outcome = tuple[list[Row], Trace, str | None]
+#: Starts scenarios elsewhere: a future of their outcomes and progress messages;
+#: None: run them here.
+Offload = Callable[[Sequence[Scenario], Engine],
+                   Future[tuple[list[Outcome], list[str]]] | None]
 
 #: Called after every step with ``(model, data, analytic_state, adapter)``.
 Observer = Callable[[mujoco.MjModel, mujoco.MjData, np.ndarray, Adapter], None]
@@ -255,45 +257,93 @@ def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | Non
     simulate one batch, Python computes the next batch's analytic schedule, then measures
     the finished ones. A batch that fails is rerun one scenario at a time so that each
     failure is attributed. ``"loop"`` steps each scenario in Python, one after the other.
-    Measurement scenarios run through their own ``evaluate``; ``offload`` may start
-    them elsewhere first (e.g. :meth:`~wmr_mujoco.validation.pool.ValidationPool.measure`:
-    worker processes), and those are collected as they finish. ``on_result`` sees each
-    scenario's final result as soon as it is there (e.g. to start drawing its plot).
+    Measurement scenarios run through their own ``evaluate``.
+
+    ``offload`` may run units of work elsewhere (e.g.
+    :meth:`~wmr_mujoco.validation.pool.ValidationPool.run`: worker processes running
+    this same function): each batch, largest first, then each measurement scenario;
+    what it declines runs here. ``on_result`` sees each scenario's final result as soon
+    as it is there (e.g. to start drawing its plot).
     """
     engine = parse_choice(Engine, engine, "engine")
-    away: dict[int, Future[Outcome]] = {}
-    if offload is not None:
-        for i, s in enumerate(scenarios):
-            if s.kind is ScenarioKind.MEASUREMENT and (future := offload(s)) is not None:
-                away[i] = future
+    n = len(scenarios)
     results: dict[int, ScenarioResult] = {}
 
-    def collect(wait: bool) -> None:
-        for i, future in list(away.items()):
-            if wait or future.done():
-                del away[i]
-                rows, trace, error, messages = future.result()
-                if progress:
-                    for msg in messages:
-                        progress(msg)
-                    progress(f"[{i + 1}/{len(scenarios)}] {scenarios[i].key}")
-                results[i] = ScenarioResult(scenarios[i], rows, trace, error)
-                if on_result:
-                    on_result(results[i])
+    def done(i: int, result: ScenarioResult) -> None:
+        if progress:
+            progress(f"[{i + 1}/{n}] {result.scenario.key}")
+        results[i] = result
+        if on_result:
+            on_result(result)
 
-    if engine is Engine.ROLLOUT:
-        results.update(_run_batched(scenarios, progress, on_result,
-                                    lambda: collect(wait=False)))
+    def run_here(unit: list[int]) -> None:
+        # Not ``progress`` itself: its "[i/n]" lines would count within the unit.
+        def passing(msg: str) -> None:
+            if progress and not msg.startswith("["):
+                progress(msg)
+
+        for i, result in zip(unit, run_all([scenarios[i] for i in unit], passing, engine),
+                             strict=True):
+            done(i, result)
+
+    away: dict[Future[tuple[list[Outcome], list[str]]], list[int]] = {}
+    here: list[list[int]] = []
+    for unit in work_units(scenarios, engine) if offload is not None else []:
+        future = offload([scenarios[i] for i in unit], engine)
+        if future is None:
+            here.append(unit)
+        else:
+            away[future] = unit
+
+    def harvest(future: Future[tuple[list[Outcome], list[str]]]) -> None:
+        outcomes, messages = future.result()
+        if progress:
+            for msg in messages:
+                progress(msg)
+        for i, (rows, trace, error) in zip(away.pop(future), outcomes, strict=True):
+            done(i, ScenarioResult(scenarios[i], rows, trace, error))
+
+    if offload is None:
+        if engine is Engine.ROLLOUT:
+            for i, result in sorted(_run_batched(scenarios).items()):
+                done(i, result)
+        for i in range(n):
+            if i not in results:
+                results[i] = run_scenario(scenarios[i], progress, engine=engine)
+                done(i, results[i])
+    else:
+        for unit in here:
+            run_here(unit)
+        # While the workers are busy (or still starting), this process takes the units
+        # they have not started yet, smallest (last) first.
+        for future, unit in reversed(list(away.items())):
+            for finished in [f for f in away if f.done()]:
+                harvest(finished)
+            if future.cancel():
+                del away[future]
+                run_here(unit)
+        for future in as_completed(list(away)):
+            harvest(future)
+    return [results[i] for i in range(n)]
+
+
+def work_units(scenarios: Sequence[Scenario], engine: Engine | str = Engine.ROLLOUT
+               ) -> list[list[int]]:
+    """Indices of independent units of work.
+
+    The batches of :func:`batch_key` (most simulated time first), then the measurement
+    scenarios one by one; with ``"loop"``, every scenario alone.
+    """
+    engine = parse_choice(Engine, engine, "engine")
+    groups: dict[tuple[str, str, float], list[int]] = {}
+    alone: list[list[int]] = []
     for i, s in enumerate(scenarios):
-        if i not in results and i not in away:
-            if progress:
-                progress(f"[{i + 1}/{len(scenarios)}] {s.key}")
-            results[i] = run_scenario(s, progress, engine=engine)
-            if on_result:
-                on_result(results[i])
-            collect(wait=False)
-    collect(wait=True)
-    return [results[i] for i in range(len(scenarios))]
+        if s.kind is ScenarioKind.MEASUREMENT or engine is Engine.LOOP:
+            alone.append([i])
+        else:
+            groups.setdefault(batch_key(s), []).append(i)
+    batches = sorted(groups.values(), key=lambda u: -sum(scenarios[i].duration for i in u))
+    return batches + alone
 
 
 def _simulate_prepared(prepared: list[Prepared], nthread: int) -> list[np.ndarray]:
@@ -301,9 +351,7 @@ def _simulate_prepared(prepared: list[Prepared], nthread: int) -> list[np.ndarra
     return simulate_batch(first.model, first.data, [p.controls for p in prepared], nthread)
 
 
-def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None,
-                 on_result: Callable[[ScenarioResult], None] | None = None,
-                 between: Callable[[], None] | None = None) -> dict[int, ScenarioResult]:
+def _run_batched(scenarios: Sequence[Scenario]) -> dict[int, ScenarioResult]:
     """The scenarios that ran cleanly in batches, by index; failures are left out."""
     groups: dict[tuple[str, str, float], list[int]] = {}
     for i, s in enumerate(scenarios):
@@ -324,18 +372,12 @@ def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] 
         except Exception:
             return
         for (i, prep), states in zip(prepared, batch, strict=True):
-            if progress:
-                progress(f"[{i + 1}/{len(scenarios)}] {prep.scenario.key}")
             trace = Trace()
             try:
                 results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace),
                                             trace)
             except Exception:
                 continue
-            if on_result:
-                on_result(results[i])
-            if between:
-                between()
 
     with ThreadPoolExecutor(max_workers=1, thread_name_prefix="wmr-rollout") as pool:
         for members in groups.values():
@@ -349,8 +391,6 @@ def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] 
                     prepared.append((i, prepare(scenarios[i], model=model)))
                 except Exception:  # reported by the one-at-a-time rerun
                     continue
-            if between:
-                between()
             # The batch before the one just submitted has had a batch's scheduling time
             # to simulate: measure it now, so that results come out steadily.
             if len(pending) > 1:
