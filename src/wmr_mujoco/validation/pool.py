@@ -13,9 +13,10 @@ The workers are forked from a ``forkserver`` that has imported matplotlib, MuJoC
 robots once (never from the main process, whose rollout threads may be running). They
 draw into a hidden staging folder inside the report folder;
 :func:`~wmr_mujoco.validation.report.write_report` renames each finished file into
-place. Leaving the ``with`` block any way (error, Ctrl-C, SIGTERM) waits for the tasks
-under way, cancels the others and removes the staging folder, and the report folder too
-if the pool created it, so an interrupted run leaves nothing behind. Each figure is
+place. Leaving the ``with`` block normally waits for the tasks under way; leaving it by
+an error, Ctrl-C or SIGTERM ends the workers at once. Either way the staging folder is
+removed, and the report folder too if the pool created it and it is empty, so an
+interrupted run leaves nothing behind. Each figure is
 written atomically (:func:`wmr_mujoco.atomic.atomic_path`).
 """
 
@@ -119,12 +120,20 @@ class ValidationPool:
 
     def __exit__(self, kind: type[BaseException] | None, err: BaseException | None,
                  tb: TracebackType | None) -> None:
-        if self._pool is not None:
-            self._pool.shutdown(wait=True, cancel_futures=True)
-        if self._staging is not None:
-            shutil.rmtree(self._staging, ignore_errors=True)
-        if self._created_folder and not any(self.folder.iterdir()):
-            self.folder.rmdir()
+        try:
+            if self._pool is not None:
+                if kind is not None:
+                    # Stop now: workers write only into the staging folder, removed
+                    # below. (The executor ends its workers publicly only from 3.14.)
+                    workers = getattr(self._pool, "_processes", None) or {}
+                    for process in list(workers.values()):
+                        process.terminate()
+                self._pool.shutdown(wait=True, cancel_futures=True)
+        finally:
+            if self._staging is not None:
+                shutil.rmtree(self._staging, ignore_errors=True)
+            if self._created_folder and not any(self.folder.iterdir()):
+                self.folder.rmdir()
 
 
 def _run_registered(keys: list[tuple[str, str]], engine: Engine
