@@ -1,13 +1,14 @@
-"""Worker processes for ``wmr validate``: measurement scenarios and the report's plots.
+"""Worker processes for ``wmr validate``: the scenarios and the report's plots.
 
-A figure takes a fraction of a second of matplotlib and a measurement scenario steps its
-own runs in Python; both hold the GIL, so threads would not help. :class:`ValidationPool`
-runs them in ``os.cpu_count()`` processes while the main process schedules, simulates
-(threaded ``mujoco.rollout``) and measures the batched kinematic and dynamic scenarios:
-a registered measurement scenario is run by a worker
-(:func:`~wmr_mujoco.validation.runner.run_scenario`, the same code as in the main
-process, so its metrics are the same), and each finished scenario's figure is drawn by
-one (:func:`~wmr_mujoco.validation.plots.plot_trace`).
+Scheduling, measuring and measurement scenarios are Python, and a figure takes a
+fraction of a second of matplotlib; all hold the GIL, so threads would not help.
+:class:`ValidationPool` spreads them over ``os.cpu_count()`` processes: each unit of
+:func:`~wmr_mujoco.validation.runner.work_units` (a rollout batch of kinematic or dynamic
+scenarios, or one measurement scenario) runs in a worker through
+:func:`~wmr_mujoco.validation.runner.run_all`, the same code as in one process, so the
+metrics are the same; the main process takes the units no worker has started yet, and
+hands each result's figure to a worker (:func:`~wmr_mujoco.validation.plots.plot_trace`)
+as soon as it is back.
 
 The workers are forked from a ``forkserver`` that has imported matplotlib, MuJoCo and the
 robots once (never from the main process, whose rollout threads may be running). They
