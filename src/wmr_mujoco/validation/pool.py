@@ -73,8 +73,11 @@ class ValidationPool:
             self.folder.mkdir()
             self._created_folder = True
         self._staging = Path(tempfile.mkdtemp(prefix=".plots-", dir=self.folder))
-        context = multiprocessing.get_context("forkserver")
-        context.set_forkserver_preload(list(PRELOAD))
+        if "forkserver" in multiprocessing.get_all_start_methods():
+            context = multiprocessing.get_context("forkserver")
+            context.set_forkserver_preload(list(PRELOAD))
+        else:  # Windows: each worker imports for itself
+            context = multiprocessing.get_context("spawn")
         self._pool = ProcessPoolExecutor(self.workers, mp_context=context)
         return self
 
