@@ -33,3 +33,25 @@ def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
     assert err.strip().splitlines() == [
         f"wmr render: {'interrupted' if code == 130 else 'terminated'}; nothing written"]
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_interrupted_validate_leaves_no_file(tmp_path, sig, code):
+    env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
+    out = tmp_path / "report"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "wmr_mujoco.cli", "validate", "whipple", "disc_free", "--out",
+         str(out), "--quiet"],
+        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 60
+    # The first staged plot: every worker has started (the signal then never meets a
+    # worker still being set up), and most scenarios are still to run.
+    while not list(out.glob(".plots-*/*")) and time.monotonic() < deadline:
+        assert proc.poll() is None, proc.communicate()
+        time.sleep(0.05)
+    proc.send_signal(sig)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == code, err
+    assert err.strip().splitlines()[-1] == (
+        f"wmr validate: {'interrupted' if code == 130 else 'terminated'}; nothing written")
+    assert list(tmp_path.iterdir()) == []

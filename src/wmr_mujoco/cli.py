@@ -68,6 +68,7 @@ def _cmd_demo(_: argparse.Namespace) -> int:
 
 def _cmd_validate(args: argparse.Namespace) -> int:
     from wmr_mujoco.progress import bar, shown
+    from wmr_mujoco.validation.pool import ValidationPool
     from wmr_mujoco.validation.report import (
         check_report_folder,
         summary_line,
@@ -97,12 +98,16 @@ def _cmd_validate(args: argparse.Namespace) -> int:
                 return
         progress_bar.write(msg, file=sys.stderr)
 
-    try:
-        results = run_all(scenarios, progress=progress)
-    finally:
-        progress_bar.close()
-    print(text_table(results, judged_only=not args.all_metrics))
-    path = write_report(results, args.out)
+    # Worker processes run the scenarios (a batch or a measurement each) and draw each
+    # scenario's plot as soon as its result is back.
+    with ValidationPool(args.out) as pool:
+        try:
+            results = run_all(scenarios, progress=progress, on_result=pool.plot,
+                              offload=pool.run)
+        finally:
+            progress_bar.close()
+        print(text_table(results, judged_only=not args.all_metrics))
+        path = write_report(results, args.out, pool.collect())
     failed = [r.scenario.key for r in results if not r.passed]
     print(f"\n{summary_line(results)}; report: {path}")
     if failed:

@@ -84,20 +84,6 @@ def test_summary_headline_escapes_pipes():
     assert line.count(" | ") + 2 == 11 and "\\|a − b\\|" in line
 
 
-def test_plot_series_draws_points_and_curves(tmp_path):
-    import numpy as np
-
-    from wmr_mujoco.validation.metrics import Series
-    from wmr_mujoco.validation.report import plot_series
-
-    x = np.linspace(0.0, 1.0, 11)
-    series = [Series("curve", x, x ** 2, "v", "s", style="k-"),
-              Series("_hidden", x, -x, "v", "s"),
-              Series("points", x[::5], x[::5] ** 2, "v", "s", style="o", color="tab:red")]
-    path = plot_series(series, tmp_path / "f.png", "title")
-    assert path.stat().st_size > 5_000
-
-
 def _result(robot, name, value, passed=True):
     """A judged result of a registered scenario, made by hand (no simulation)."""
     from wmr_mujoco.robots import get_spec

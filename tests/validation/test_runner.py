@@ -11,7 +11,7 @@ import pytest
 
 from wmr_mujoco.validation.metrics import lateral_slip
 from wmr_mujoco.validation.runner import run_all, run_scenario
-from wmr_mujoco.validation.scenarios import Scenario, scenarios_for
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, scenarios_for
 from wmr_mujoco.validation.signals import const
 
 SCENARIOS = scenarios_for()
@@ -156,3 +156,17 @@ def test_pipelined_batches_with_different_settles_match_the_loop():
     for a, b in zip(batched, looped, strict=True):
         assert a.error is None
         assert [(r.metric, r.value) for r in a.rows] == [(r.metric, r.value) for r in b.rows]
+
+
+def test_work_units_batches_then_measurements():
+    from wmr_mujoco.robots import get_spec
+    from wmr_mujoco.validation.runner import batch_key, work_units
+
+    scenarios = get_spec("disc").scenarios
+    units = work_units(scenarios)
+    assert sorted(i for u in units for i in u) == list(range(len(scenarios)))
+    for unit in units:  # one batch key per unit; a measurement always alone
+        assert len({batch_key(scenarios[i]) for i in unit}) == 1
+        kinds = {scenarios[i].kind for i in unit}
+        assert ScenarioKind.MEASUREMENT not in kinds or len(unit) == 1
+    assert all(len(u) == 1 for u in work_units(scenarios, "loop"))

@@ -277,7 +277,8 @@ def main(args: argparse.Namespace) -> int:
         f"({ren['backend']} backend; {ren['robot']}, the scene with the most geoms).",
         "## Validation",
         f"Whole `wmr validate`: {results['validate_wall_s']:.1f} s wall time (median of "
-        f"{1 if args.quick else 3} runs). All "
+        f"{1 if args.quick else 3} runs; report included; scenarios and plots spread "
+        f"over {os.cpu_count()} worker processes). All "
         f"scenarios without the report: {engines['rollout']:.1f} s through batched, "
         "threaded `mujoco.rollout` (one batch per robot, actuation mode and settle "
         "time, simulated while Python schedules and measures the others), "

@@ -40,7 +40,8 @@ from wmr_mujoco.robots import whipple
 from wmr_mujoco.robots.whipple import eigen, stability
 from wmr_mujoco.robots.whipple.rolling import compile_model
 from wmr_mujoco.validation.metrics import Row
-from wmr_mujoco.validation.report import markdown_table, plot_series
+from wmr_mujoco.validation.plots import plot_series
+from wmr_mujoco.validation.report import markdown_table
 from wmr_mujoco.validation.runner import ScenarioResult, run_all, run_scenario
 
 README = MODELS_DIR / whipple.NAME / "README.md"

@@ -8,23 +8,16 @@ from __future__ import annotations
 
 import json
 import math
-import multiprocessing
 import os
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-import numpy as np
-
-from wmr_mujoco.analytic.planar import wrap_angle
-from wmr_mujoco.atomic import atomic_path, write_text_atomic
-from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Series, Trace
+from wmr_mujoco.atomic import write_text_atomic
+from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace
+from wmr_mujoco.validation.plots import plot_trace
 from wmr_mujoco.validation.runner import ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
-
-if TYPE_CHECKING:
-    from matplotlib.axes import Axes
 
 #: Default output folder of ``wmr validate``.
 REPORTS_DIR = Path("reports")
@@ -167,142 +160,14 @@ def slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower().replace("°", "deg")).strip("-")
 
 
-def _plot_states(axes: Sequence[Axes], tr: dict[str, np.ndarray], trace: Trace) -> None:
-    """Panels of a kinematic or dynamic run, chosen by the adapter's state."""
-    t, sim, ana = tr["time"], tr["sim"], tr["analytic"]
-    names, units = trace.state_names, trace.state_units
-    if trace.is_pose:
-        axes[0].plot(sim[:, 0], sim[:, 1], label="MuJoCo")
-        axes[0].plot(ana[:, 0], ana[:, 1], "--", label="analytic")
-        axes[0].set(xlabel="x [m]", ylabel="y [m]", title="trajectory")
-        axes[0].set_aspect("equal", adjustable="datalim")
-        axes[1].plot(t, 1000 * np.linalg.norm(sim[:, :2] - ana[:, :2], axis=1))
-        axes[1].set(xlabel="t [s]", ylabel="position error [mm]", title="error over time")
-        rest = range(3, len(names))
-    else:
-        axes[0].plot(t, sim[:, 0], label="MuJoCo")
-        axes[0].plot(t, ana[:, 0], "--", label="analytic")
-        axes[0].set(xlabel="t [s]", ylabel=f"{names[0]} [{units[0]}]", title=names[0])
-        axes[1].plot(t, sim[:, 1:] - ana[:, 1:])
-        axes[1].set(xlabel="t [s]", title="MuJoCo − model",
-                    ylabel=", ".join(f"{n} [{u}]" for n, u in zip(names[1:], units[1:],
-                                                                   strict=True)))
-        rest = range(len(names), len(names))
-    axes[0].legend()
-    if len(rest):
-        for i in rest:
-            axes[2].plot(t, sim[:, i], label=f"{names[i]} [{units[i]}] MuJoCo")
-            axes[2].plot(t, ana[:, i], "--", label=f"{names[i]} model")
-        axes[2].set(xlabel="t [s]", title="further states")
-        axes[2].legend(fontsize=7)
-    elif tr["slip"].ndim == 2 and tr["slip"].shape[1]:
-        axes[2].plot(t, 1000 * tr["slip"])
-        axes[2].set(xlabel="t [s]", ylabel="lateral slip [mm/s]", title="slip at wheel contacts")
-    elif trace.is_pose:
-        axes[2].plot(t, np.degrees(wrap_angle(sim[:, 2] - ana[:, 2])))
-        axes[2].set(xlabel="t [s]", ylabel="heading error [deg]", title="heading error")
-    else:
-        axes[2].set_axis_off()
-
-
-def _plot_series(axes: Sequence[Axes], series: Sequence[Series]) -> None:
-    """A measurement's own curves, one panel per pair of axis labels (three at most)."""
-    groups: dict[tuple[str, str], list[Series]] = {}
-    for s in series:
-        groups.setdefault((s.xlabel, s.ylabel), []).append(s)
-    for ax, ((xlabel, ylabel), members) in zip(axes, list(groups.items())[:len(axes)],
-                                                strict=False):
-        for s in members:
-            colour = {} if s.color is None else {"color": s.color}
-            ax.plot(s.x, s.y, s.style, label=s.label, ms=4, **colour)
-        ax.set(xlabel=xlabel, ylabel=ylabel)
-        ax.legend(fontsize=7)
-    for ax in axes[len(groups):]:
-        ax.set_axis_off()
-
-
-def plot_series(series: Sequence[Series], path: Path, title: str = "") -> Path:
-    """One figure of curves alone (e.g. a measurement's series for a model README).
-
-    One panel per pair of axis labels, as in the report (three at most).
-    """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    panels = min(3, max(1, len({(s.xlabel, s.ylabel) for s in series})))
-    fig, axes = plt.subplots(1, panels, figsize=(7 * panels, 4.5), squeeze=False)
-    _plot_series(axes[0], series)
-    if title:
-        fig.suptitle(title)
-    fig.tight_layout()
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=100)
-    plt.close(fig)
-    return path
-
-
 def plot_scenario(result: ScenarioResult, path: Path) -> Path | None:
     """Trajectory (physics over analytic), error over time, slip or further states.
 
-    A measurement scenario's own curves are plotted instead. Returns None when there is
-    nothing to plot.
+    A measurement scenario's own curves are plotted instead (see
+    :func:`~wmr_mujoco.validation.plots.plot_trace`). Returns None when there is nothing
+    to plot.
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    trace = result.trace
-    tr = trace.arrays()
-    if tr["time"].size < 2 and not trace.series:
-        return None
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
-    if trace.series:
-        _plot_series(axes, trace.series)
-    else:
-        _plot_states(axes, tr, trace)
-    fig.suptitle(result.scenario.key)
-    fig.tight_layout()
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=80)
-    plt.close(fig)
-    return path
-
-
-#: The plots :func:`plot_all` hands to its forked workers (inherited, never pickled).
-_PLOT_JOBS: list[tuple[ScenarioResult, Path]] = []
-
-
-def _plot_job(i: int) -> Path | None:
-    result, path = _PLOT_JOBS[i]
-    return plot_scenario(result, path)
-
-
-def plot_all(jobs: Sequence[tuple[ScenarioResult, Path]]) -> list[Path | None]:
-    """:func:`plot_scenario` of every ``(result, path)``, on every core.
-
-    Drawing is pure Python (matplotlib holds the GIL), so the plots are shared among
-    forked worker processes, which inherit the results instead of receiving copies;
-    where ``fork`` is unavailable, or for a single core, they are drawn one by one.
-    """
-    global _PLOT_JOBS
-    jobs = list(jobs)
-    workers = min(len(jobs), os.cpu_count() or 1)
-    if workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
-        return [plot_scenario(r, p) for r, p in jobs]
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot  # imported once, inherited by the workers
-
-    _PLOT_JOBS = jobs
-    try:
-        with multiprocessing.get_context("fork").Pool(workers) as pool:
-            return pool.map(_plot_job, range(len(jobs)), chunksize=1)
-    finally:
-        _PLOT_JOBS = []
+    return plot_trace(result.trace, result.scenario.key, path)
 
 
 def _record(r: ScenarioResult) -> dict[str, object]:
@@ -399,14 +264,31 @@ def _remove_stale_plots(folder: Path, robots: set[str], results: Sequence[Scenar
                 png.unlink(missing_ok=True)
 
 
-def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) -> Path:
+def _place_plot(result: ScenarioResult, png: Path, drawn: Mapping[str, Path | None]
+                ) -> Path | None:
+    """Move an already drawn figure to ``png``, or draw it there now."""
+    key = result.scenario.key
+    if key not in drawn:
+        return plot_scenario(result, png)
+    staged = drawn[key]
+    if staged is None:
+        return None
+    os.replace(staged, png)
+    return png
+
+
+def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR,
+                 plots: Mapping[str, Path | None] | None = None) -> Path:
     """Merge this run into ``folder``'s report; write the Markdown, JSON and PNG plots.
 
     ``validation.md``, ``validation.json`` and ``summary.md`` cover this run's scenarios
     and the earlier results of the others (:func:`merge_results`); the JSON says whether
     every registered scenario is there (``complete``), which ``make readme`` requires.
     Each scenario of this run gets a fresh plot; plots of the covered robots' scenarios
-    that are no longer reported are removed, nobody else's.
+    that are no longer reported are removed, nobody else's. ``plots`` holds figures
+    already drawn (by scenario key: a finished file to rename into place, or None for
+    nothing to plot; see :class:`~wmr_mujoco.validation.pool.ValidationPool`); the
+    scenarios it lacks are drawn here.
 
     Returns:
         Path of the Markdown report.
@@ -431,12 +313,11 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR) 
     lines += ["## How the metrics are judged",
               "", DEFINITIONS, "", "## Every metric", "",
               markdown_table(merged), "", "## Plots", ""]
-    jobs = [(r, plot_path(folder, r.scenario)) for r in merged if r.scenario.key in fresh]
-    for _, png in jobs:
-        png.parent.mkdir(parents=True, exist_ok=True)
-    drawn = dict(zip((r.scenario.key for r, _ in jobs), plot_all(jobs), strict=True))
     for r in merged:
-        png = drawn.get(r.scenario.key, plot_path(folder, r.scenario))
+        png = plot_path(folder, r.scenario)
+        if r.scenario.key in fresh:
+            png.parent.mkdir(parents=True, exist_ok=True)
+            png = _place_plot(r, png, plots or {})
         if png is not None and png.is_file():
             rel = png.relative_to(folder).as_posix()
             lines += [f"### {r.scenario.key}", "", f"![{r.scenario.key}]({rel})", ""]

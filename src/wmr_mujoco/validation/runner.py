@@ -15,10 +15,11 @@ probes).
 
 from __future__ import annotations
 
+import copy
 import os
 import traceback
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor, as_completed
 from dataclasses import dataclass
 
 import mujoco
@@ -76,6 +77,13 @@ def make_adapter(scenario: Scenario, model: mujoco.MjModel,
                          f"it has: {have}")
     return factory(scenario, model, params)
 
+
+#: A scenario's result as it travels between processes: rows, trace, error.
+Outcome = tuple[list[Row], Trace, str | None]
+#: Starts scenarios elsewhere: a future of their outcomes and progress messages;
+#: None: run them here.
+Offload = Callable[[Sequence[Scenario], Engine],
+                   Future[tuple[list[Outcome], list[str]]] | None]
 
 #: Called after every step with ``(model, data, analytic_state, adapter)``.
 Observer = Callable[[mujoco.MjModel, mujoco.MjData, np.ndarray, Adapter], None]
@@ -156,9 +164,14 @@ class Prepared:
     analytic: np.ndarray
 
 
-def prepare(s: Scenario, params: RobotParams | None = None) -> Prepared:
-    """Load, settle at rest for ``s.settle`` seconds, and compute the schedule."""
-    model = load(s.robot, params)
+def prepare(s: Scenario, params: RobotParams | None = None,
+            model: mujoco.MjModel | None = None) -> Prepared:
+    """Load, settle at rest for ``s.settle`` seconds, and compute the schedule.
+
+    ``model``: the robot's compiled model to use (and modify) instead of loading it.
+    """
+    if model is None:
+        model = load(s.robot, params)
     adapter = make_adapter(s, model, params)
     if adapter.mode is not None:
         set_actuation_mode(model, adapter.mode)
@@ -233,7 +246,9 @@ def batch_key(s: Scenario) -> tuple[str, str, float]:
 
 
 def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None = None,
-            engine: Engine | str = Engine.ROLLOUT) -> list[ScenarioResult]:
+            engine: Engine | str = Engine.ROLLOUT,
+            on_result: Callable[[ScenarioResult], None] | None = None,
+            offload: Offload | None = None) -> list[ScenarioResult]:
     """Run every scenario; a failure does not stop the others.
 
     With ``engine="rollout"``, kinematic and dynamic scenarios with the same
@@ -243,15 +258,92 @@ def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | Non
     the finished ones. A batch that fails is rerun one scenario at a time so that each
     failure is attributed. ``"loop"`` steps each scenario in Python, one after the other.
     Measurement scenarios run through their own ``evaluate``.
+
+    ``offload`` may run units of work elsewhere (e.g.
+    :meth:`~wmr_mujoco.validation.pool.ValidationPool.run`: worker processes running
+    this same function): each batch, largest first, then each measurement scenario;
+    what it declines runs here. ``on_result`` sees each scenario's final result as soon
+    as it is there (e.g. to start drawing its plot).
     """
     engine = parse_choice(Engine, engine, "engine")
-    results = _run_batched(scenarios, progress) if engine is Engine.ROLLOUT else {}
+    n = len(scenarios)
+    results: dict[int, ScenarioResult] = {}
+
+    def done(i: int, result: ScenarioResult) -> None:
+        if progress:
+            progress(f"[{i + 1}/{n}] {result.scenario.key}")
+        results[i] = result
+        if on_result:
+            on_result(result)
+
+    def run_here(unit: list[int]) -> None:
+        # Not ``progress`` itself: its "[i/n]" lines would count within the unit.
+        def passing(msg: str) -> None:
+            if progress and not msg.startswith("["):
+                progress(msg)
+
+        for i, result in zip(unit, run_all([scenarios[i] for i in unit], passing, engine),
+                             strict=True):
+            done(i, result)
+
+    away: dict[Future[tuple[list[Outcome], list[str]]], list[int]] = {}
+    here: list[list[int]] = []
+    for unit in work_units(scenarios, engine) if offload is not None else []:
+        future = offload([scenarios[i] for i in unit], engine)
+        if future is None:
+            here.append(unit)
+        else:
+            away[future] = unit
+
+    def harvest(future: Future[tuple[list[Outcome], list[str]]]) -> None:
+        outcomes, messages = future.result()
+        if progress:
+            for msg in messages:
+                progress(msg)
+        for i, (rows, trace, error) in zip(away.pop(future), outcomes, strict=True):
+            done(i, ScenarioResult(scenarios[i], rows, trace, error))
+
+    if offload is None:
+        if engine is Engine.ROLLOUT:
+            for i, result in sorted(_run_batched(scenarios).items()):
+                done(i, result)
+        for i in range(n):
+            if i not in results:
+                results[i] = run_scenario(scenarios[i], progress, engine=engine)
+                done(i, results[i])
+    else:
+        for unit in here:
+            run_here(unit)
+        # While the workers are busy (or still starting), this process takes the units
+        # they have not started yet, smallest (last) first.
+        for future, unit in reversed(list(away.items())):
+            for finished in [f for f in away if f.done()]:
+                harvest(finished)
+            if future.cancel():
+                del away[future]
+                run_here(unit)
+        for future in as_completed(list(away)):
+            harvest(future)
+    return [results[i] for i in range(n)]
+
+
+def work_units(scenarios: Sequence[Scenario], engine: Engine | str = Engine.ROLLOUT
+               ) -> list[list[int]]:
+    """Indices of independent units of work.
+
+    The batches of :func:`batch_key` (most simulated time first), then the measurement
+    scenarios one by one; with ``"loop"``, every scenario alone.
+    """
+    engine = parse_choice(Engine, engine, "engine")
+    groups: dict[tuple[str, str, float], list[int]] = {}
+    alone: list[list[int]] = []
     for i, s in enumerate(scenarios):
-        if i not in results:
-            if progress:
-                progress(f"[{i + 1}/{len(scenarios)}] {s.key}")
-            results[i] = run_scenario(s, progress, engine=engine)
-    return [results[i] for i in range(len(scenarios))]
+        if s.kind is ScenarioKind.MEASUREMENT or engine is Engine.LOOP:
+            alone.append([i])
+        else:
+            groups.setdefault(batch_key(s), []).append(i)
+    batches = sorted(groups.values(), key=lambda u: -sum(scenarios[i].duration for i in u))
+    return batches + alone
 
 
 def _simulate_prepared(prepared: list[Prepared], nthread: int) -> list[np.ndarray]:
@@ -259,8 +351,7 @@ def _simulate_prepared(prepared: list[Prepared], nthread: int) -> list[np.ndarra
     return simulate_batch(first.model, first.data, [p.controls for p in prepared], nthread)
 
 
-def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None
-                 ) -> dict[int, ScenarioResult]:
+def _run_batched(scenarios: Sequence[Scenario]) -> dict[int, ScenarioResult]:
     """The scenarios that ran cleanly in batches, by index; failures are left out."""
     groups: dict[tuple[str, str, float], list[int]] = {}
     for i, s in enumerate(scenarios):
@@ -269,30 +360,44 @@ def _run_batched(scenarios: Sequence[Scenario], progress: Callable[[str], None] 
     # One core stays with the Python thread that schedules and measures.
     nthread = max(1, (os.cpu_count() or 1) - 1)
     results: dict[int, ScenarioResult] = {}
+    # Each robot is compiled once; every scenario gets its own copy (adapters set the
+    # actuation mode on it), identical to a fresh load.
+    compiled: dict[str, mujoco.MjModel] = {}
     pending: list[tuple[list[tuple[int, Prepared]], Future[list[np.ndarray]]]] = []
+
+    def finish(prepared: list[tuple[int, Prepared]], future: Future[list[np.ndarray]]
+               ) -> None:
+        try:
+            batch = future.result()
+        except Exception:
+            return
+        for (i, prep), states in zip(prepared, batch, strict=True):
+            trace = Trace()
+            try:
+                results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace),
+                                            trace)
+            except Exception:
+                continue
+
     with ThreadPoolExecutor(max_workers=1, thread_name_prefix="wmr-rollout") as pool:
         for members in groups.values():
             prepared = []
             for i in members:
+                robot = scenarios[i].robot
                 try:
-                    prepared.append((i, prepare(scenarios[i])))
+                    if robot not in compiled:
+                        compiled[robot] = load(robot)
+                    model = copy.copy(compiled[robot])
+                    prepared.append((i, prepare(scenarios[i], model=model)))
                 except Exception:  # reported by the one-at-a-time rerun
                     continue
+            # The batch before the one just submitted has had a batch's scheduling time
+            # to simulate: measure it now, so that results come out steadily.
+            if len(pending) > 1:
+                finish(*pending.pop(0))
             if prepared:
                 pending.append((prepared, pool.submit(_simulate_prepared,
                                                       [p for _, p in prepared], nthread)))
         for prepared, future in pending:
-            try:
-                batch = future.result()
-            except Exception:
-                continue
-            for (i, prep), states in zip(prepared, batch, strict=True):
-                if progress:
-                    progress(f"[{i + 1}/{len(scenarios)}] {prep.scenario.key}")
-                trace = Trace()
-                try:
-                    results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace),
-                                                trace)
-                except Exception:
-                    continue
+            finish(prepared, future)
     return results

@@ -1,0 +1,137 @@
+"""The report's figures: a scenario's states against the model, or a measurement's curves.
+
+Drawing only (matplotlib's Agg backend, imported when a figure is drawn); every file is
+written atomically. `wmr validate` draws them (:mod:`wmr_mujoco.validation.pool`) in worker
+processes while the scenarios still run.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from wmr_mujoco.analytic.planar import wrap_angle
+from wmr_mujoco.atomic import atomic_path
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from wmr_mujoco.validation.metrics import Series, Trace
+
+
+def _plot_states(axes: Sequence[Axes], tr: dict[str, np.ndarray], trace: Trace) -> None:
+    """Panels of a kinematic or dynamic run, chosen by the adapter's state."""
+    t, sim, ana = tr["time"], tr["sim"], tr["analytic"]
+    names, units = trace.state_names, trace.state_units
+    if trace.is_pose:
+        axes[0].plot(sim[:, 0], sim[:, 1], label="MuJoCo")
+        axes[0].plot(ana[:, 0], ana[:, 1], "--", label="analytic")
+        axes[0].set(xlabel="x [m]", ylabel="y [m]", title="trajectory")
+        axes[0].set_aspect("equal", adjustable="datalim")
+        axes[1].plot(t, 1000 * np.linalg.norm(sim[:, :2] - ana[:, :2], axis=1))
+        axes[1].set(xlabel="t [s]", ylabel="position error [mm]", title="error over time")
+        rest = range(3, len(names))
+    else:
+        axes[0].plot(t, sim[:, 0], label="MuJoCo")
+        axes[0].plot(t, ana[:, 0], "--", label="analytic")
+        axes[0].set(xlabel="t [s]", ylabel=f"{names[0]} [{units[0]}]", title=names[0])
+        axes[1].plot(t, sim[:, 1:] - ana[:, 1:])
+        axes[1].set(xlabel="t [s]", title="MuJoCo − model",
+                    ylabel=", ".join(f"{n} [{u}]" for n, u in zip(names[1:], units[1:],
+                                                                   strict=True)))
+        rest = range(len(names), len(names))
+    axes[0].legend()
+    if len(rest):
+        for i in rest:
+            axes[2].plot(t, sim[:, i], label=f"{names[i]} [{units[i]}] MuJoCo")
+            axes[2].plot(t, ana[:, i], "--", label=f"{names[i]} model")
+        axes[2].set(xlabel="t [s]", title="further states")
+        axes[2].legend(fontsize=7)
+    elif tr["slip"].ndim == 2 and tr["slip"].shape[1]:
+        axes[2].plot(t, 1000 * tr["slip"])
+        axes[2].set(xlabel="t [s]", ylabel="lateral slip [mm/s]", title="slip at wheel contacts")
+    elif trace.is_pose:
+        axes[2].plot(t, np.degrees(wrap_angle(sim[:, 2] - ana[:, 2])))
+        axes[2].set(xlabel="t [s]", ylabel="heading error [deg]", title="heading error")
+    else:
+        axes[2].set_axis_off()
+
+
+def _plot_series(axes: Sequence[Axes], series: Sequence[Series]) -> None:
+    """A measurement's own curves, one panel per pair of axis labels (three at most)."""
+    groups: dict[tuple[str, str], list[Series]] = {}
+    for s in series:
+        groups.setdefault((s.xlabel, s.ylabel), []).append(s)
+    for ax, ((xlabel, ylabel), members) in zip(axes, list(groups.items())[:len(axes)],
+                                                strict=False):
+        for s in members:
+            colour = {} if s.color is None else {"color": s.color}
+            ax.plot(s.x, s.y, s.style, label=s.label, ms=4, **colour)
+        ax.set(xlabel=xlabel, ylabel=ylabel)
+        ax.legend(fontsize=7)
+    for ax in axes[len(groups):]:
+        ax.set_axis_off()
+
+
+def _fix_layout(fig: Figure) -> None:
+    """Lay the figure out once (``tight_layout``) and keep that layout for saving.
+
+    ``tight_layout`` leaves a placeholder layout engine behind, which makes ``savefig``
+    draw the whole figure once more before drawing it to the file; the layout is final
+    here, so the engine goes and the figure is drawn once.
+    """
+    fig.tight_layout()
+    fig.set_layout_engine(None)
+
+
+def plot_series(series: Sequence[Series], path: Path, title: str = "") -> Path:
+    """One figure of curves alone (e.g. a measurement's series for a model README).
+
+    One panel per pair of axis labels, as in the report (three at most).
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    panels = min(3, max(1, len({(s.xlabel, s.ylabel) for s in series})))
+    fig, axes = plt.subplots(1, panels, figsize=(7 * panels, 4.5), squeeze=False)
+    _plot_series(axes[0], series)
+    if title:
+        fig.suptitle(title)
+    _fix_layout(fig)
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=100)
+    plt.close(fig)
+    return path
+
+
+def plot_trace(trace: Trace, title: str, path: Path) -> Path | None:
+    """A scenario's figure: trajectory (physics over analytic), error, slip or states.
+
+    A measurement's own curves (``trace.series``) are plotted instead. Returns None when
+    there is nothing to plot.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    tr = trace.arrays()
+    if tr["time"].size < 2 and not trace.series:
+        return None
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    if trace.series:
+        _plot_series(axes, trace.series)
+    else:
+        _plot_states(axes, tr, trace)
+    fig.suptitle(title)
+    _fix_layout(fig)
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=80)
+    plt.close(fig)
+    return path
