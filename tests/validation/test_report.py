@@ -73,6 +73,20 @@ def test_summary_line_counts_open_targets():
     assert "open" in text_table([res], judged_only=True)
 
 
+def test_summary_headline_is_a_judged_row_and_the_verdict_counts_open_ones():
+    """An open row comes first here; the headline must still be the judged one."""
+    from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
+    from wmr_mujoco.validation.report import summary_table
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    s = Scenario("omni3", "x", (const(0.0),), duration=0.1)
+    rows = [Row.of("omni3", "x", Metric("open one", 2.0, "%", Target.open(1.0, "i", "why"))),
+            Row.of("omni3", "x", Metric("judged one", 0.5, "%", Target.requirement(1.0, "i")))]
+    line = summary_table([ScenarioResult(s, rows, Trace())]).splitlines()[-1]
+    assert "judged one: 0.5 %" in line and "open one" not in line
+    assert line.endswith("| pass (1 open) |")
+
+
 def test_summary_headline_escapes_pipes():
     from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
     from wmr_mujoco.validation.report import summary_table

@@ -121,13 +121,16 @@ def summary_table(results: Sequence[ScenarioResult]) -> str:
              "error | final position error | worst heading error | final heading error | "
              "worst lateral slip RMS | pass |", "|---|---|---|---|---|---|---|---|---|---|"]
     for res in results:
-        judged = [r for r in res.rows if r.target is not None]
+        judged = [r for r in res.rows if r.target is not None and not r.open]
         head = judged[0] if judged else (res.rows[0] if res.rows else None)
+        n_open = sum(r.open for r in res.rows)
         headline = f"{head.metric}: {_fmt(head.value)} {head.unit}" if head else ""
         rms_m = _value(res, "RMS position error", "m")
         slips = [r.value for r in res.rows if r.metric.startswith("lateral slip RMS")]
         slip = f"{1000 * max(slips):.3f} mm/s" if slips else ""
         verdict = "pass" if res.passed else f"FAIL{': ' + res.error if res.error else ''}"
+        if n_open:  # open targets never decide the verdict; say that they are there
+            verdict += f" ({n_open} open)"
         cells = [_cell(_value(res, "worst position error", "% of path"), " %"),
                  _cell(None if rms_m is None else 1000 * rms_m, " mm"),
                  _cell(_value(res, "final position error", "% of path"), " %"),
