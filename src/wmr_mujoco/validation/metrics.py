@@ -272,6 +272,31 @@ def rms(values: Sequence[float] | np.ndarray) -> float:
     return float(np.sqrt(np.mean(v ** 2))) if v.size else float("nan")
 
 
+def twist_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float,
+                  targets: dict[str, Target | None] | None = None) -> list[Metric]:
+    """Worst error of u, v (m/s) and r (rad/s), each in % of its scale, and RMS.
+
+    ``ref`` and ``other``: body twists ``(u, v, r)`` over the run, shape (N, 3). Scales,
+    with ``L`` = ``distance`` the lever of ``r`` at the wheels: u and v,
+    ``max(peak |(u, v)|, L · peak |r|)``; r, that over L (a component that stays zero is
+    judged against the speed the run's motion gives the wheels). Each worst error is
+    judged against ``targets[name]`` where given.
+    """
+    targets = targets or {}
+    speed = float(np.max(np.linalg.norm(ref[:, :2], axis=1)))
+    peak_r = float(np.max(np.abs(ref[:, 2])))
+    lin = max(speed, distance * peak_r, 1e-9)
+    out = []
+    for j, (name, unit, scale) in enumerate((("u", "m/s", lin), ("v", "m/s", lin),
+                                             ("r", "rad/s", lin / distance))):
+        err = np.abs(other[:, j] - ref[:, j])
+        out += [Metric(f"{model}: worst {name} error", 100 * float(err.max()) / scale,
+                       "% of peak", targets.get(name), f"max |{name} − {name}_{model}| = "
+                       f"{err.max():.3g} {unit}; scale {scale:.3g} {unit}"),
+                Metric(f"{model}: RMS {name} error", rms(err), unit)]
+    return out
+
+
 def pose_tracking(scenario: Scenario, trace: Trace, adapter: Adapter,
                   targets: Mapping[str, Target]) -> list[Metric]:
     """Worst, RMS and final position and heading errors over the run (module docstring)."""

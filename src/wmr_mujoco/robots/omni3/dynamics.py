@@ -27,7 +27,7 @@ from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams, RobotParams
 from wmr_mujoco.robots.omni3.runs import Run, RunSpec, cached_runs, hybrid
-from wmr_mujoco.validation.metrics import Metric, Series, Target, rms
+from wmr_mujoco.validation.metrics import Metric, Series, Target, rms, twist_metrics
 from wmr_mujoco.validation.omni_wheels import (
     DIRECTIONS_DEG,
     SPEED,
@@ -121,27 +121,6 @@ def pose_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float
             Metric(f"{model}: RMS position error", 1000 * rms(dist), "mm"),
             Metric(f"{model}: worst heading error", float(head.max()), "deg", heading_target),
             Metric(f"{model}: RMS heading error", rms(head), "deg")]
-
-
-def twist_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float,
-                  targets: dict[str, Target | None] | None = None) -> list[Metric]:
-    """Worst error of u, v (m/s) and r (rad/s), each in % of its scale, and RMS.
-
-    Each worst error is judged against ``targets[name]`` where given.
-    """
-    targets = targets or {}
-    speed = float(np.max(np.linalg.norm(ref[:, :2], axis=1)))
-    peak_r = float(np.max(np.abs(ref[:, 2])))
-    lin = max(speed, distance * peak_r, 1e-9)
-    out = []
-    for j, (name, unit, scale) in enumerate((("u", "m/s", lin), ("v", "m/s", lin),
-                                             ("r", "rad/s", lin / distance))):
-        err = np.abs(other[:, j] - ref[:, j])
-        out += [Metric(f"{model}: worst {name} error", 100 * float(err.max()) / scale,
-                       "% of peak", targets.get(name), f"max |{name} − {name}_{model}| = "
-                       f"{err.max():.3g} {unit}; scale {scale:.3g} {unit}"),
-                Metric(f"{model}: RMS {name} error", rms(err), unit)]
-    return out
 
 
 def plot_series(run: Run, models: dict[str, tuple[np.ndarray, np.ndarray]]) -> list[Series]:
