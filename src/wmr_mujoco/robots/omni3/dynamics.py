@@ -24,6 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams, RobotParams
 from wmr_mujoco.robots.omni3.runs import Run, RunSpec, cached_runs, hybrid
@@ -181,12 +182,7 @@ def lagrange_twists(params: RobotParams | None, torques: np.ndarray, twist0: np.
     out[0] = twist0
     nu = np.asarray(twist0, float)
     for k in range(n):
-        f = lambda v: dyn.body_acceleration(v, torques)  # noqa: E731
-        k1 = f(nu)
-        k2 = f(nu + 0.5 * dt * k1)
-        k3 = f(nu + 0.5 * dt * k2)
-        k4 = f(nu + dt * k3)
-        nu = nu + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        nu = rk4_step(dyn.body_acceleration, nu, torques, dt)
         out[k + 1] = nu
     return out
 
