@@ -272,6 +272,17 @@ def rms(values: Sequence[float] | np.ndarray) -> float:
     return float(np.sqrt(np.mean(v ** 2))) if v.size else float("nan")
 
 
+def worst_and_rms(name: str, err: np.ndarray, unit: str, target: Target,
+               note: str = "") -> list[Metric]:
+    """``worst <name>`` judged (``max |err|`` over the run) and ``RMS <name>`` reported.
+
+    ``RMS = √(mean(err²))`` (:func:`rms`); both in ``unit``.
+    """
+    e = np.abs(np.asarray(err, float))
+    return [Metric(f"worst {name}", float(e.max()), unit, target, note),
+            Metric(f"RMS {name}", rms(e), unit)]
+
+
 def twist_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float,
                   targets: dict[str, Target | None] | None = None) -> list[Metric]:
     """Worst error of u, v (m/s) and r (rad/s), each in % of its scale, and RMS.
