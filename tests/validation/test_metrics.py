@@ -108,3 +108,11 @@ def test_twist_metrics_scale_each_component_by_hand():
     assert rows["M: worst v error"].value == 0.0
     assert rows["M: worst r error"].value == pytest.approx(2.0, rel=1e-12)
     assert rows["M: RMS r error"].value == pytest.approx(0.03 / 2 ** 0.5, rel=1e-12)
+
+
+def test_row_value_matches_name_and_unit():
+    rows = [Row.of("r", "s", Metric("worst x", 1.0, "m")),
+            Row.of("r", "s", Metric("worst x", 2.0, "%"))]
+    assert mt.row_value(rows, "worst x", "%") == 2.0
+    assert mt.row_value(rows, "worst x", "deg") is None
+    assert np.isnan(mt.row_value(rows, "worst y", "m", float("nan")))

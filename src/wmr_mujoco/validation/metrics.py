@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, NamedTuple, Protocol
+from typing import TYPE_CHECKING, NamedTuple, Protocol, overload
 
 import mujoco
 import numpy as np
@@ -173,6 +173,20 @@ class Row:
                 self.value) <= self.target
             return "open (met)" if meets else "open"
         return "" if self.passed is None else ("pass" if self.passed else "FAIL")
+
+
+@overload
+def row_value(rows: Sequence[Row], metric: str, unit: str) -> float | None: ...
+
+
+@overload
+def row_value(rows: Sequence[Row], metric: str, unit: str, default: float) -> float: ...
+
+
+def row_value(rows: Sequence[Row], metric: str, unit: str,
+              default: float | None = None) -> float | None:
+    """The value of the first row named ``metric`` in ``unit`` (``default`` if none)."""
+    return next((r.value for r in rows if r.metric == metric and r.unit == unit), default)
 
 
 @dataclass(frozen=True)
