@@ -11,6 +11,7 @@ import math
 
 from wmr_mujoco.analytic.planar import path_length
 from wmr_mujoco.robots import ROBOTS
+from wmr_mujoco.validation.metrics import row_value
 from wmr_mujoco.validation.runner import run_scenario
 
 
@@ -28,9 +29,8 @@ def run_demo() -> str:
             continue
         sim = result.trace.arrays()["sim"]
         x, y, heading = sim[-1, :3]
-        worst, final = (next((r.value for r in result.rows if r.metric == f"{which} position "
-                              "error" and r.unit == "% of path"), math.nan)
-                        for which in ("worst", "final"))
+        worst, final = (row_value(result.rows, f"{which} position error", "% of path",
+                                  math.nan) for which in ("worst", "final"))
         lines.append(f"{spec.name:<9} {scenario.name:<22} {path_length(sim[:, :2]):7.3f} "
                      f"{x:7.3f}, {y:7.3f} {math.degrees(heading):7.1f}° {worst:16.3f} % "
                      f"{final:8.3f} %")

@@ -2,7 +2,7 @@
 
 import pytest
 
-from wmr_mujoco.docs_sync.markers import has_markers, markers, replace_between
+from wmr_mujoco.docs_sync.markers import fixed, has_markers, markers, replace_between
 
 
 def test_replace_between_keeps_the_rest(tmp_path):
@@ -22,3 +22,8 @@ def test_bad_markers_are_refused_and_the_file_kept(tmp_path, text):
     with pytest.raises(ValueError, match="must hold '<!-- t: begin -->' once"):
         replace_between(path, "t", "x")
     assert path.read_text() == text
+
+
+def test_fixed_cells():
+    assert (fixed(1.23456), fixed(1.23456, 3), fixed(2.5, 0)) == ("1.23", "1.235", "2")
+    assert fixed(float("nan")) == fixed(float("inf")) == "n/a"

@@ -87,3 +87,32 @@ def test_open_target_is_shown_and_counted_not_judged():
     assert judged.passed is False and not judged.open and judged.verdict == "FAIL"
     with pytest.raises(ValueError, match="Target.value"):
         Target.open(0.0, "x", "y")
+
+
+def test_worst_and_rms_by_hand():
+    # Errors (3, −4): worst |e| = 4, RMS = √((9 + 16)/2) = √12.5; only the worst is judged.
+    worst, rms_row = mt.worst_and_rms("x", np.array([3.0, -4.0]), "m", Target.derived(5, "d"))
+    assert (worst.name, worst.value, worst.target.value) == ("worst x", 4.0, 5)
+    assert (rms_row.name, rms_row.target) == ("RMS x", None)
+    assert rms_row.value == pytest.approx(12.5 ** 0.5, rel=1e-15)
+
+
+def test_twist_metrics_scale_each_component_by_hand():
+    # Reference: u peaks at 0.3 m/s, r at 1 rad/s, L = 0.2 m: the u, v scale is
+    # max(0.3, 0.2·1) = 0.3 m/s, the r scale 0.3/0.2 = 1.5 rad/s. Errors 0.003 m/s in u
+    # (1 % of 0.3), 0 in v, 0.03 rad/s in r (2 % of 1.5).
+    ref = np.array([[0.0, 0.0, 0.0], [0.3, 0.0, 1.0]])
+    other = ref + np.array([[0.0, 0.0, 0.0], [0.003, 0.0, 0.03]])
+    rows = {m.name: m for m in mt.twist_metrics("M", ref, other, 0.2)}
+    assert rows["M: worst u error"].value == pytest.approx(1.0, rel=1e-12)
+    assert rows["M: worst v error"].value == 0.0
+    assert rows["M: worst r error"].value == pytest.approx(2.0, rel=1e-12)
+    assert rows["M: RMS r error"].value == pytest.approx(0.03 / 2 ** 0.5, rel=1e-12)
+
+
+def test_row_value_matches_name_and_unit():
+    rows = [Row.of("r", "s", Metric("worst x", 1.0, "m")),
+            Row.of("r", "s", Metric("worst x", 2.0, "%"))]
+    assert mt.row_value(rows, "worst x", "%") == 2.0
+    assert mt.row_value(rows, "worst x", "deg") is None
+    assert np.isnan(mt.row_value(rows, "worst y", "m", float("nan")))

@@ -38,6 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from wmr_mujoco.analytic.checks import as_array, positive
+from wmr_mujoco.analytic.planar import wrap_angle
 
 
 def _finite(name: str, value: float) -> float:
@@ -97,7 +98,7 @@ class RollerGeometry:
 
     def phases(self, theta: float) -> np.ndarray:
         """``φ_k = wrap(ζ_k + θ − π)`` in (−π, π]."""
-        return np.angle(np.exp(1j * (self.angles + theta - math.pi)))
+        return wrap_angle(self.angles + theta - math.pi)
 
     def lowest(self, theta: float) -> int:
         """Index of the roller in contact: the one with the smallest |φ_k|."""
@@ -590,7 +591,7 @@ class _Geometry:
 def _lowest(model: OmniHybrid, thetas: np.ndarray) -> np.ndarray:
     """``σ = argmin_k |φ_k|`` for (B, 3) wheel angles."""
     g = model.rollers
-    phases = np.angle(np.exp(1j * (g.angles + thetas[..., None] - math.pi)))
+    phases = wrap_angle(g.angles + thetas[..., None] - math.pi)
     return np.argmin(np.abs(phases), axis=-1)
 
 

@@ -24,7 +24,7 @@ import numpy as np
 
 from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.bench.trials import TrialRun, run_trial
-from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.docs_sync.markers import fixed, replace_between
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import mecanum4, omni3
@@ -109,10 +109,6 @@ def study_configs() -> list[tuple[str, MecanumParams]]:
             for n in COUNTS for shape in MecanumParams.ROLLER_SHAPES]
 
 
-def _fmt(x: float, digits: int = 2) -> str:
-    return "n/a" if not np.isfinite(x) else f"{x:.{digits}f}"
-
-
 def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
     """Markdown table: ramp and step tracking, pitch-averaged model / ideal model."""
     lines = ["| rollers | ripple % | derived sideways shortfall % | ramps: worst position "
@@ -124,10 +120,10 @@ def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
         cells = []
         for kind in ("ramp", "step"):
             pos, head, pos_i, head_i = s.tracking.get(kind, (np.nan,) * 4)
-            cells += [f"{_fmt(pos, 3)} / {_fmt(pos_i, 3)}", f"{_fmt(head)} / {_fmt(head_i)}"]
-        lines.append(f"| {label} | {_fmt(s.ripple_pct, 3)} | "
-                     f"{_fmt(s.sideways_shortfall_pct)} | " + " | ".join(cells)
-                     + f" | {_fmt(s.real_time_factor, 0)}× |")
+            cells += [f"{fixed(pos, 3)} / {fixed(pos_i, 3)}", f"{fixed(head)} / {fixed(head_i)}"]
+        lines.append(f"| {label} | {fixed(s.ripple_pct, 3)} | "
+                     f"{fixed(s.sideways_shortfall_pct)} | " + " | ".join(cells)
+                     + f" | {fixed(s.real_time_factor, 0)}× |")
     return "\n".join(lines)
 
 
@@ -169,8 +165,8 @@ def long_runs_table(params: MecanumParams, duration: float = LONG_DURATION) -> s
             if judged is None:
                 continue
             target = "n/a" if judged.target is None else f"≤ {judged.target:.3g} {unit}"
-            lines.append(f"| {name} | {metric} | {_fmt(judged.value, 3)} {unit} | {target} "
-                         f"| {_fmt(ideal.value if ideal else np.nan, 3)} {unit} |")
+            lines.append(f"| {name} | {metric} | {fixed(judged.value, 3)} {unit} | {target} "
+                         f"| {fixed(ideal.value if ideal else np.nan, 3)} {unit} |")
     return "\n".join(lines)
 
 

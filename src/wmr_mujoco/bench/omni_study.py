@@ -25,7 +25,7 @@ from wmr_mujoco.bench.trials import (
     run_trial,
     standard_trials,
 )
-from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.docs_sync.markers import fixed, replace_between
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.models.paths import MODELS_DIR
@@ -114,10 +114,6 @@ def study_configs() -> list[tuple[str, OmniParams]]:
     return configs
 
 
-def _fmt(x: float, digits: int = 2) -> str:
-    return "n/a" if not np.isfinite(x) else f"{x:.{digits}f}"
-
-
 def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
     """Markdown table of summaries."""
     lines = ["| model | rolling-radius ripple % | worst position error % of path | "
@@ -125,9 +121,9 @@ def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
              "real-time factor |", "|---|---|---|---|---|---|---|"]
     for s in rows:
         label = f"**{s.label} (default)**" if s.label == default_label else s.label
-        lines.append(f"| {label} | {_fmt(s.ripple_pct, 3)} | {_fmt(s.worst_position_pct, 3)} | "
-                     f"{_fmt(s.worst_heading_deg)} | {_fmt(s.yaw_ripple_pct, 1)} | "
-                     f"{_fmt(s.roller_rate_err_pct, 1)} | {_fmt(s.real_time_factor, 0)}× |")
+        lines.append(f"| {label} | {fixed(s.ripple_pct, 3)} | {fixed(s.worst_position_pct, 3)} | "
+                     f"{fixed(s.worst_heading_deg)} | {fixed(s.yaw_ripple_pct, 1)} | "
+                     f"{fixed(s.roller_rate_err_pct, 1)} | {fixed(s.real_time_factor, 0)}× |")
     return "\n".join(lines)
 
 

@@ -29,7 +29,7 @@ from wmr_mujoco.robots import RobotSpec
 from wmr_mujoco.sim.engine import Engine, simulate
 from wmr_mujoco.sim.timing import timed
 from wmr_mujoco.validation.adapters import AdapterFactory, body_pose
-from wmr_mujoco.validation.metrics import Target, Trace
+from wmr_mujoco.validation.metrics import Target, Trace, row_value
 from wmr_mujoco.validation.omni_wheels import (
     DIRECTIONS_DEG,
     SPEED,
@@ -219,8 +219,7 @@ class TrialRun:
 
     def value(self, metric: str, unit: str) -> float:
         """A metric's value (NaN if absent)."""
-        return next((r.value for r in self.result.rows if r.metric == metric
-                     and r.unit == unit), float("nan"))
+        return row_value(self.result.rows, metric, unit, float("nan"))
 
 
 def run_trial(s: Scenario, params: RobotParams | None = None) -> TrialRun:

@@ -6,6 +6,7 @@ markers is replaced wholesale by what a generator produced.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from wmr_mujoco.atomic import write_text_atomic
@@ -39,3 +40,8 @@ def replace_between(path: Path, key: str, body: str) -> None:
     head, rest = text.split(begin, 1)
     _, tail = rest.split(end, 1)
     write_text_atomic(Path(path), f"{head}{begin}\n{body.strip()}\n{end}{tail}")
+
+
+def fixed(x: float, digits: int = 2) -> str:
+    """A generated table's cell: ``x`` to ``digits`` decimals, ``n/a`` when not finite."""
+    return "n/a" if not math.isfinite(x) else f"{x:.{digits}f}"

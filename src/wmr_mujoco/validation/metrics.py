@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, NamedTuple, Protocol
+from typing import TYPE_CHECKING, NamedTuple, Protocol, overload
 
 import mujoco
 import numpy as np
@@ -175,6 +175,20 @@ class Row:
         return "" if self.passed is None else ("pass" if self.passed else "FAIL")
 
 
+@overload
+def row_value(rows: Sequence[Row], metric: str, unit: str) -> float | None: ...
+
+
+@overload
+def row_value(rows: Sequence[Row], metric: str, unit: str, default: float) -> float: ...
+
+
+def row_value(rows: Sequence[Row], metric: str, unit: str,
+              default: float | None = None) -> float | None:
+    """The value of the first row named ``metric`` in ``unit`` (``default`` if none)."""
+    return next((r.value for r in rows if r.metric == metric and r.unit == unit), default)
+
+
 @dataclass(frozen=True)
 class Series:
     """A curve for the report's plots (a measurement scenario's own time series).
@@ -270,6 +284,42 @@ def rms(values: Sequence[float] | np.ndarray) -> float:
     """Root mean square (NaN for no values)."""
     v = np.asarray(values, float)
     return float(np.sqrt(np.mean(v ** 2))) if v.size else float("nan")
+
+
+def worst_and_rms(name: str, err: np.ndarray, unit: str, target: Target,
+               note: str = "") -> list[Metric]:
+    """``worst <name>`` judged (``max |err|`` over the run) and ``RMS <name>`` reported.
+
+    ``RMS = √(mean(err²))`` (:func:`rms`); both in ``unit``.
+    """
+    e = np.abs(np.asarray(err, float))
+    return [Metric(f"worst {name}", float(e.max()), unit, target, note),
+            Metric(f"RMS {name}", rms(e), unit)]
+
+
+def twist_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float,
+                  targets: dict[str, Target | None] | None = None) -> list[Metric]:
+    """Worst error of u, v (m/s) and r (rad/s), each in % of its scale, and RMS.
+
+    ``ref`` and ``other``: body twists ``(u, v, r)`` over the run, shape (N, 3). Scales,
+    with ``L`` = ``distance`` the lever of ``r`` at the wheels: u and v,
+    ``max(peak |(u, v)|, L · peak |r|)``; r, that over L (a component that stays zero is
+    judged against the speed the run's motion gives the wheels). Each worst error is
+    judged against ``targets[name]`` where given.
+    """
+    targets = targets or {}
+    speed = float(np.max(np.linalg.norm(ref[:, :2], axis=1)))
+    peak_r = float(np.max(np.abs(ref[:, 2])))
+    lin = max(speed, distance * peak_r, 1e-9)
+    out = []
+    for j, (name, unit, scale) in enumerate((("u", "m/s", lin), ("v", "m/s", lin),
+                                             ("r", "rad/s", lin / distance))):
+        err = np.abs(other[:, j] - ref[:, j])
+        out += [Metric(f"{model}: worst {name} error", 100 * float(err.max()) / scale,
+                       "% of peak", targets.get(name), f"max |{name} − {name}_{model}| = "
+                       f"{err.max():.3g} {unit}; scale {scale:.3g} {unit}"),
+                Metric(f"{model}: RMS {name} error", rms(err), unit)]
+    return out
 
 
 def pose_tracking(scenario: Scenario, trace: Trace, adapter: Adapter,

@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from wmr_mujoco.atomic import write_text_atomic
-from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace
+from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace, row_value
 from wmr_mujoco.validation.plots import plot_trace
 from wmr_mujoco.validation.runner import ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
@@ -103,10 +103,6 @@ def markdown_table(results: Sequence[ScenarioResult]) -> str:
     return "\n".join(lines)
 
 
-def _value(res: ScenarioResult, metric: str, unit: str) -> float | None:
-    return next((r.value for r in res.rows if r.metric == metric and r.unit == unit), None)
-
-
 def _cell(value: float | None, suffix: str = "") -> str:
     return "" if value is None else f"{_fmt(value)}{suffix}"
 
@@ -125,17 +121,17 @@ def summary_table(results: Sequence[ScenarioResult]) -> str:
         head = judged[0] if judged else (res.rows[0] if res.rows else None)
         n_open = sum(r.open for r in res.rows)
         headline = f"{head.metric}: {_fmt(head.value)} {head.unit}" if head else ""
-        rms_m = _value(res, "RMS position error", "m")
+        rms_m = row_value(res.rows, "RMS position error", "m")
         slips = [r.value for r in res.rows if r.metric.startswith("lateral slip RMS")]
         slip = f"{1000 * max(slips):.3f} mm/s" if slips else ""
         verdict = "pass" if res.passed else f"FAIL{': ' + res.error if res.error else ''}"
         if n_open:  # open targets never decide the verdict; say that they are there
             verdict += f" ({n_open} open)"
-        cells = [_cell(_value(res, "worst position error", "% of path"), " %"),
+        cells = [_cell(row_value(res.rows, "worst position error", "% of path"), " %"),
                  _cell(None if rms_m is None else 1000 * rms_m, " mm"),
-                 _cell(_value(res, "final position error", "% of path"), " %"),
-                 _cell(_value(res, "worst heading error", "deg"), "°"),
-                 _cell(_value(res, "final heading error", "deg"), "°"), slip]
+                 _cell(row_value(res.rows, "final position error", "% of path"), " %"),
+                 _cell(row_value(res.rows, "worst heading error", "deg"), "°"),
+                 _cell(row_value(res.rows, "final heading error", "deg"), "°"), slip]
         lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {_cell_text(headline)} | "
                      f"{' | '.join(cells)} | {verdict} |")
     return "\n".join(lines)

@@ -12,13 +12,20 @@ from wmr_mujoco.validation.runner import run_scenario
 
 def test_forward_torques_follow_the_reduced_equations():
     # Equal torques drive straight ahead, where no roller turns; requirement (issue 5,
-    # omni3's): body velocity within 3 % of the reduced Lagrange model over the run.
+    # omni3's): each body-velocity component within 3 % of its peak of the reduced
+    # Lagrange model, worst over the whole run.
     s = dataclasses.replace(SPEC.scenario(JUDGED_PREFIX), duration=1.0)
     res = run_scenario(s)
-    judged = [r for r in res.rows if r.target is not None]
-    assert len(judged) == 2 and all(r.passed for r in judged)
-    ratio = next(r.value for r in res.rows if r.metric == "final u: MuJoCo / Lagrange")
-    assert ratio == pytest.approx(1.0, abs=0.03)
+    worst = {r.metric: r for r in res.rows if r.metric.startswith("Lagrange: worst")}
+    assert sorted(worst) == [f"Lagrange: worst {c} error" for c in "ruv"]
+    assert all(r.target == 3.0 and r.passed
+               for r in worst.values())
+    # Mirror symmetry about the x axis: equal torques on the FL/FR and RL/RR pairs (with
+    # rollers at ∓γ, mirror images) give no side force and no yaw moment, so v and r
+    # stay zero in both the physics and the model up to rounding (~1e-16 relative per
+    # step, 500 steps): far below 1e-6 % of peak.
+    for c in "vr":
+        assert worst[f"Lagrange: worst {c} error"].value < 1e-6
 
 
 def test_mixed_torques_judge_only_the_friction_bound():

@@ -24,7 +24,7 @@ from scipy.integrate import solve_ivp
 
 from wmr_mujoco.analytic.rolling_disc import RollingDisc, check_incline, check_lean, check_rate
 from wmr_mujoco.robots.disc_free.state import FreeRun, disc_from_model
-from wmr_mujoco.validation.metrics import Metric, Series, Target, rms
+from wmr_mujoco.validation.metrics import Metric, Series, Target, worst_and_rms
 from wmr_mujoco.validation.scenarios import MeasurementResult
 
 SOURCE = "issue 13"
@@ -37,14 +37,6 @@ LINEAR_LEAN = 0.05
 PRECESSION = (0.3, 0.6)
 #: Leaning start and energy: lean (rad) and contact speed (m/s).
 LEANING_START = (0.15, 1.0)
-
-
-def _worst_rms(name: str, err: np.ndarray, unit: str, target: Target,
-               note: str = "") -> list[Metric]:
-    """``worst <name>`` judged (max over the run) and ``RMS <name>`` reported."""
-    e = np.abs(np.asarray(err, float))
-    return [Metric(f"worst {name}", float(e.max()), unit, target, note),
-            Metric(f"RMS {name}", rms(e), unit)]
 
 
 def incline_runs(model: mujoco.MjModel, slope: float = 0.1, speed: float = 1.0,
@@ -82,7 +74,7 @@ def incline(model: mujoco.MjModel, slope: float = 0.1, speed: float = 1.0,
     acc = (v[w::w] - v[:-w:w]) / (t[w::w] - t[:-w:w])
     err = 100.0 * (acc / expected - 1.0)
     return MeasurementResult(
-        _worst_rms("incline acceleration error", err, "%",
+        worst_and_rms("incline acceleration error", err, "%",
                    Target.requirement(0.5, SOURCE),
                    f"g sin β/(1 + C/(m a²)) = {expected:.4g} m/s² at β = {slope:g} rad"),
         [Series("MuJoCo", t, v, ylabel="centre speed down the slope [m/s]"),
@@ -143,7 +135,7 @@ def stability_sweep(model: mujoco.MjModel, ratios: tuple[float, ...] = SWEEP_RAT
         Metric("runs growing/decaying against the prediction", float(wrong), "runs",
                Target.requirement(0.5, f"{SOURCE}: stable above v_c, unstable below "
                                        "(every run; 0.5 runs: none may be wrong)")),
-        *_worst_rms("λ² error", lam_err, "% of m g a/(A+m a²)", Target.derived(
+        *worst_and_rms("λ² error", lam_err, "% of m g a/(A+m a²)", Target.derived(
             4.0, "λ² = m g a (1 − v²/v_c²)/(A + m a²): 2 % on v_c moves λ² by "
                  "4 % of m g a/(A + m a²)")),
     ]
@@ -173,10 +165,10 @@ def steady_precession(model: mujoco.MjModel, lean: float = PRECESSION[0],
     dist = np.linalg.norm(rows[:, 1:3] - np.array([0.0, -radius]), axis=1)
     t = rows[:, 0]
     return MeasurementResult(
-        [*_worst_rms("lean error", 100.0 * (rows[:, 4] / lean - 1.0), "%",
+        [*worst_and_rms("lean error", 100.0 * (rows[:, 4] / lean - 1.0), "%",
                      Target.requirement(1.0, SOURCE),
                      f"θ = {lean:g} rad on a circle of R = {radius:g} m"),
-         *_worst_rms("circle radius error", 100.0 * (dist / radius - 1.0), "%",
+         *worst_and_rms("circle radius error", 100.0 * (dist / radius - 1.0), "%",
                      Target.requirement(1.0, SOURCE))],
         [Series("lean MuJoCo", t, np.degrees(rows[:, 4]), ylabel="lean [deg]"),
          Series("lean steady solution", t, np.full_like(t, math.degrees(lean)),
@@ -233,13 +225,13 @@ def leaning_start(model: mujoco.MjModel, lean: float = LEANING_START[0],
     window_len = float(path_len[window][-1])
     drift = 100.0 * (rows[:, 8] / rows[0, 8] - 1.0)
     metrics = [
-        *_worst_rms(f"contact path error, first {judged:g} s", 100.0 * gap[window]
+        *worst_and_rms(f"contact path error, first {judged:g} s", 100.0 * gap[window]
                     / window_len, "% of path", path_req, f"path {window_len:.3g} m"),
-        *_worst_rms(f"lean error, first {judged:g} s", lean_err[window], "deg", lean_req),
+        *worst_and_rms(f"lean error, first {judged:g} s", lean_err[window], "deg", lean_req),
         Metric(f"worst contact path error, {duration:g} s", 100.0 * float(gap.max())
                / float(path_len[-1]), "% of path", note=f"path {path_len[-1]:.3g} m"),
         Metric(f"worst lean error, {duration:g} s", float(np.abs(lean_err).max()), "deg"),
-        *_worst_rms("energy drift", drift, "%",
+        *worst_and_rms("energy drift", drift, "%",
                     Target.requirement(0.5, f"{SOURCE}: over 10 s"),
                     f"over {duration:g} s"),
     ]

@@ -15,6 +15,7 @@ import mujoco
 
 from wmr_mujoco.models.builders import mecanum4 as builder
 from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.mecanum4 import dynamics, kinematics, ripple
 from wmr_mujoco.robots.mecanum4.grouped import Group
 from wmr_mujoco.robots.spec import RobotSpec
@@ -48,10 +49,8 @@ TORQUE_MIXED = (0.04, -0.01, 0.03, 0.0)
 TORQUE_DURATION = 2.0
 
 TARGETS: Mapping[str, Target] = {
-    mt.POSITION_PCT: Target.requirement(1.0, f"{SOURCE}: position within 1 % of path "
-                                             "over the whole run"),
-    mt.HEADING_DEG: Target.requirement(1.0, f"{SOURCE}: heading within 1° over the "
-                                            "whole run"),
+    mt.POSITION_PCT: req.position_pct(1.0, SOURCE),
+    mt.HEADING_DEG: req.heading_deg(1.0, SOURCE),
     ROLLER_RATE_PCT: Target.requirement(5.0, "issue 3 (omni3's roller requirement, "
                                              "applied to these rollers): spin rates within "
                                              "5 % of slide speed / ρ (median over contacts)"),

@@ -24,18 +24,16 @@ from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4.geometry import layout
-from wmr_mujoco.validation.metrics import Metric, Target, Trace
+from wmr_mujoco.validation.metrics import Metric, Target, Trace, twist_metrics
 from wmr_mujoco.validation.omni_wheels import OmniDynamicsAdapter, dynamics_from_model
 from wmr_mujoco.validation.scenarios import Scenario
 
 #: Gravity, m/s².
 GRAVITY = 9.81
-#: Key of the body-velocity target of torque runs.
-VELOCITY_PCT = "body velocity error % of peak"
+#: Key of the body-velocity target of torque runs: each component's worst error.
+VELOCITY_PCT = "worst body velocity component error % of peak"
 #: Runs whose name starts with this are judged; the others are reported.
 JUDGED_PREFIX = "torque ahead"
-#: The judged window starts here, s: the first instants have almost no speed to scale by.
-JUDGED_AFTER = 0.5
 
 
 def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
@@ -49,27 +47,25 @@ def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
 
 def judge_torques(scenario: Scenario, trace: Trace, adapter: OmniDynamicsAdapter,
                   targets: Mapping[str, Target]) -> list[Metric]:
-    """Body-velocity error against the reduced model, worst over the run after 0.5 s.
+    """Each body-velocity component against the reduced model, worst and RMS over the run.
 
-    ``max_{t ≥ 0.5 s} |ν_sim − ν_model| / |ν_model|`` in %, with ``|ν|`` the norm of
-    ``(u, v, r)`` in m/s and rad/s (``r`` enters unscaled, as in issue 5's omni target);
-    and the final value. Judged on the straight-ahead runs only (module docstring).
+    ``max_t |x_sim − x_model|`` for x = u, v (m/s) and r (rad/s), each in % of its own
+    scale (:func:`~wmr_mujoco.validation.metrics.twist_metrics`, as omni3's torque runs),
+    with the lever of r at the wheels ``L = a + w``: a mecanum wheel turns at
+    ``θ̇ = (u ∓ v ∓ (a + w) r) / R``. Judged on the straight-ahead runs only (module
+    docstring); the others are reported.
     """
     tr = trace.arrays()
-    t, sim, ana = tr["time"], tr["sim"][:, 3:], tr["analytic"][:, 3:]
-    late = t >= JUDGED_AFTER
-    rel = 100.0 * np.linalg.norm(sim - ana, axis=1)[late] / np.linalg.norm(ana, axis=1)[late]
+    sim, ana = tr["sim"][:, 3:], tr["analytic"][:, 3:]
+    pos = np.abs(adapter.dynamics.layout.positions)
+    lever = float(np.max(pos[:, 0] + pos[:, 1]))
     judged = scenario.name.startswith(JUDGED_PREFIX)
     target = targets.get(VELOCITY_PCT) if judged else None
-    note = "" if judged else ("reported, not judged: sideways and turning torques lose "
-                              "speed at the roller hand-overs, not in the reduced model")
-    out = [Metric(f"worst body velocity error after {JUDGED_AFTER:g} s", float(rel.max()),
-                  "% of |ν_model|", target, note),
-           Metric("final body velocity error", float(rel[-1]), "% of |ν_model|")]
-    for i, name in enumerate(("u", "v", "r")):
-        if abs(ana[-1, i]) > 1e-6:
-            out.append(Metric(f"final {name}: MuJoCo / Lagrange", sim[-1, i] / ana[-1, i],
-                              "ratio"))
+    out = twist_metrics("Lagrange", sim, ana, lever, dict.fromkeys("uvr", target))
+    if not judged:
+        out = [m._replace(note=f"{m.note}; reported, not judged: sideways and turning "
+                               "torques lose speed at the roller hand-overs, not in the "
+                               "reduced model") if m.unit == "% of peak" else m for m in out]
     out.append(roller_force_ratio(scenario, trace, adapter))
     return out
 

@@ -24,10 +24,11 @@ from __future__ import annotations
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams, RobotParams
 from wmr_mujoco.robots.omni3.runs import Run, RunSpec, cached_runs, hybrid
-from wmr_mujoco.validation.metrics import Metric, Series, Target, rms
+from wmr_mujoco.validation.metrics import Metric, Series, Target, rms, twist_metrics
 from wmr_mujoco.validation.omni_wheels import (
     DIRECTIONS_DEG,
     SPEED,
@@ -123,27 +124,6 @@ def pose_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float
             Metric(f"{model}: RMS heading error", rms(head), "deg")]
 
 
-def twist_metrics(model: str, ref: np.ndarray, other: np.ndarray, distance: float,
-                  targets: dict[str, Target | None] | None = None) -> list[Metric]:
-    """Worst error of u, v (m/s) and r (rad/s), each in % of its scale, and RMS.
-
-    Each worst error is judged against ``targets[name]`` where given.
-    """
-    targets = targets or {}
-    speed = float(np.max(np.linalg.norm(ref[:, :2], axis=1)))
-    peak_r = float(np.max(np.abs(ref[:, 2])))
-    lin = max(speed, distance * peak_r, 1e-9)
-    out = []
-    for j, (name, unit, scale) in enumerate((("u", "m/s", lin), ("v", "m/s", lin),
-                                             ("r", "rad/s", lin / distance))):
-        err = np.abs(other[:, j] - ref[:, j])
-        out += [Metric(f"{model}: worst {name} error", 100 * float(err.max()) / scale,
-                       "% of peak", targets.get(name), f"max |{name} − {name}_{model}| = "
-                       f"{err.max():.3g} {unit}; scale {scale:.3g} {unit}"),
-                Metric(f"{model}: RMS {name} error", rms(err), unit)]
-    return out
-
-
 def plot_series(run: Run, models: dict[str, tuple[np.ndarray, np.ndarray]]) -> list[Series]:
     """Trajectory of each model, and its position and heading error over time."""
     out = [Series("physics", run.pose[:, 0], run.pose[:, 1], "x [m]", "y [m]")]
@@ -202,12 +182,7 @@ def lagrange_twists(params: RobotParams | None, torques: np.ndarray, twist0: np.
     out[0] = twist0
     nu = np.asarray(twist0, float)
     for k in range(n):
-        f = lambda v: dyn.body_acceleration(v, torques)  # noqa: E731
-        k1 = f(nu)
-        k2 = f(nu + 0.5 * dt * k1)
-        k3 = f(nu + 0.5 * dt * k2)
-        k4 = f(nu + dt * k3)
-        nu = nu + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        nu = rk4_step(dyn.body_acceleration, nu, torques, dt)
         out[k + 1] = nu
     return out
 

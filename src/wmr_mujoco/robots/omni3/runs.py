@@ -21,6 +21,7 @@ import numpy as np
 
 from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
 from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.sim.engine import STATE_SPEC, simulate, simulate_batch
@@ -144,7 +145,7 @@ def relative(pose: np.ndarray, start: np.ndarray) -> np.ndarray:
     """Pose in the start frame (every model starts at the origin, heading 0), ψ unwrapped."""
     d = pose[:, :2] - start[:2]
     c, s = math.cos(start[2]), math.sin(start[2])
-    heading = np.unwrap(np.angle(np.exp(1j * (pose[:, 2] - start[2]))))
+    heading = np.unwrap(wrap_angle(pose[:, 2] - start[2]))
     return np.column_stack([c * d[:, 0] + s * d[:, 1], -s * d[:, 0] + c * d[:, 1], heading])
 
 

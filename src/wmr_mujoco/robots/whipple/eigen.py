@@ -49,7 +49,7 @@ from wmr_mujoco.robots.whipple.rolling import (
     steady_rolling,
 )
 from wmr_mujoco.sim.linearize import step_map
-from wmr_mujoco.validation.metrics import Metric, Series, Target
+from wmr_mujoco.validation.metrics import Metric, Series, Target, rms
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
 #: A benchmark mode is slower than the contact: ``|s| τ_c`` below this.
@@ -221,7 +221,7 @@ def eigen_metrics(rows: Sequence[EigenRow]) -> list[Metric]:
     return [Metric(f"eigenvalue error / tolerance, worst over {span}", float(ratios[k]),
                    "1", EIGEN_TARGET, f"worst: {where[k]}"),
             Metric(f"eigenvalue error / tolerance, RMS over {span}",
-                   float(np.sqrt(np.mean(np.square(ratios)))), "1"),
+                   rms(ratios), "1"),
             Metric(f"eigenvalue error, worst over {span}", float(max(errors)), "1/s",
                    note=f"at {where[int(np.argmax(errors))]}")]
 
