@@ -55,13 +55,47 @@ def test_predict_is_the_closed_form_of_a_constant_twist():
      r"inputs\[1\] = 'fast'; give a finite number or a function of time"),
     (lambda: wmr.simulate("omni3", [0.1, math.nan, 0.0], 1.0), r"inputs\[1\] = nan"),
     (lambda: wmr.simulate("omni3", "fast", 1.0), r"inputs = 'fast'"),
-    (lambda: wmr.predict("omni3", [0.1, 0.0, 0.0], -1.0), r"duration = -1.0 s; must be > 0"),
+    (lambda: wmr.predict("omni3", [0.1, 0.0, 0.0], -1.0),
+     r"duration = -1.0; must be a finite real number of seconds in \(0, inf\)"),
+    (lambda: wmr.predict("omni3", [0.1, 0.0, 0.0], None), r"duration = None; must be a finite"),
+    (lambda: wmr.predict("omni3", [0.1, 0.0, 0.0], [1.0]), r"duration = \[1.0\]; must be"),
+    (lambda: wmr.predict("omni3", [0.1, 0.0, 0.0], "1.0"), r"duration = '1.0'; must be"),
+    (lambda: wmr.predict("omni3", [0.1, 0.0, 0.0], math.inf), r"duration = inf; must be"),
+    (lambda: wmr.predict("omni3", [0.1, 0.0, 0.0], 1.0, settle=-0.1),
+     r"settle = -0.1; must be a finite real number of seconds in \[0, inf\)"),
+    (lambda: wmr.predict("omni3", [0.1, 0.0, 0.0], 1.0, settle="0.5"), r"settle = '0.5'"),
+    (lambda: wmr.simulate("omni3", [0.1, 0.0], 1.0),
+     r"2 inputs; robot 'omni3' takes 3 input channels for kinematic scenarios"),
+    (lambda: wmr.compare("disc", [0.1, 0.0, 0.0], 1.0, kind="dynamic"),
+     r"3 inputs; robot 'disc' takes 2 input channels for dynamic scenarios"),
     (lambda: wmr.compare("segway", [0.1], 1.0), r"unknown robot 'segway'"),
     (lambda: wmr.simulate("omni3", [0.1, 0.0, 0.0], 1.0, kind="flying"), "flying"),
 ])
-def test_bad_arguments_are_value_errors(call, match):
+def test_bad_arguments_are_value_errors(call, match, monkeypatch):
+    """Refused before any work: MuJoCo is never stepped."""
+    import mujoco
+
+    def stepped(*args):
+        raise AssertionError("simulated before the arguments were checked")
+
+    monkeypatch.setattr(mujoco, "mj_step", stepped)
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_an_unknown_metric_is_a_value_error_listing_the_valid_ones():
+    from wmr_mujoco.api import Comparison
+    from wmr_mujoco.validation.metrics import Row
+
+    rows = [Row("disc", "s", "worst position error", 0.1, "m"),
+            Row("disc", "s", "worst heading error", 0.2, "°")]
+    comparison = Comparison(None, None, rows)  # type: ignore[arg-type]
+    assert comparison.metric("worst heading error") == 0.2
+    with pytest.raises(ValueError, match=r"metric 'slip' not found; valid metrics: "
+                       r"worst heading error \[°\], worst position error \[m\]"):
+        comparison.metric("slip")
+    with pytest.raises(ValueError, match=r"metric 'worst heading error' \[rad\] not found"):
+        comparison.metric("worst heading error", "rad")
 
 
 def test_trajectory_names_its_components():

@@ -109,6 +109,15 @@ def test_info_on_a_scene_file_reads_it_and_leaves_the_registry_alone():
     assert list(ROBOTS) == before
 
 
+def test_info_on_a_registered_robots_own_file_does_not_clash():
+    """``wmr info models/omni3/omni3.xml``: the file's stem is a registered robot's name."""
+    before = list(ROBOTS)
+    text = describe_file(get_spec("omni3").scene_path.parent / "omni3.xml")
+    assert text.startswith("omni3 (file omni3.xml): model file omni3.xml")
+    assert "parameters: none" in text and "wheel1" in text
+    assert list(ROBOTS) == before
+
+
 def test_info_on_a_missing_file_is_a_clear_error(tmp_path):
     with pytest.raises(ValueError, match="not found"):
         describe_file(tmp_path / "none.xml")

@@ -98,13 +98,29 @@ class Comparison:
         """A metric's value by name (and unit).
 
         Raises:
-            KeyError: no such metric; the message lists them.
+            ValueError: no such metric (and unit); the message lists the valid ones.
         """
         for r in self.metrics:
             if r.metric == name and (unit is None or r.unit == unit):
                 return r.value
-        raise KeyError(f"{name!r}; the metrics are "
-                       f"{', '.join(sorted({f'{r.metric} [{r.unit}]' for r in self.metrics}))}")
+        shown = repr(name) if unit is None else f"{name!r} [{unit}]"
+        raise ValueError(f"metric {shown} not found; valid metrics: "
+                         f"{', '.join(sorted({f'{r.metric} [{r.unit}]' for r in self.metrics}))}")
+
+
+def _seconds(name: str, value: object, zero_ok: bool) -> float:
+    """``value`` as seconds: a finite real number, > 0 (``>= 0`` with ``zero_ok``).
+
+    Raises:
+        ValueError: anything else (None, a string, a list, NaN, out of range), named with
+            the valid range.
+    """
+    valid = "[0, inf)" if zero_ok else "(0, inf)"
+    if (isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating))
+            or not np.isfinite(value) or value < 0 or (value == 0 and not zero_ok)):
+        raise ValueError(f"{name} = {value!r}; must be a finite real number of seconds "
+                         f"in {valid}")
+    return float(value)
 
 
 def _scenario(robot: str, inputs: Sequence[Input], duration: float, kind: ScenarioKind | str,
@@ -121,8 +137,9 @@ def _scenario(robot: str, inputs: Sequence[Input], duration: float, kind: Scenar
         else:
             raise ValueError(f"inputs[{i}] = {u!r}; give a finite number or a function of "
                              "time (s) returning one")
-    return Scenario(robot, "user inputs", tuple(signals), float(duration), kind,  # type: ignore[arg-type]
-                    world_frame, settle)
+    return Scenario(robot, "user inputs", tuple(signals),  # type: ignore[arg-type]
+                    _seconds("duration", duration, zero_ok=False), kind, world_frame,
+                    _seconds("settle", settle, zero_ok=True))
 
 
 def _prepare(robot: str, inputs: Sequence[Input], duration: float, params: RobotParams | None,

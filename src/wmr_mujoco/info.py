@@ -12,7 +12,7 @@ from wmr_mujoco.models.actuation import actuation_mode
 from wmr_mujoco.models.builders.common import NUSER_ACTUATOR
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
-from wmr_mujoco.robots import RobotSpec, get_spec, registered
+from wmr_mujoco.robots import ROBOTS, RobotSpec, get_spec, registered
 
 _JOINT_TYPES = {int(v): k.removeprefix("mjJNT_").lower()
                 for k, v in mujoco.mjtJoint.__members__.items()}
@@ -68,7 +68,10 @@ def describe_file(path: Path) -> str:
     if not path.is_file():
         raise ValueError(f"MJCF file {str(path)!r} not found; give a robot name or an "
                          "existing .xml scene file")
-    spec = RobotSpec(name=path.stem, description=f"model file {path.name}", params_type=None,
+    name, n = path.stem, 1
+    while name in ROBOTS:  # a registered robot's own file: describe it beside, not over it
+        name, n = f"{path.stem} (file {path.name}{'' if n == 1 else f' #{n}'})", n + 1
+    spec = RobotSpec(name=name, description=f"model file {path.name}", params_type=None,
                      build=None, scene=path.resolve())
     with registered(spec):
         return describe(spec.name)

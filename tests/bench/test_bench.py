@@ -48,3 +48,22 @@ def test_the_bench_says_where_the_peer_came_from(tmp_path):
     text = bench._peer_section([row], PeerModel(tmp_path / "scene.xml", "WMR_PEER_SCENE"))
     assert text.startswith("The peer's scene file came from WMR_PEER_SCENE.")
     assert str(tmp_path) not in text  # no path of this machine in the report
+
+
+@pytest.mark.parametrize("out, match", [
+    ("missing/deeper", r"--out '.*missing/deeper': folder '.*missing' does not exist"),
+    ("file.txt", r"--out '.*file.txt' is a file"),
+])
+def test_a_bad_out_folder_is_refused_before_any_work(tmp_path, monkeypatch, out, match):
+    import argparse
+
+    (tmp_path / "file.txt").write_text("")
+
+    def worked(*args, **kwargs):
+        raise AssertionError("benchmarked before the --out folder was checked")
+
+    monkeypatch.setattr(bench, "step_speed", worked)
+    args = argparse.Namespace(quick=True, repeats=1, out=str(tmp_path / out))
+    with pytest.raises(ValueError, match=match):
+        bench.main(args)
+    assert not (tmp_path / "missing").exists()

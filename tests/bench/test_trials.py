@@ -11,7 +11,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from wmr_mujoco.bench.trials import PEER_SCENE, peer_spec, run_trial, standard_trials
+from wmr_mujoco.bench.trials import peer_spec, run_trial, standard_trials
 from wmr_mujoco.robots import registered
 
 TRIALS = standard_trials("omni3")
@@ -39,13 +39,39 @@ def test_rollers_turn_at_the_kinematic_rate(runs):
     assert max(measured) <= 5.0
 
 
-@pytest.mark.skipif(not PEER_SCENE.is_file(), reason="peer model not present here")
-def test_peer_runs_through_the_same_runner():
+def _peer_stand_in(folder):
+    """A small stand-in for the peer's scene (the peer is not copied here): omni3's scene
+    with the peer's wheel joint names and, like the peer, one angle servo per wheel."""
+    import mujoco
+
+    from wmr_mujoco.bench.trials import PEER_WHEELS
+    from wmr_mujoco.robots import get_spec
+
+    spec = mujoco.MjSpec.from_file(str(get_spec("omni3").scene_path))
+    for element in [*spec.actuators, *spec.sensors]:
+        spec.delete(element)
+    for i, name in enumerate(PEER_WHEELS, 1):
+        spec.joint(f"wheel{i}").name = name
+        spec.add_actuator(name=name, target=name,
+                          trntype=mujoco.mjtTrn.mjTRN_JOINT).set_to_position(kp=2.0)
+    scene = folder / "scene.xml"
+    scene.write_text(spec.to_xml())
+    return scene
+
+
+def test_peer_runs_through_the_same_runner(tmp_path):
     """The peer's angle servos get the integrated wheel angles; its layout is read from
-    its model. Only that it runs and is measured is asserted: its figures are the study's."""
-    spec = peer_spec()
+    its model. Only that it runs and is measured is asserted: its figures are the study's.
+    It runs on a stand-in scene with the peer's joint names and servo kind (always here)."""
+    from wmr_mujoco.validation.runner import make_adapter
+
+    spec = peer_spec(_peer_stand_in(tmp_path))
     trial = dataclasses.replace(spec.scenarios[0], duration=1.0)
     with registered(spec):
+        import mujoco
+
+        adapter = make_adapter(trial, mujoco.MjModel.from_xml_path(str(spec.scene_path)))
+        assert all(adapter.info.angle_servo)  # read from the model: position servos
         run = run_trial(trial)
     assert run.result.error is None, run.result.error
     assert np.isfinite(run.value("worst position error", "% of path"))

@@ -159,3 +159,37 @@ def test_a_png_is_the_last_frame(tmp_path):
                          duration=0.5)
     clip = render_scenario(pick_scenario("disc"), width=64, height=48, fps=10, duration=0.5)
     np.testing.assert_array_equal(mediapy.read_image(out)[..., :3], clip[-1])
+
+
+def _no_stepping(monkeypatch):
+    import mujoco
+
+    def stepped(*args):
+        raise AssertionError("simulated before the camera was checked")
+
+    monkeypatch.setattr(mujoco, "mj_step", stepped)
+
+
+@pytest.mark.parametrize("robot", ["disc", "whipple"])  # a kinematic run; a measurement's film
+def test_a_bad_camera_is_refused_before_any_simulation(tmp_path, monkeypatch, robot):
+    _no_stepping(monkeypatch)
+    with pytest.raises(ValueError, match="camera 'nope' not in the model; valid cameras are: "
+                       "track"):
+        render_to_file(robot, tmp_path / "clip.mp4", width=64, height=48, fps=10,
+                       duration=0.2, camera="nope")
+    from wmr_mujoco.render.video import film_scenario
+
+    with pytest.raises(ValueError, match="camera 'nope' not in the model"):
+        film_scenario(pick_scenario(robot), lambda f: None, 64, 48, 10, camera="nope")
+    assert list(tmp_path.rglob("*")) == []
+
+
+def test_an_error_while_filming_comes_back_unchanged():
+    """Only a diverging run is a SimulationDivergedError; the encoder's error is its own."""
+    from wmr_mujoco.render.video import clip_scenario, film_scenario
+
+    def full_disk(frame):
+        raise OSError("no space left on device")
+
+    with pytest.raises(OSError, match="no space left on device"):
+        film_scenario(clip_scenario(pick_scenario("disc"), 0.2), full_disk, 64, 48, 10)

@@ -54,3 +54,12 @@ def test_scaling_reports_threads_beside_processes():
         # load's), so it is reported by the bench, never asserted in a test.
         for key in ("rollout_speedup", "process_ceiling"):
             assert np.isfinite(figures[key]) and figures[key] > 0
+
+
+@pytest.mark.parametrize("robot", ["whipple", "disc_free"])
+def test_a_robot_without_a_kinematic_scenario_is_a_value_error(robot):
+    from wmr_mujoco.sim.thread_scaling import driving_controls
+
+    with pytest.raises(ValueError, match=f"robot '{robot}' has no kinematic scenario to "
+                       "drive; valid robots: disc, bicycle"):
+        driving_controls(None, robot)

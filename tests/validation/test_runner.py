@@ -50,8 +50,10 @@ def test_diverging_scenario_is_a_failed_row_and_the_rest_still_run(monkeypatch):
 
 
 def test_bad_input_values_are_a_failed_row():
-    result = run_scenario(Scenario("disc", "nan", (const(float("nan")), const(0.0)),
-                                   duration=0.1))
+    from wmr_mujoco.validation.signals import Piecewise
+
+    nan = Piecewise(((0.0, float("nan")),))  # const() refuses NaN itself
+    result = run_scenario(Scenario("disc", "nan", (nan, const(0.0)), duration=0.1))
     assert result.error is not None and not result.passed
 
 
@@ -170,3 +172,30 @@ def test_work_units_batches_then_measurements():
         kinds = {scenarios[i].kind for i in unit}
         assert ScenarioKind.MEASUREMENT not in kinds or len(unit) == 1
     assert all(len(u) == 1 for u in work_units(scenarios, "loop"))
+
+
+def test_a_kind_without_a_judge_is_refused_before_any_simulation(monkeypatch):
+    """A robot with a dynamic adapter but no dynamic judge: prepare() says so before
+    loading or stepping anything (the judge used to be looked up after the run)."""
+    import dataclasses
+
+    import mujoco
+
+    from wmr_mujoco.robots import get_spec, registered
+    from wmr_mujoco.validation.runner import prepare
+
+    disc = get_spec("disc")
+    spec = dataclasses.replace(disc, name="disc_unjudged", judges={}, scenarios=(),
+                               demo_scenario=None, bench_scenario=None,
+                               render_scenario=None)
+
+    def stepped(*args):
+        raise AssertionError("simulated before the judge was checked")
+
+    monkeypatch.setattr(mujoco, "mj_step", stepped)
+    scenario = Scenario("disc_unjudged", "push", (const(0.1), const(0.0)), 0.5,
+                        ScenarioKind.DYNAMIC)
+    with registered(spec):
+        with pytest.raises(ValueError, match="robot 'disc_unjudged' has no judge for dynamic "
+                           "scenarios; kinds it judges: kinematic"):
+            prepare(scenario)

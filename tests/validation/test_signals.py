@@ -30,3 +30,14 @@ def test_sine():
 def test_bad_signals(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+@pytest.mark.parametrize("value, ramp, match", [
+    (1.0, -0.5, r"ramp = -0.5 s; must be a finite number in \[0, inf\)"),
+    (1.0, math.nan, r"ramp = nan s"),
+    (1.0, math.inf, r"ramp = inf s"),
+    (math.nan, 0.5, r"value = nan; must be a finite number"),
+])
+def test_const_refuses_a_bad_value_or_ramp(value, ramp, match):
+    with pytest.raises(ValueError, match=match):
+        const(value, ramp)

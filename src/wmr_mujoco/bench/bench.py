@@ -28,6 +28,7 @@ from wmr_mujoco.progress import bar
 from wmr_mujoco.robots import ROBOTS, get_spec
 from wmr_mujoco.sim.thread_scaling import TARGET_S, driving_controls, scaling
 from wmr_mujoco.sim.timing import median_time, paired_ratio, step_loop_time
+from wmr_mujoco.validation.report import check_report_folder
 from wmr_mujoco.validation.runner import Prepared, run_scenario
 from wmr_mujoco.validation.scenarios import ScenarioKind, scenarios_for
 
@@ -207,6 +208,7 @@ def main(args: argparse.Namespace) -> int:
     repeats = 2 if args.quick else args.repeats
     if repeats < 1:
         raise ValueError(f"repeats = {repeats!r}; must be >= 1")
+    out = check_report_folder(Path(args.out))
     results: dict[str, object] = {"machine": {"cpus": os.cpu_count(),
                                               "mujoco": mujoco.__version__},
                                   "quick": bool(args.quick)}
@@ -288,8 +290,7 @@ def main(args: argparse.Namespace) -> int:
         f"{engines['sim_rollout']:.2f} s batched, {engines['sim_loop']:.2f} s looped "
         f"({engines['sim_speedup']:.1f}×)."]) + "\n"
     print(text)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out.mkdir(exist_ok=True)
     write_text_atomic(out / "bench.json", json.dumps(results, indent=2, default=float))
     write_text_atomic(out / "bench.md", text)
     print(f"wrote {out / 'bench.md'}", file=sys.stderr)

@@ -78,6 +78,21 @@ def check_output_path(path: Path, suffixes: Sequence[str]) -> Path:
     return path
 
 
+def check_camera(model: mujoco.MjModel, camera: str) -> None:
+    """Check that ``camera`` is ``"track"`` or a camera named in ``model``.
+
+    Raises:
+        ValueError: no such camera; the message lists the valid ones.
+    """
+    if camera == "track":
+        return
+    if not isinstance(camera, str) or mujoco.mj_name2id(
+            model, mujoco.mjtObj.mjOBJ_CAMERA, camera) < 0:
+        names = [model.camera(i).name for i in range(model.ncam)]
+        raise ValueError(f"camera {camera!r} not in the model; valid cameras are: "
+                         f"track{''.join(', ' + n for n in names)}")
+
+
 def robot_size(model: mujoco.MjModel) -> float:
     """Largest distance from the ``base`` site to the surface of a robot geom, at qpos0."""
     data = mujoco.MjData(model)
@@ -131,10 +146,7 @@ class Filmer:
         self.model = model
         self.trail_width = 0.02 * robot_size(model)
         if isinstance(camera, str):
-            if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, camera) < 0:
-                names = [model.camera(i).name for i in range(model.ncam)]
-                raise ValueError(f"camera {camera!r} not in the model; valid cameras are: "
-                                 f"track{''.join(', ' + n for n in names)}")
+            check_camera(model, camera)
             self.camera: mujoco.MjvCamera | str = camera
             settings = CameraSettings()
         else:

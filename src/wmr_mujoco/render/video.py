@@ -17,12 +17,14 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
+from wmr_mujoco.models.loading import load
 from wmr_mujoco.progress import bar
 from wmr_mujoco.render import rendering
 from wmr_mujoco.robots import get_spec
+from wmr_mujoco.sim.engine import Engine, simulate
 from wmr_mujoco.sim.stepping import SimulationDivergedError
 from wmr_mujoco.validation.adapters import Adapter
-from wmr_mujoco.validation.runner import run_scenario
+from wmr_mujoco.validation.runner import prepare
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Held
 
@@ -95,12 +97,18 @@ def film_scenario(scenario: Scenario, on_frame: Callable[[np.ndarray], None],
     length beyond the trails' points. A frame is valid only
     during the call (the renderer reuses its buffer). A progress bar runs on a terminal.
 
+    The camera is checked against the robot's model before anything is simulated; an
+    exception from the simulation or from ``on_frame`` (e.g. the encoder) comes back
+    unchanged.
+
     Raises:
         ValueError: bad size, fps or camera.
         SimulationDivergedError: the run diverged.
     """
     rendering.check_size(width, height)
     _check_fps(fps)
+    model = load(scenario.robot)
+    rendering.check_camera(model, camera)
     if scenario.kind is ScenarioKind.MEASUREMENT:
         return _film_measurement(scenario, on_frame, width, height, fps, camera)
     sim_trail: list[np.ndarray] = []
@@ -130,15 +138,18 @@ def film_scenario(scenario: Scenario, on_frame: Callable[[np.ndarray], None],
         progress_bar.update()
 
     try:
-        result = run_scenario(scenario, observer=observe)
+        prep = prepare(scenario, model=model)
+
+        def on_step(k: int) -> None:
+            observe(prep.model, prep.data, prep.analytic[k + 1], prep.adapter)
+
+        simulate(prep.model, prep.data, prep.controls, Engine.LOOP, on_step)
+    except SimulationDivergedError as err:
+        raise SimulationDivergedError(f"{scenario.key}: {err}") from err
     finally:
         progress_bar.close()
         if "filmer" in state:
             state["filmer"].close()  # type: ignore[union-attr]
-    if result.error is not None:
-        if result.error.startswith("ValueError: "):
-            raise ValueError(result.error.removeprefix("ValueError: "))
-        raise SimulationDivergedError(f"{scenario.key}: {result.error}")
     return int(state["count"])  # type: ignore[call-overload]
 
 
@@ -172,12 +183,17 @@ def render_to_file(robot: str, out: Path, scenario: str | None = None, width: in
     they are drawn (memory flat in the clip's length); a failure or an interrupt leaves
     no file. ``hold`` allows a ``duration`` past the scenario's end, keeping its last
     input.
+
+    Raises:
+        ValueError: bad output path, size, fps, scenario, duration or camera.
+        SimulationDivergedError: the run diverged.
     """
     out = rendering.check_output_path(Path(out), rendering.VIDEO_SUFFIXES
                                       + rendering.IMAGE_SUFFIXES)
     rendering.check_size(width, height)
     _check_fps(fps)
     clip = clip_scenario(pick_scenario(robot, scenario), duration, hold)
+    rendering.check_camera(load(robot), camera)
     if out.suffix.lower() in rendering.IMAGE_SUFFIXES:  # a still: the last frame
         last: list[np.ndarray] = []
 

@@ -38,11 +38,20 @@ TARGET_S = 0.4
 
 
 def driving_controls(model: mujoco.MjModel, robot: str) -> np.ndarray:
-    """Steady controls of the robot's first kinematic scenario (its cruising inputs)."""
+    """Steady controls of the robot's first kinematic scenario (its cruising inputs).
+
+    Raises:
+        ValueError: the robot has no kinematic scenario; the message lists those that do.
+    """
     from wmr_mujoco.validation.runner import make_adapter
     from wmr_mujoco.validation.scenarios import ScenarioKind, scenarios_for
 
-    scenario = next(s for s in scenarios_for([robot]) if s.kind is ScenarioKind.KINEMATIC)
+    scenario = next((s for s in scenarios_for([robot]) if s.kind is ScenarioKind.KINEMATIC),
+                    None)
+    if scenario is None:
+        valid = [s.robot for s in scenarios_for() if s.kind is ScenarioKind.KINEMATIC]
+        raise ValueError(f"robot {robot!r} has no kinematic scenario to drive; valid robots: "
+                         f"{', '.join(dict.fromkeys(valid))}")
     adapter = make_adapter(scenario, model)
     x0 = np.zeros(len(adapter.state_names))
     return np.asarray(adapter.controls(scenario.input_at(scenario.duration), x0))

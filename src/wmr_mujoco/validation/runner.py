@@ -33,7 +33,7 @@ from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.sim.engine import STATE_SPEC, Engine, simulate, simulate_batch
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
-from wmr_mujoco.validation.adapters import Adapter
+from wmr_mujoco.validation.adapters import Adapter, AdapterFactory
 from wmr_mujoco.validation.metrics import (
     RECORD_EVERY,
     Metric,
@@ -69,13 +69,22 @@ def make_adapter(scenario: Scenario, model: mujoco.MjModel,
     Raises:
         ValueError: the robot has no analytic model of that kind.
     """
+    return _adapter_factory(scenario)(scenario, model, params)
+
+
+def _adapter_factory(scenario: Scenario) -> AdapterFactory:
+    """The robot's adapter factory for the scenario's kind.
+
+    Raises:
+        ValueError: the robot has no analytic model of that kind.
+    """
     spec = get_spec(scenario.robot)
     factory = spec.adapters.get(scenario.kind)
     if factory is None:
         have = ", ".join(k.value for k in spec.adapters) or "none"
         raise ValueError(f"no {scenario.kind.value} model for robot {scenario.robot!r}; "
                          f"it has: {have}")
-    return factory(scenario, model, params)
+    return factory
 
 
 #: A scenario's result as it travels between processes: rows, trace, error.
@@ -151,6 +160,31 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     return np.asarray(inputs), np.asarray(controls), np.asarray(states)
 
 
+def check_runnable(s: Scenario) -> None:
+    """Check that ``s`` can be run and judged, before any work.
+
+    The input count is the one of the robot's own scenarios of the same kind and frame
+    (the adapter's channels); a robot without such a scenario is not checked here.
+
+    Raises:
+        ValueError: the robot has no analytic model or no judge for the scenario's kind
+            (the message lists the kinds it has), or a wrong number of input channels.
+    """
+    spec = get_spec(s.robot)
+    _adapter_factory(s)
+    if spec.judge(s.kind) is None:
+        have = [k.value for k in ScenarioKind if k is not ScenarioKind.MEASUREMENT
+                and spec.judge(k) is not None]
+        raise ValueError(f"robot {s.robot!r} has no judge for {s.kind.value} scenarios; "
+                         f"kinds it judges: {', '.join(have) or 'none'}")
+    counts = {len(o.inputs) for o in spec.scenarios
+              if o.kind is s.kind and o.world_frame == s.world_frame}
+    if counts and len(s.inputs) not in counts:
+        valid = " or ".join(map(str, sorted(counts)))
+        raise ValueError(f"{s.key}: {len(s.inputs)} inputs; robot {s.robot!r} takes {valid} "
+                         f"input channels for {s.kind.value} scenarios")
+
+
 @dataclass
 class Prepared:
     """A scenario ready to simulate: settled model and data, and its open-loop schedule."""
@@ -169,7 +203,13 @@ def prepare(s: Scenario, params: RobotParams | None = None,
     """Load, settle at rest for ``s.settle`` seconds, and compute the schedule.
 
     ``model``: the robot's compiled model to use (and modify) instead of loading it.
+    The scenario is checked against the robot before anything is loaded or simulated.
+
+    Raises:
+        ValueError: the robot has no judge for the scenario's kind, or the scenario's
+            input count is not the one the robot's analytic model of that kind takes.
     """
+    check_runnable(s)
     if model is None:
         model = load(s.robot, params)
     adapter = make_adapter(s, model, params)

@@ -72,7 +72,15 @@ Signal = Piecewise | Sine | Held
 
 
 def const(value: float, ramp: float = 0.0) -> Piecewise:
-    """A constant, reached from zero by a linear ramp of ``ramp`` seconds (0: a step)."""
+    """A constant, reached from zero by a linear ramp of ``ramp`` seconds (0: a step).
+
+    Raises:
+        ValueError: ``value`` not finite, or ``ramp`` not a finite number >= 0.
+    """
+    if not math.isfinite(value):
+        raise ValueError(f"value = {value!r}; must be a finite number")
+    if not (math.isfinite(ramp) and ramp >= 0):
+        raise ValueError(f"ramp = {ramp!r} s; must be a finite number in [0, inf)")
     return Piecewise(((0.0, 0.0), (ramp, value))) if ramp > 0 else Piecewise(((0.0, value),))
 
 
