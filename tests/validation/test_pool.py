@@ -10,7 +10,7 @@ from wmr_mujoco.validation.pool import ValidationPool
 from wmr_mujoco.validation.report import write_report
 from wmr_mujoco.validation.runner import run_all
 from wmr_mujoco.validation.scenarios import Scenario
-from wmr_mujoco.validation.signals import const
+from wmr_mujoco.validation.signals import Piecewise, const
 
 
 @pytest.fixture(scope="module")
@@ -19,7 +19,8 @@ def scenarios():
     # (nothing to plot): every branch of the figure.
     return [Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=1.0),
             get_spec("disc").scenario("sliding wheel"),
-            Scenario("disc", "nan input", (const(float("nan")), const(0.0)), duration=0.1)]
+            Scenario("disc", "nan input", (Piecewise(((0.0, float("nan")),)), const(0.0)),
+                     duration=0.1)]
 
 
 def _files(folder):

@@ -5,14 +5,16 @@ import pytest
 from wmr_mujoco.validation.report import slug, text_table, write_report
 from wmr_mujoco.validation.runner import run_all
 from wmr_mujoco.validation.scenarios import Scenario
-from wmr_mujoco.validation.signals import const
+from wmr_mujoco.validation.signals import Piecewise, const
 
 
 @pytest.fixture(scope="module")
 def results():
     return run_all([
         Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=1.0),
-        Scenario("disc", "nan input", (const(float("nan")), const(0.0)), duration=0.1),
+        # const refuses NaN; a signal that yields one mid-run still must become a failed row.
+        Scenario("disc", "nan input", (Piecewise(((0.0, float("nan")),)), const(0.0)),
+                 duration=0.1),
     ])
 
 
