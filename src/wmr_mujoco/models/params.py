@@ -157,6 +157,13 @@ MAX_RATE = 1.0e3
 MAX_GAIN = 1.0e7
 
 
+#: The steering fields of :class:`DriveParams`, as ``wmr info`` names them: the ``UNUSED``
+#: of every robot without steering.
+STEERING_FIELDS: tuple[str, ...] = ("drive.steer_kp", "drive.steer_kv",
+                                    "drive.steer_torque_limit", "drive.steer_rate_limit",
+                                    "drive.steer_angle_limit")
+
+
 @dataclass(frozen=True)
 class DriveParams:
     """Actuator settings shared by every robot.
@@ -474,10 +481,7 @@ class OmniParams:
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_kp", "drive.steer_kv",
-                                         "drive.steer_torque_limit",
-                                         "drive.steer_rate_limit",
-                                         "drive.steer_angle_limit")
+    UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS
 
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("roller_armature", "roller_damping",

@@ -13,6 +13,7 @@ from typing import ClassVar
 from wmr_mujoco.models.params import (
     MAX_WHEEL_MASS,
     MAX_WHEEL_RADIUS,
+    STEERING_FIELDS,
     DriveParams,
     SimParams,
     _check_choice,
@@ -89,10 +90,7 @@ class MecanumParams:
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_kp", "drive.steer_kv",
-                                         "drive.steer_torque_limit",
-                                         "drive.steer_rate_limit",
-                                         "drive.steer_angle_limit")
+    UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS
 
     def __post_init__(self) -> None:
         _check_types(self)  # before any range: a message that names the wrong type

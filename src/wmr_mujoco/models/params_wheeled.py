@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from wmr_mujoco.models.params import (
+    STEERING_FIELDS,
     DriveParams,
     SimParams,
     WheelParams,
@@ -36,9 +37,6 @@ MAX_CHASSIS_EDGE = 5.0
 #: Largest distance of a wheel or caster from the chassis origin, m (modelling bound,
 #: the reach of a 4 m long platform, as :data:`MAX_CHASSIS_EDGE`).
 MAX_REACH = 2.0
-#: Steering fields of :class:`~wmr_mujoco.models.params.DriveParams` (no steering).
-_STEERING = ("drive.steer_kp", "drive.steer_kv", "drive.steer_torque_limit",
-             "drive.steer_rate_limit", "drive.steer_angle_limit")
 
 
 def _check_chassis_size(obj: object) -> None:
@@ -142,7 +140,7 @@ class DiffDriveParams:
     sim: SimParams = _SIM
 
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = _STEERING
+    UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS
 
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("caster_x", "chassis_com_x"))
