@@ -26,7 +26,7 @@ def test_failed_validate_run_is_an_error_not_a_time(monkeypatch):
 
 
 def test_missing_peer_is_left_out_not_fatal(tmp_path):
-    assert bench.peer_side_by_side(None, tmp_path / "scene.xml") is None
+    assert bench.peer_side_by_side(False, tmp_path / "scene.xml") is None
     assert "Left out: the peer model was not found" in bench._peer_section(None)
 
 
@@ -67,3 +67,26 @@ def test_a_bad_out_folder_is_refused_before_any_work(tmp_path, monkeypatch, out,
     with pytest.raises(ValueError, match=match):
         bench.main(args)
     assert not (tmp_path / "missing").exists()
+
+
+def test_the_peer_comparison_comes_from_the_registry(tmp_path, monkeypatch):
+    """Every robot whose entry carries a ``peer`` is compared; none is named by the bench."""
+    import dataclasses
+
+    from wmr_mujoco.robots import ROBOTS
+
+    scene = tmp_path / "scene.xml"
+    scene.write_text("<mujoco/>")
+    calls = []
+
+    def peer(path, quick):
+        calls.append((path, quick))
+        return [{"label": "stand-in", "worst_position_pct": 1.0, "worst_heading_deg": 2.0,
+                 "real_time_factor": 3.0}]
+
+    fake = {"disc": dataclasses.replace(ROBOTS["disc"], peer=peer)}
+    monkeypatch.setattr(bench, "ROBOTS", fake)
+    assert bench.peer_side_by_side(True, scene)[0]["label"] == "stand-in"
+    assert calls == [(scene, True)]
+    monkeypatch.setattr(bench, "ROBOTS", {"disc": ROBOTS["disc"]})
+    assert bench.peer_side_by_side(True, scene) is None

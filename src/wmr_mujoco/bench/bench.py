@@ -20,8 +20,6 @@ from pathlib import Path
 import mujoco
 
 from wmr_mujoco.atomic import write_text_atomic
-from wmr_mujoco.bench.omni_study import ROBOT as STUDY_ROBOT
-from wmr_mujoco.bench.omni_study import measure_omni, measure_peer
 from wmr_mujoco.bench.trials import PeerModel, find_peer
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.progress import bar
@@ -34,8 +32,6 @@ from wmr_mujoco.validation.scenarios import ScenarioKind, scenarios_for
 
 #: Timesteps of the accuracy-against-cost study, s.
 TIMESTEPS = (0.0005, 0.001, 0.002, 0.004)
-#: Trials of the peer comparison in a ``--quick`` run.
-QUICK_TRIALS = ("translate   0°", "rotate", "translate+rotate")
 
 
 def driven_robots() -> list[str]:
@@ -167,21 +163,21 @@ def validation_engines(repeats: int) -> dict[str, float]:
             "sim_loop": s_loop, "sim_rollout": s_rollout, "sim_speedup": s_ratio}
 
 
-def peer_side_by_side(names: Sequence[str] | None = None, scene: Path | None = None
-                      ) -> list[dict[str, float]] | None:
-    """The study robot and the peer on the same trials, same run; None without the peer.
+def peer_side_by_side(quick: bool = False, scene: Path | None = None
+                      ) -> list[dict[str, object]] | None:
+    """Every robot with a peer (its registry entry's ``peer``) beside the peer, same run.
 
-    ``scene`` None: wherever :func:`~wmr_mujoco.bench.trials.find_peer` finds it.
+    ``scene`` None: wherever :func:`~wmr_mujoco.bench.trials.find_peer` finds it. None
+    without the peer's scene or a robot that compares with it.
     """
     if scene is None:
         peer = find_peer()
         scene = None if peer is None else peer.scene
     if scene is None or not scene.is_file():
         return None
-    ours = measure_omni(get_spec(STUDY_ROBOT).params_type(), f"{STUDY_ROBOT} (default)",
-                        names)
-    peer = measure_peer(names, scene)
-    return [dataclasses.asdict(s) for s in (ours, peer)]
+    rows = [dict(r) for spec in ROBOTS.values() if spec.peer is not None
+            for r in spec.peer(scene, quick)]
+    return rows or None
 
 
 def _peer_section(rows: list[dict[str, float]] | None, peer: PeerModel | None = None
@@ -223,9 +219,8 @@ def main(args: argparse.Namespace) -> int:
     results["accuracy"] = accuracy
     stages.update()
     print("peer model ...", file=sys.stderr, flush=True)
-    names = QUICK_TRIALS if args.quick else None
     peer = find_peer()
-    results["peer"] = None if peer is None else peer_side_by_side(names, peer.scene)
+    results["peer"] = None if peer is None else peer_side_by_side(args.quick, peer.scene)
     results["peer_source"] = None if peer is None else peer.source
     if peer is None:
         print("warning: peer model not found (install mujoco-menagerie, or set "
@@ -260,6 +255,8 @@ def main(args: argparse.Namespace) -> int:
                       f"{row['position_error_pct']:.3f}", f"{row['rtf']:.0f}×"]
                      for r, rows in accuracy.items() for row in rows])
     peer_md = _peer_section(results["peer"], peer)
+    peer_robots = ", ".join(n for n, spec in ROBOTS.items() if spec.peer is not None)
+    quick = args.quick
     ren = results["render"]
     text = "\n\n".join([
         "# Benchmarks", f"`wmr bench` on {os.cpu_count()} cores, MuJoCo {mujoco.__version__}; "
@@ -272,7 +269,7 @@ def main(args: argparse.Namespace) -> int:
         "in the same rounds, against one thread alone: what the hardware gives to fully "
         "independent work, as noisy as the speedup.",
         "## Accuracy against cost", acc,
-        f"## Omni robot and the peer model ({len(names) if names else 'all'} open-loop "
+        f"## {peer_robots} and the peer model ({'a few' if quick else 'all'} open-loop "
         "trials, same run)", peer_md, "## Rendering, 640×480",
         f"{ren['no_shadows']:.1f} frames/s as `wmr render` draws (no shadows or "
         f"reflections), {ren['shadows']:.1f} with shadows and reflections "

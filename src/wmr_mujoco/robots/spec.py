@@ -37,6 +37,12 @@ class Picture:
     joint_angles: Mapping[str, float] = field(default_factory=dict)
 
 
+#: ``peer(scene, quick) -> rows``: the robot and the foreign model in ``scene`` on the same
+#: trials (fewer if ``quick``), one row each with ``label``, ``worst_position_pct``,
+#: ``worst_heading_deg`` and ``real_time_factor``.
+PeerComparison = Callable[[Path, bool], list[Mapping[str, object]]]
+
+
 @dataclass(frozen=True)
 class RobotSpec(Generic[P]):
     """Everything the package knows about one robot.
@@ -62,6 +68,8 @@ class RobotSpec(Generic[P]):
         bench_scenario: the scenario of ``wmr bench``'s accuracy-against-timestep table.
         render_scenario: the default scenario of ``wmr render`` (None: first kinematic).
         picture: the pose of the README picture.
+        peer: the robot's side-by-side with a foreign model on the same trials, for
+            ``wmr bench`` (see :data:`PeerComparison`; None: the robot has no peer).
     """
 
     name: str
@@ -81,6 +89,7 @@ class RobotSpec(Generic[P]):
     bench_scenario: str | None = None
     render_scenario: str | None = None
     picture: Picture = Picture()
+    peer: PeerComparison | None = None
 
     def __post_init__(self) -> None:
         names = [s.name for s in self.scenarios]

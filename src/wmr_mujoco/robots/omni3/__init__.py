@@ -11,10 +11,12 @@ the dynamic runs are simulated together (:mod:`.runs`).
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -147,6 +149,23 @@ SCENARIOS = (
                          "slips, against the traction limit μ N with load transfer"),
 )
 
+#: Trials of the peer comparison in a quick bench run.
+QUICK_PEER_TRIALS = ("translate   0°", "rotate", "translate+rotate")
+
+
+def peer_comparison(scene: Path, quick: bool) -> list[Mapping[str, object]]:
+    """omni3 at its defaults and the peer robot_soccer_kit on the same open-loop trials.
+
+    The trials and the summary are the roller study's (:mod:`wmr_mujoco.bench.omni_study`,
+    imported here so the registry does not load the benchmarks).
+    """
+    from wmr_mujoco.bench.omni_study import measure_omni, measure_peer
+
+    names = QUICK_PEER_TRIALS if quick else None
+    return [dataclasses.asdict(s) for s in (
+        measure_omni(OmniParams(), f"{NAME} (default)", names), measure_peer(names, scene))]
+
+
 SPEC = RobotSpec(
     name=NAME,
     description="three omni wheels at 120 degrees, each with two staggered rows of "
@@ -156,4 +175,5 @@ SPEC = RobotSpec(
     probes=(omni_probes,),
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="square with rotation",
     bench_scenario="translate+rotate", render_scenario="square with rotation",
+    peer=peer_comparison,
 )
