@@ -47,3 +47,40 @@ def _steady_turn_off_circle(accel: Accel, H: np.ndarray, c_term: Callable[[np.nd
 def steady_turn_off_circle() -> Callable[..., float]:
     """:func:`_steady_turn_off_circle`: the ψ̇ cross-term's sign check of a planar model."""
     return _steady_turn_off_circle
+
+
+def _point_velocity(q: np.ndarray, qdot: np.ndarray, offset_body: tuple[float, float]
+                    ) -> np.ndarray:
+    """World velocity of a point fixed at ``offset_body`` in the body frame of heading q[2].
+
+    Rigid-body motion, independent of any module under test: ``v_p = v + ψ̇ ẑ × R(ψ) p``.
+    """
+    c, s = np.cos(q[2]), np.sin(q[2])
+    r = np.array([c * offset_body[0] - s * offset_body[1],
+                  s * offset_body[0] + c * offset_body[1]])
+    return qdot[:2] + qdot[2] * np.array([-r[1], r[0]])
+
+
+@pytest.fixture
+def point_velocity() -> Callable[[np.ndarray, np.ndarray, tuple[float, float]], np.ndarray]:
+    """:func:`_point_velocity`, for the kinematics tests."""
+    return _point_velocity
+
+
+def rk4_path(f: Callable[[np.ndarray], np.ndarray], x0: np.ndarray, dt: float,
+             steps: int) -> np.ndarray:
+    """Classic RK4 of ``ẋ = f(x)`` (an integrator written here, not the package's)."""
+    x = np.asarray(x0, float)
+    for _ in range(steps):
+        k1 = f(x)
+        k2 = f(x + 0.5 * dt * k1)
+        k3 = f(x + 0.5 * dt * k2)
+        k4 = f(x + dt * k3)
+        x = x + dt / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+    return x
+
+
+@pytest.fixture
+def rk4() -> Callable[..., np.ndarray]:
+    """:func:`rk4_path`, for the kinematics tests."""
+    return rk4_path

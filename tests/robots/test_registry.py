@@ -102,16 +102,3 @@ def test_a_new_robot_runs_through_validate_report_and_render(tmp_path):
 def test_a_name_cannot_be_registered_twice():
     with pytest.raises(ValueError, match="robot 'disc' is already registered"):
         register(get_spec("disc"))
-
-
-@pytest.mark.parametrize(("change", "match"), [
-    ({"demo_scenario": "nope"}, "demo scenario 'nope' is not one of its scenarios"),
-    ({"scenarios": (Scenario("disc", "a", (const(1.0),)),)}, "scenarios of other robots"),
-    ({"adapters": {}}, "has no kinematic adapter"),
-    ({"build": None}, "give both build and params_type"),
-    ({"scenarios": (Scenario(NAME, "t", (const(1.0),), kind="dynamic"),),
-      "adapters": {ScenarioKind.DYNAMIC: lambda s, m, p: None}}, "has no judge for dynamic"),
-])
-def test_inconsistent_entries_are_refused(change, match):
-    with pytest.raises(ValueError, match=match):
-        dataclasses.replace(wide_disc_spec(), **change)
