@@ -33,21 +33,9 @@ models: $(STAMP)
 pictures: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.models.pictures
 
-# The clips in renders/ shown in the README.
+# The clips in renders/ shown in the README: every clip each registry entry lists.
 renders: $(STAMP)
-	$(BIN)/wmr render disc --scenario "sinusoidal steering" --out renders/disc.gif --width 200 --height 150 --fps 8 --duration 5
-	$(BIN)/wmr render bicycle --scenario "lane change" --out renders/bicycle.gif --width 200 --height 150 --fps 8 --duration 5
-	$(BIN)/wmr render tricycle --scenario "figure eight" --out renders/tricycle.gif --width 200 --height 150 --fps 8 --duration 12
-	$(BIN)/wmr render omni3 --scenario "square with rotation" --out renders/omni3.gif --width 200 --height 150 --fps 8 --duration 10
-	$(BIN)/wmr render mecanum4 --scenario "translate+rotate (ramp)" --out renders/mecanum4.gif --width 200 --height 150 --fps 8 --duration 10
-	$(BIN)/wmr render whipple --scenario "push at 5 m/s" --out renders/whipple.gif --width 200 --height 150 --fps 8 --duration 8
-	$(BIN)/wmr render whipple --scenario "push at 3 m/s" --out renders/whipple_fall.gif --width 200 --height 150 --fps 8 --duration 3
-	$(BIN)/wmr render diffdrive --scenario "figure eight" --out renders/diffdrive.gif --width 200 --height 150 --fps 8 --duration 5
-	$(BIN)/wmr render single_steer --scenario "slalom" --out renders/single_steer.gif --width 200 --height 150 --fps 8 --duration 4
-	$(BIN)/wmr render double_steer --scenario "tight turn ±1 rad" --out renders/double_steer.gif --width 200 --height 150 --fps 8 --duration 3
-	$(BIN)/wmr render disc_free --scenario "steady precession" --out renders/disc_free.gif --width 200 --height 150 --fps 8
-	$(BIN)/wmr render disc_free --scenario "stability sweep" --out renders/disc_free_stability.gif --width 200 --height 150 --fps 8
-	$(BIN)/wmr render omni3 --scenario "translate+rotate" --out renders/trails.png --width 480 --height 360 --fps 8
+	$(BIN)/wmr render --all --out renders
 
 # The design and fidelity-versus-cost studies in the model READMEs: omni3's roller design
 # and peer table, the Whipple bicycle's eigenvalues, the free disc's settings,

@@ -117,11 +117,25 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 
 
 def _cmd_render(args: argparse.Namespace) -> int:
-    from wmr_mujoco.render.video import render_to_file
+    from wmr_mujoco.render.video import render_clips, render_to_file
 
-    path = render_to_file(args.robot, args.out, args.scenario, args.width, args.height,
+    backend = os.environ.get("MUJOCO_GL")
+    if args.all:
+        clip_options = {"--scenario": args.scenario, "--duration": args.duration,
+                        "--hold": args.hold or None}
+        given = [k for k, v in clip_options.items() if v is not None]
+        if given:
+            raise ValueError(f"--all films each robot's listed clips; {', '.join(given)} "
+                             "apply to one robot's clip only")
+        render_clips(args.out, args.robots or None,
+                     lambda path: print(f"wrote {path} ({backend} backend)"))
+        return 0
+    if len(args.robots) != 1:
+        raise ValueError(f"render takes one robot, got {len(args.robots)}: "
+                         f"{' '.join(args.robots) or '(none)'}; or --all with any number")
+    path = render_to_file(args.robots[0], args.out, args.scenario, args.width, args.height,
                           args.fps, args.camera, args.duration, args.hold)
-    print(f"wrote {path} ({os.environ.get('MUJOCO_GL')} backend)")
+    print(f"wrote {path} ({backend} backend)")
     return 0
 
 
@@ -173,10 +187,16 @@ def build_parser() -> argparse.ArgumentParser:
                      help="print informative metrics too, not only judged ones")
     val.set_defaults(func=_cmd_validate)
     ren = sub.add_parser("render", help="offscreen video of a scenario (EGL, else OSMesa)")
-    ren.add_argument("robot", help="a robot name (see `wmr list`)")
+    ren.add_argument("robots", nargs="*", metavar="robot",
+                     help="a robot name (see `wmr list`); with --all, any number (default: "
+                     "every robot)")
+    ren.add_argument("--all", action="store_true",
+                     help="film every clip the robots' registry entries list (the README's "
+                     "clips) into the folder --out")
     ren.add_argument("--scenario", help="scenario name (default: the robot's first)")
     ren.add_argument("--out", type=Path, required=True,
-                     help="output .mp4 or .gif (or .png: the last frame), in an existing folder")
+                     help="output .mp4 or .gif (or .png: the last frame), in an existing "
+                     "folder; with --all, that folder")
     ren.add_argument("--width", type=int, default=640)
     ren.add_argument("--height", type=int, default=480)
     ren.add_argument("--fps", type=int, default=30)

@@ -193,3 +193,29 @@ def test_an_error_while_filming_comes_back_unchanged():
 
     with pytest.raises(OSError, match="no space left on device"):
         film_scenario(clip_scenario(pick_scenario("disc"), 0.2), full_disk, 64, 48, 10)
+
+
+def test_all_clips_of_a_robot_are_written_where_its_entry_says(tmp_path, capsys):
+    """``wmr render --all``: every clip the registry entry lists, named as it says."""
+    from wmr_mujoco.cli import main
+    from wmr_mujoco.robots import get_spec
+
+    spec = get_spec("double_steer")
+    assert main(["render", "--all", "double_steer", "--out", str(tmp_path), "-q"]) == 0
+    files = sorted(p.name for p in tmp_path.iterdir())
+    assert files == sorted(spec.clip_file(c) for c in spec.clips) == ["double_steer.gif"]
+    assert f"wrote {tmp_path / 'double_steer.gif'}" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--all", "--scenario", "slalom"], "--all films each robot's listed clips; --scenario"),
+    (["disc", "bicycle"], "render takes one robot, got 2: disc bicycle"),
+    ([], "render takes one robot, got 0"),
+    (["--all", "segway"], "unknown robot 'segway'"),
+])
+def test_render_arguments_are_checked_first(tmp_path, capsys, argv, message):
+    from wmr_mujoco.cli import main
+
+    assert main(["render", *argv, "--out", str(tmp_path)]) == 2
+    assert message in capsys.readouterr().err
+    assert not any(tmp_path.iterdir())

@@ -60,3 +60,14 @@ def test_scenario_lookup_lists_the_valid_names():
     with pytest.raises(ValueError, match=f"no scenario 'nope' for 'disc'; valid scenarios: "
                                          f"'{first.name}'"):
         BASE.scenario("nope")
+
+
+def test_clips_name_their_scenarios_and_files():
+    from wmr_mujoco.robots import Clip
+
+    assert BASE.clip_file(Clip()) == "disc.gif"
+    assert BASE.clip_file(Clip(file="a.png")) == "a.png"
+    with pytest.raises(ValueError, match="clip scenario 'nope' is not one of its scenarios"):
+        dataclasses.replace(BASE, clips=(Clip("nope"),))
+    with pytest.raises(ValueError, match=r"clip files repeat: \['disc.gif', 'disc.gif'\]"):
+        dataclasses.replace(BASE, clips=(Clip(), Clip(BASE.scenarios[0].name)))

@@ -265,3 +265,33 @@ def _film_measurement(scenario: Scenario, on_frame: Callable[[np.ndarray], None]
         if filmer is not None:
             filmer.close()
     return count
+
+
+def render_clips(folder: Path, robots: list[str] | None = None,
+                 on_written: Callable[[Path], None] | None = None) -> list[Path]:
+    """Every clip each robot's registry entry lists (:class:`~wmr_mujoco.robots.Clip`).
+
+    The clips of ``renders/`` (``wmr render --all``): a robot added to the registry gets
+    its clip without naming it anywhere else. Every robot name and the folder are checked
+    before anything is filmed; each clip is written atomically, as by
+    :func:`render_to_file`.
+
+    Raises:
+        ValueError: an unknown robot, or ``folder`` is not an existing folder.
+    """
+    from wmr_mujoco.robots import ROBOTS
+
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise ValueError(f"output folder {str(folder)!r} does not exist; create it first "
+                         "(wmr writes only into existing folders)")
+    specs = [get_spec(r) for r in robots] if robots else list(ROBOTS.values())
+    written = []
+    for spec in specs:
+        for clip in spec.clips:
+            path = render_to_file(spec.name, folder / spec.clip_file(clip), clip.scenario,
+                                  clip.width, clip.height, clip.fps, duration=clip.duration)
+            written.append(path)
+            if on_written is not None:
+                on_written(path)
+    return written

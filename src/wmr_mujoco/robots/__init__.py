@@ -25,9 +25,9 @@ from wmr_mujoco.robots import (
     tricycle,
     whipple,
 )
-from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 
-__all__ = ["ROBOTS", "Picture", "RobotSpec", "get_spec", "register", "registered",
+__all__ = ["ROBOTS", "Clip", "Picture", "RobotSpec", "get_spec", "register", "registered",
            "unregister"]
 
 ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (

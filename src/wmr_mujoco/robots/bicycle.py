@@ -17,7 +17,7 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import bicycle as builder
 from wmr_mujoco.models.params import BicycleParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -74,5 +74,5 @@ SPEC = RobotSpec(
     adapters={ScenarioKind.KINEMATIC: kinematic_adapter},
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="lane change",
     bench_scenario="steady turn 0.3 rad", render_scenario="lane change",
-    picture=Picture(joint_angles={"steer": 0.35}),
+    picture=Picture(joint_angles={"steer": 0.35}), clips=(Clip(duration=5.0),),
 )

@@ -37,6 +37,28 @@ class Picture:
     joint_angles: Mapping[str, float] = field(default_factory=dict)
 
 
+@dataclass(frozen=True)
+class Clip:
+    """One clip of the robot in ``renders/`` (``wmr render --all``, ``make renders``).
+
+    Attributes:
+        scenario: the scenario filmed (None: the robot's render scenario).
+        file: file name in the output folder, ``.gif``, ``.mp4`` or ``.png`` (the last
+            frame; None: ``<robot>.gif``).
+        duration: seconds filmed (None: the whole scenario).
+        width: pixels.
+        height: pixels.
+        fps: frames per second.
+    """
+
+    scenario: str | None = None
+    file: str | None = None
+    duration: float | None = None
+    width: int = 200
+    height: int = 150
+    fps: int = 8
+
+
 #: ``peer(scene, quick) -> rows``: the robot and the foreign model in ``scene`` on the same
 #: trials (fewer if ``quick``), one row each with ``label``, ``worst_position_pct``,
 #: ``worst_heading_deg`` and ``real_time_factor``.
@@ -68,6 +90,7 @@ class RobotSpec(Generic[P]):
         bench_scenario: the scenario of ``wmr bench``'s accuracy-against-timestep table.
         render_scenario: the default scenario of ``wmr render`` (None: first kinematic).
         picture: the pose of the README picture.
+        clips: its clips in ``renders/`` (default: one GIF of the render scenario).
         peer: the robot's side-by-side with a foreign model on the same trials, for
             ``wmr bench`` (see :data:`PeerComparison`; None: the robot has no peer).
     """
@@ -89,6 +112,7 @@ class RobotSpec(Generic[P]):
     bench_scenario: str | None = None
     render_scenario: str | None = None
     picture: Picture = Picture()
+    clips: tuple[Clip, ...] = (Clip(),)
     peer: PeerComparison | None = None
 
     def __post_init__(self) -> None:
@@ -112,6 +136,13 @@ class RobotSpec(Generic[P]):
             if chosen is not None and chosen not in names:
                 raise ValueError(f"robot {self.name!r}: {label} scenario {chosen!r} is not "
                                  f"one of its scenarios {names}")
+        for clip in self.clips:
+            if clip.scenario is not None and clip.scenario not in names:
+                raise ValueError(f"robot {self.name!r}: clip scenario {clip.scenario!r} is "
+                                 f"not one of its scenarios {names}")
+        files = [self.clip_file(c) for c in self.clips]
+        if len(set(files)) != len(files):
+            raise ValueError(f"robot {self.name!r}: clip files repeat: {files}")
         if (self.build is None) != (self.params_type is None):
             raise ValueError(f"robot {self.name!r}: give both build and params_type, or "
                              "neither (a foreign model file)")
@@ -136,6 +167,10 @@ class RobotSpec(Generic[P]):
     def has_files(self) -> bool:
         """Whether the robot has checked-in MJCF files (or a foreign scene)."""
         return self.scene is not None or self.folder is not None
+
+    def clip_file(self, clip: Clip) -> str:
+        """File name of one of its clips."""
+        return clip.file or f"{self.name}.gif"
 
     def judge(self, kind: ScenarioKind) -> Judge | None:
         """The judge of a scenario kind: the robot's own, else the default."""

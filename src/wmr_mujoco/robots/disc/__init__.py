@@ -23,7 +23,7 @@ from wmr_mujoco.models.params import DiscParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.disc import sliding
 from wmr_mujoco.robots.disc.wheel import mounted_wheel
-from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind
@@ -164,4 +164,5 @@ SPEC = RobotSpec(
     judges={ScenarioKind.DYNAMIC: judge_rolling},
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="constant steering",
     render_scenario="sinusoidal steering", picture=Picture(joint_angles={"steer": 0.35}),
+    clips=(Clip(duration=5.0),),
 )

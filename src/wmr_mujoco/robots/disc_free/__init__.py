@@ -18,7 +18,7 @@ from wmr_mujoco.models.builders import disc as builder
 from wmr_mujoco.models.params import FreeDiscParams, RobotParams
 from wmr_mujoco.robots.disc_free import measurements as ms
 from wmr_mujoco.robots.disc_free.state import FreeRun
-from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation.scenarios import FilmFrame, MeasurementResult, Scenario, ScenarioKind
 
 NAME = "disc_free"
@@ -104,4 +104,5 @@ SPEC = RobotSpec(
     params_type=FreeDiscParams, build=builder.build_free, folder="disc",
     robot_file="disc_free.xml", scene_file="scene_free.xml", scenarios=SCENARIOS,
     render_scenario="steady precession", picture=Picture(keyframe="leaning"),
+    clips=(Clip(), Clip("stability sweep", "disc_free_stability.gif")),
 )

@@ -28,7 +28,7 @@ from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.omni3 import coasting, dynamics, traction
 from wmr_mujoco.robots.omni3.runs import WHEELS
-from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.robots.spec import Clip, RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Target
@@ -175,5 +175,6 @@ SPEC = RobotSpec(
     probes=(omni_probes,),
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="square with rotation",
     bench_scenario="translate+rotate", render_scenario="square with rotation",
+    clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
     peer=peer_comparison,
 )

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.params_whipple import WhippleParams
-from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.robots.whipple import eigen, stability
 from wmr_mujoco.robots.whipple.rolling import NAME
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
@@ -53,4 +53,5 @@ SPEC = RobotSpec(
     scenarios=SCENARIOS,
     render_scenario=push_name(5.0),
     picture=Picture(keyframe="upright", joint_angles={"steer": 0.3}),
+    clips=(Clip(duration=8.0), Clip(push_name(3.0), "whipple_fall.gif", 3.0)),
 )
