@@ -70,6 +70,9 @@ class RobotSpec(Generic[P]):
         picture: the pose of the README picture.
         peer: the robot's side-by-side with a foreign model on the same trials, for
             ``wmr bench`` (see :data:`PeerComparison`; None: the robot has no peer).
+        scene_extras: ``(scene root, params) -> None``, elements that name the scene's
+            geoms (contact pairs with the ``floor``), added after the floor in the built
+            and the checked-in scene (None: nothing).
     """
 
     name: str
@@ -90,6 +93,7 @@ class RobotSpec(Generic[P]):
     render_scenario: str | None = None
     picture: Picture = Picture()
     peer: PeerComparison | None = None
+    scene_extras: Callable[[mjcf.RootElement, P], None] | None = None
 
     def __post_init__(self) -> None:
         names = [s.name for s in self.scenarios]

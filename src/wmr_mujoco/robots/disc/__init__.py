@@ -164,4 +164,5 @@ SPEC = RobotSpec(
     judges={ScenarioKind.DYNAMIC: judge_rolling},
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="constant steering",
     render_scenario="sinusoidal steering", picture=Picture(joint_angles={"steer": 0.35}),
+    scene_extras=builder.floor_pair,
 )
