@@ -12,6 +12,13 @@ import pytest
 SRC = Path(__file__).resolve().parents[1] / "src"
 
 
+def _default_sigint() -> None:
+    """In the child, before exec: Ctrl-C as a terminal gives it. A shell that starts the
+    tests in the background ignores SIGINT, the child would inherit that, and Python keeps
+    an ignored SIGINT ignored (no KeyboardInterrupt)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 @pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
     env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
@@ -20,7 +27,8 @@ def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
         [sys.executable, "-m", "wmr_mujoco.cli", "render", "disc", "--out",
          str(tmp_path / "clip.mp4"), "--duration", "600", "--hold", "--fps", "10",
          "--width", "64", "--height", "48", "--quiet"],
-        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        preexec_fn=_default_sigint)
     deadline = time.monotonic() + 60
     # The temporary video appears once the writer is open, before the first frame.
     while not list(tmp_path.glob(".clip.*.mp4")) and time.monotonic() < deadline:
@@ -42,7 +50,8 @@ def test_interrupted_validate_leaves_no_file(tmp_path, sig, code):
     proc = subprocess.Popen(
         [sys.executable, "-m", "wmr_mujoco.cli", "validate", "whipple", "disc_free", "--out",
          str(out), "--quiet"],
-        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        preexec_fn=_default_sigint)
     deadline = time.monotonic() + 60
     # The first staged plot: every worker has started (the signal then never meets a
     # worker still being set up), and most scenarios are still to run.

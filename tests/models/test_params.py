@@ -188,6 +188,17 @@ def test_free_disc_settings_are_checked():
         DiscParams(free_rim=0.0101)
 
 
+def test_floor_contact_settings_are_checked():
+    DiscParams(floor_impedance=1e-4, floor_impratio=1.0)  # the edges: MuJoCo's least d
+    DiscParams(floor_impedance=0.01, floor_impratio=1e6)
+    with pytest.raises(ValueError, match=r"floor_impedance = 0\.011 is not physical; valid "
+                                         r"range is \[0\.0001, 0\.01\]"):
+        DiscParams(floor_impedance=0.011)
+    with pytest.raises(ValueError, match=r"floor_impratio = 0\.5 is not physical; valid "
+                                         r"range is \[1, 1e\+06\]"):
+        DiscParams(floor_impratio=0.5)
+
+
 #: Each bound of the added robots' parameters at its edge: (class, other fields, field,
 #: a value on the edge or just inside it that is valid, one just outside that is not, the
 #: range the message must give). Values from the docstrings' stated bounds.

@@ -26,6 +26,8 @@ def scene_xml(spec: RobotSpec) -> str:
     """The ``scene.xml`` text: an include of the robot file, then the scene elements."""
     scene = mjcf.RootElement(model=f"{spec.name} scene")
     add_scene(scene)
+    if spec.scene_extras is not None and spec.params_type is not None:
+        spec.scene_extras(scene, spec.params_type())
     tree = etree.fromstring(common.to_xml(scene).encode())
     for el in list(tree):
         if el.tag in ("compiler", "default") or (len(el) == 0 and not el.attrib):

@@ -33,6 +33,8 @@ def build_scene(robot: str, params: RobotParams | None = None) -> mjcf.RootEleme
     root = spec.build(params)
     root.model = f"{root.model} scene"
     add_scene(root)
+    if spec.scene_extras is not None:
+        spec.scene_extras(root, params)
     return root
 
 

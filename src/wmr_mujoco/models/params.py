@@ -271,8 +271,18 @@ class DiscParams:
             would; the wheel's full half-width puts a leaning disc's contact off the
             thin-disc point and misses steady precession by more than its target (study
             table).
+        floor_impedance: impedance ``d`` (``solimp`` d0 = d_width) of the mounted wheel's
+            contact pair with the floor, in [1e-4, 0.01] (MuJoCo's least is 1e-4). A
+            sliding contact pushes itself off the floor by ``μ d B_f s`` for slip ``s``
+            (friction reference damping ``B_f``) against ``(1 − d) g``; a small ``d``
+            with ``B_f = 1/Δt`` keeps the wheel down up to ``s = g Δt / (μ d)`` and
+            lets friction grip again within one step (derivation in
+            ``docs/rolling-disc.md``).
+        floor_impratio: ``impratio`` of the mounted disc (its one contact is the wheel's
+            with the floor), in [1, 1e6]: the friction-to-normal impedance ratio that makes
+            the gripping friction stiff, ``impratio · d (1 + m R²/J) ≫ 1``.
 
-    The mounted disc (``disc``) ignores the ``free_*`` fields; the free disc
+    The mounted disc (``disc``) ignores the ``free_*`` fields and ``sim.impratio``; the free disc
     (``disc_free``, :class:`FreeDiscParams`) ignores the mount and its actuators.
 
     """
@@ -285,17 +295,22 @@ class DiscParams:
     free_integrator: str = "RK4"
     free_timestep: float = 0.004
     free_rim: float = 0.002
+    floor_impedance: float = 0.001
+    floor_impratio: float = 1e4
 
     #: Fields the model does not use (the mount steers through any angle; the free disc's
-    #: settings belong to ``disc_free``): ``wmr info`` leaves them out.
+    #: settings belong to ``disc_free``; ``floor_impratio`` replaces ``sim.impratio``):
+    #: ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_angle_limit", "free_integrator",
-                                         "free_timestep", "free_rim")
+                                         "free_timestep", "free_rim", "sim.impratio")
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
         _check_range(self, "free_timestep", 0.0, 0.02)
         _check_range(self, "free_rim", 0.0, 0.5 * self.wheel.width)
         _check_choice(self, "free_integrator", FREE_INTEGRATORS)
+        _check_range(self, "floor_impedance", 1e-4, 0.01, low_inclusive=True)
+        _check_range(self, "floor_impratio", 1.0, 1e6, low_inclusive=True)
 
     @property
     def total_mass(self) -> float:
@@ -314,7 +329,7 @@ class FreeDiscParams(DiscParams):
 
     #: Fields the free disc's model does not use: ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = (
-        "mount_mass", "sim.timestep",
+        "mount_mass", "sim.timestep", "floor_impedance", "floor_impratio",
         *(f"drive.{f.name}" for f in fields(DriveParams)))
 
     @property

@@ -93,6 +93,9 @@ class RobotSpec(Generic[P]):
         clips: its clips in ``renders/`` (default: one GIF of the render scenario).
         peer: the robot's side-by-side with a foreign model on the same trials, for
             ``wmr bench`` (see :data:`PeerComparison`; None: the robot has no peer).
+        scene_extras: ``(scene root, params) -> None``, elements that name the scene's
+            geoms (contact pairs with the ``floor``), added after the floor in the built
+            and the checked-in scene (None: nothing).
     """
 
     name: str
@@ -114,6 +117,7 @@ class RobotSpec(Generic[P]):
     picture: Picture = Picture()
     clips: tuple[Clip, ...] = (Clip(),)
     peer: PeerComparison | None = None
+    scene_extras: Callable[[mjcf.RootElement, P], None] | None = None
 
     def __post_init__(self) -> None:
         names = [s.name for s in self.scenarios]

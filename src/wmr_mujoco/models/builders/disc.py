@@ -31,6 +31,7 @@ def build(params: DiscParams) -> mjcf.RootElement:
     p = params
     r = p.wheel.radius
     root = common.new_root("disc", p.sim)
+    root.option.impratio = p.floor_impratio
     carriage = root.worldbody.add("body", name="carriage", pos=(0, 0, r))
     for axis_name, axis in (("x", (1, 0, 0)), ("y", (0, 1, 0)), ("z", (0, 0, 1))):
         carriage.add("joint", name=f"mount_{axis_name}", type="slide", axis=axis)
@@ -51,6 +52,33 @@ def build(params: DiscParams) -> mjcf.RootElement:
     common.add_joint_sensors(root, ["wheel"], ["steer"])
     common.add_frame_sensors(root, site)
     return root
+
+
+def floor_pair(scene: mjcf.RootElement, params: DiscParams) -> None:
+    """The mounted wheel's contact pair with the scene's ``floor`` (a ``scene_extras``).
+
+    A frictional soft contact in its cone state pushes the wheel off the floor while it
+    slides: the normal row's acceleration balance gains ``μ d (ṡ + B_f s)`` for slip
+    ``s`` and friction reference damping ``B_f`` (docs/rolling-disc.md), against the
+    weight's ``(1 − d) g``. With the geoms' default contact (``d`` ≈ 0.95,
+    ``B_f = 2/t_c``) that is hundreds of m/s² at a slip of 1 m/s, and the wheel hops.
+    This pair keeps the normal row's dynamics (``solref`` time constant and critical
+    damping, which MuJoCo scales by ``1/d``) and sets:
+
+    * ``solimp`` ``d0 = d_width = d`` (:attr:`DiscParams.floor_impedance`);
+    * ``solreffriction`` damping ``B_f = 1/Δt`` in MuJoCo's direct form (``−B_f d``,
+      which MuJoCo divides by ``d``): gripping friction removes the slip within one
+      step, like the geoms' ``2/t_c`` with ``t_c = 2 Δt``, while the push
+      ``μ d B_f s = μ d s/Δt`` stays under ``g`` up to a slip of ``g Δt/(μ d)``.
+    """
+    p = params
+    d = p.floor_impedance
+    mu = p.sim.friction
+    scene.contact.add("pair", geom1="wheel_collision", geom2="floor", condim=3,
+                      friction=(mu, mu, 0.005, 0.0001, 0.0001),
+                      solref=(p.sim.contact_timeconst, 1.0),
+                      solimp=(d, d, 0.001, 0.5, 2.0),
+                      solreffriction=(0.0, -d / p.sim.timestep))
 
 
 def _quat_about(axis: tuple[float, float, float], angle: float) -> np.ndarray:

@@ -149,9 +149,9 @@ SCENARIOS = (
              kind=ScenarioKind.DYNAMIC),
     Scenario(NAME, "sliding wheel", duration=2.0, kind=ScenarioKind.MEASUREMENT,
              evaluate=_on_model(sliding.sliding_wheel),
-             description="torque ramp to the slip onset, then a torque pulse 5 % above the "
-                         "traction limit: sliding and re-grip against the Coulomb closed "
-                         "form"),
+             description="torque ramp to the slip onset, then five torque pulses 5-23 % "
+                         "above the traction limit, 0.2-0.6 s long: sliding and re-grip "
+                         "against the Coulomb closed form, worst over the pulses"),
 )
 
 SPEC = RobotSpec(
@@ -164,5 +164,5 @@ SPEC = RobotSpec(
     judges={ScenarioKind.DYNAMIC: judge_rolling},
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="constant steering",
     render_scenario="sinusoidal steering", picture=Picture(joint_angles={"steer": 0.35}),
-    clips=(Clip(duration=5.0),),
+    clips=(Clip(duration=5.0),), scene_extras=builder.floor_pair,
 )
