@@ -46,8 +46,10 @@ from wmr_mujoco.analytic.roller_traction import traction_directions
 #: Standard gravity, m/s².
 GRAVITY = 9.81
 #: Default internal step, s: well below the servo's time constant ``I_w / k_v``
-#: (2 ms for ``mecanum4``) and the traction-limited rise times (10–60 ms).
-STEP = 5e-5
+#: (2.1 ms for ``mecanum4``) and the traction-limited rise times (10–60 ms). The scheme
+#: is first order: for ``mecanum4``'s steps the lag ``∫(ν_end − ν) dt`` moves by 0.015 mm
+#: (0.3 m/s) and 0.04 mrad (1 rad/s) from this step to its Richardson limit.
+STEP = 1e-4
 
 
 @dataclass(frozen=True)
@@ -115,16 +117,22 @@ class RollerPlatform:
         j = self.jacobian
         return (j * self.inverse_mass) @ j.T
 
-    def loads(self, accel: np.ndarray) -> np.ndarray:
-        """Wheel loads ``N_i`` under body acceleration ``(a_x, a_y)`` (module docstring)."""
-        a = as_array("accel", accel, (2,))
+    @functools.cached_property
+    def _transfer(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Static loads and the load change per unit ``a_x`` and ``a_y``."""
         pos = self.layout.positions
         base = np.full(self.layout.n, self.mass * self.gravity / self.layout.n)
         if self.com_height == 0.0:
-            return base
+            return base, np.zeros(self.layout.n), np.zeros(self.layout.n)
         moment = self.mass * self.com_height
-        return base - moment * (a[0] * pos[:, 0] / np.sum(pos[:, 0] ** 2)
-                                + a[1] * pos[:, 1] / np.sum(pos[:, 1] ** 2))
+        return (base, -moment * pos[:, 0] / np.sum(pos[:, 0] ** 2),
+                -moment * pos[:, 1] / np.sum(pos[:, 1] ** 2))
+
+    def loads(self, accel: np.ndarray) -> np.ndarray:
+        """Wheel loads ``N_i`` under body acceleration ``(a_x, a_y)`` (module docstring)."""
+        a = as_array("accel", accel, (2,))
+        base, per_ax, per_ay = self._transfer
+        return base + a[0] * per_ax + a[1] * per_ay
 
     def servo_torques(self, rates: np.ndarray, commanded: np.ndarray) -> np.ndarray:
         """``clip(k_v (ω_cmd − ω), ±τ_max)``."""
@@ -139,45 +147,71 @@ class RollerPlatform:
 
 
 @functools.lru_cache(maxsize=8)
-def _free_sets(n: int) -> tuple[tuple[int, ...], ...]:
+def _states(n: int) -> tuple[tuple[int, ...], ...]:
     """Every contact state (−1: at −bound, 0: stick, +1: at +bound), sticking first."""
     states = list(itertools.product((0, 1, -1), repeat=n))
     return tuple(sorted(states, key=lambda s: sum(map(abs, s))))
 
 
-def box_lcp(delassus: np.ndarray, slip_free: np.ndarray, bounds: np.ndarray,
-            guess: tuple[int, ...] | None = None, tol: float = 1e-12
-            ) -> tuple[np.ndarray, tuple[int, ...]]:
-    """Coulomb impulses along fixed directions: the box-constrained LCP.
+class BoxLcp:
+    """Coulomb impulses along fixed directions: the box-constrained LCP of one ``W``.
 
-    Find ``P`` with ``s = slip_free + W P`` such that for each i: ``|P_i| ≤ b_i`` and
+    Find ``P`` with ``s = s_free + W P`` such that for each i: ``|P_i| ≤ b_i`` and
     ``P_i = −b_i`` if ``s_i > 0``, ``P_i = +b_i`` if ``s_i < 0``, ``s_i = 0`` otherwise.
-    Solved by active sets: the ``guess`` first (the previous step's), then every one of
-    the ``3ⁿ`` sets, sticking contacts first (W symmetric positive definite: the solution
-    exists and is unique).
-
-    Returns:
-        ``(P, state)`` with ``state_i`` −1, 0 or +1 (at −b, stick, at +b).
-
-    Raises:
-        ValueError: no active set satisfies the conditions (W not positive definite).
+    Solved by active sets: a guess first (the previous step's), then every one of the
+    ``3ⁿ`` sets, sticking contacts first; W symmetric positive definite makes the
+    solution exist and be unique. Each set's ``W_FF⁻¹`` is kept once computed.
     """
-    n = len(bounds)
-    candidates = _free_sets(n) if guess is None else (guess, *_free_sets(n))
-    scale = tol * (1.0 + float(np.max(np.abs(slip_free))))
-    for state in candidates:
-        st = np.asarray(state)
-        p = st * bounds
-        free = st == 0
-        if np.any(free):
-            rhs = -(slip_free[free] + delassus[np.ix_(free, ~free)] @ p[~free])
-            p[free] = np.linalg.solve(delassus[np.ix_(free, free)], rhs)
-            if np.any(np.abs(p[free]) > bounds[free] * (1.0 + 1e-9) + 1e-15):
-                continue
-        s = slip_free + delassus @ p
-        if np.all(s[st > 0] <= scale) and np.all(s[st < 0] >= -scale):
-            return p, tuple(state)
-    raise ValueError("box_lcp: no contact state satisfies the Coulomb conditions")
+
+    def __init__(self, delassus: np.ndarray) -> None:
+        self.w = np.asarray(delassus, float)
+        self._sets: dict[tuple[int, ...], tuple[np.ndarray, np.ndarray | None,
+                                                  np.ndarray | None]] = {}
+
+    def _set(self, state: tuple[int, ...]) -> tuple[np.ndarray, np.ndarray | None,
+                                                    np.ndarray | None]:
+        got = self._sets.get(state)
+        if got is None:
+            st = np.asarray(state)
+            free = st == 0
+            if np.any(free):
+                inv = np.linalg.inv(self.w[np.ix_(free, free)])
+                got = (st, inv, self.w[np.ix_(free, ~free)])
+            else:
+                got = (st, None, None)
+            self._sets[state] = got
+        return got
+
+    def solve(self, slip_free: np.ndarray, bounds: np.ndarray,
+              guess: tuple[int, ...] | None = None, tol: float = 1e-12
+              ) -> tuple[np.ndarray, tuple[int, ...]]:
+        """``(P, state)``, ``state_i`` −1, 0 or +1 (at −b, stick, at +b).
+
+        Raises:
+            ValueError: no active set satisfies the conditions (W not positive definite).
+        """
+        n = len(bounds)
+        candidates = _states(n) if guess is None else (guess, *_states(n))
+        scale = tol * (1.0 + float(np.max(np.abs(slip_free))))
+        for state in candidates:
+            st, inv, w_fa = self._set(state)
+            p = st * bounds
+            if inv is not None:
+                free = st == 0
+                p[free] = -inv @ (slip_free[free] + w_fa @ p[~free])
+                if np.any(np.abs(p[free]) > bounds[free] * (1.0 + 1e-9) + 1e-15):
+                    continue
+            s = slip_free + self.w @ p
+            if np.all(s[st > 0] <= scale) and np.all(s[st < 0] >= -scale):
+                return p, state
+        raise ValueError("box_lcp: no contact state satisfies the Coulomb conditions")
+
+
+def box_lcp(delassus: np.ndarray, slip_free: np.ndarray, bounds: np.ndarray,
+            guess: tuple[int, ...] | None = None) -> tuple[np.ndarray, tuple[int, ...]]:
+    """One solve of :class:`BoxLcp` (see there)."""
+    return BoxLcp(delassus).solve(np.asarray(slip_free, float), np.asarray(bounds, float),
+                                  guess)
 
 
 @dataclass(frozen=True)
@@ -207,6 +241,38 @@ class StepResponse:
         """``ν(t)``, linear between steps; the last value after the end (steady)."""
         return np.array([np.interp(t, self.time, self.twist[:, k]) for k in range(3)])
 
+    @property
+    def rise_time(self) -> float:
+        """The time from which every contact sticks to the end of the run, s."""
+        slipping = np.flatnonzero(~np.all(self.stuck, axis=1))
+        return 0.0 if slipping.size == 0 else float(self.time[slipping[-1]])
+
+
+def advance(platform: RollerPlatform, lcp: BoxLcp, q_dot: np.ndarray,
+            commanded: np.ndarray, accel: np.ndarray, step: float,
+            guess: tuple[int, ...] | None = None
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, tuple[int, ...], np.ndarray,
+                       np.ndarray]:
+    """One Moreau step of the velocities ``q̇ = (ν, ω)`` (module docstring).
+
+    ``q̇_free = q̇ + h_s M⁻¹ (−c(ν), τ(ω))``; loads from the previous acceleration
+    ``accel = (a_x, a_y)`` (negative ones clipped to 0: a wheel lifts off); impulses
+    ``P`` from the box LCP with bounds ``μ N_i h_s``; ``q̇⁺ = q̇_free + M⁻¹ Jᵀ P``.
+
+    Returns:
+        ``(q̇⁺, P, s⁺, contact state, loads, (a_x, a_y) of this step)``.
+    """
+    base, per_ax, per_ay = platform._transfer
+    loads = np.maximum(base + accel[0] * per_ax + accel[1] * per_ay, 0.0)
+    minv, jac = platform.inverse_mass, platform.jacobian
+    q_free = q_dot + step * minv * platform.free_forces(q_dot, commanded)
+    slip_free = jac @ q_free
+    p, state = lcp.solve(slip_free, platform.friction * loads * step, guess)
+    q_new = q_free + minv * (jac.T @ p)
+    nu_dot = (q_new[:3] - q_dot[:3]) / step
+    accel_new = np.array([nu_dot[0] - q_new[2] * q_new[1], nu_dot[1] + q_new[2] * q_new[0]])
+    return q_new, p, slip_free + lcp.w @ p, state, loads, accel_new
+
 
 def step_response(platform: RollerPlatform, commanded: np.ndarray, duration: float,
                   step: float = STEP, settle_tol: float = 1e-9,
@@ -228,8 +294,7 @@ def step_response(platform: RollerPlatform, commanded: np.ndarray, duration: flo
     if not (np.isfinite(step) and 0.0 < step <= 1e-3):
         raise ValueError(f"step = {step!r} s; valid range is (0, 1e-3]")
     n = platform.layout.n
-    jac, minv, w = platform.jacobian, platform.inverse_mass, platform.delassus
-    mu = platform.friction
+    lcp = BoxLcp(platform.delassus)
     per_chunk = max(1, round(chunk / step))
     total = round(duration / step)
     q = np.zeros(3 + n)
@@ -245,16 +310,9 @@ def step_response(platform: RollerPlatform, commanded: np.ndarray, duration: flo
         settled = True
         start = q[:3].copy()
         for _ in range(min(per_chunk, total - k)):
-            loads = np.maximum(platform.loads(accel), 0.0)
-            q_free = q + step * minv * platform.free_forces(q, cmd)
-            slip_free = jac @ q_free
-            p, state = box_lcp(w, slip_free, mu * loads * step, state)
-            q_new = q_free + minv * (jac.T @ p)
-            slip = slip_free + w @ p
+            q_new, p, slip, state, loads, accel = advance(platform, lcp, q, cmd, accel,
+                                                          step, state)
             dissipated -= float(p @ slip)
-            nu_dot = (q_new[:3] - q[:3]) / step
-            accel = np.array([nu_dot[0] - q_new[2] * q_new[1],
-                              nu_dot[1] + q_new[2] * q_new[0]])
             q = q_new
             k += 1
             if not np.all(np.isfinite(q)):
