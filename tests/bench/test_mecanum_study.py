@@ -9,8 +9,12 @@ def test_measure_splits_ramps_and_steps_and_marks_the_default():
             if s.name in ("translate 0° (ramp)", "translate 0° (step)")]
     s = measure(MecanumParams(), scen, "ellipsoid, 16")
     assert set(s.tracking) == {"ramp", "step"}
-    # A step lags more than a ramp of the same run (friction-limited acceleration).
-    assert s.tracking["step"][0] > s.tracking["ramp"][0]
+    # A step lags the instant kinematics (friction-limited acceleration); the step model
+    # predicts the lag: against it the step stays within the 1 % requirement and well
+    # inside the ideal model's error, which carries the whole lag (V T/2 over a 0.3 m
+    # path: 0.3·0.043/2 m ≈ 2 % of path).
+    assert s.tracking["step"][0] <= 1.0
+    assert s.tracking["step"][2] > 2.0 * s.tracking["step"][0]
     assert 0.0 < s.ripple_pct <= 0.3
     assert "**ellipsoid, 16 (default)**" in table([s], "ellipsoid, 16")
 

@@ -49,8 +49,9 @@ class Summary:
     """One model's figures.
 
     ``tracking[kind]``, kind ``"ramp"`` or ``"step"``: worst over the runs of
-    ``(position % of path, heading °)`` against the pitch-averaged model and then against
-    the ideal one.
+    ``(position % of path, heading °)`` against the judged model (ramps: the
+    pitch-averaged kinematics; steps: the stick–slip step model) and then against the
+    ideal one.
     """
 
     label: str
@@ -110,11 +111,11 @@ def study_configs() -> list[tuple[str, MecanumParams]]:
 
 
 def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
-    """Markdown table: ramp and step tracking, pitch-averaged model / ideal model."""
+    """Markdown table: ramp (pitch-averaged) and step (step model) tracking / ideal model."""
     lines = ["| rollers | ripple % | derived sideways shortfall % | ramps: worst position "
              "% of path, averaged / ideal | ramps: worst heading °, averaged / ideal | "
-             "steps: worst position % of path, averaged / ideal | steps: worst heading °, "
-             "averaged / ideal | real-time factor |", "|---|---|---|---|---|---|---|---|"]
+             "steps: worst position % of path, step model / ideal | steps: worst heading °, "
+             "step model / ideal | real-time factor |", "|---|---|---|---|---|---|---|---|"]
     for s in rows:
         label = f"**{s.label} (default)**" if s.label == default_label else s.label
         cells = []

@@ -8,9 +8,8 @@ import pytest
 
 from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.robots.mecanum4 import TARGETS, kinematic_runs
-from wmr_mujoco.robots.mecanum4.kinematics import MecanumKinematics, is_step, step_targets
-from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.robots.mecanum4 import kinematic_runs
+from wmr_mujoco.robots.mecanum4.kinematics import MecanumKinematics, is_step
 from wmr_mujoco.validation.runner import run_scenario
 
 P = MecanumParams()
@@ -41,18 +40,8 @@ def test_rhs_carries_both_models():
     np.testing.assert_allclose(d, [-0.3 / K, 0.0, 0.0, -0.3, 0.0, 0.0], atol=1e-12)
 
 
-def test_step_targets_add_the_lag_to_the_requirement():
-    s = run("translate 0° (step)")
-    adapter = MecanumKinematics(P, accel_time=0.04, timestep=0.004)
-    path = 0.5
-    got = step_targets(s, adapter, path, TARGETS)
-    lag_pct = 100 * 0.3 * (0.02 + 0.004) / path
-    assert got[mt.POSITION_PCT].value == pytest.approx(1.0 + lag_pct, rel=1e-12)
-    assert got[mt.POSITION_PCT].kind == "derived bound"
-    assert got[mt.HEADING_DEG].value == pytest.approx(1.0)  # no turn, no heading lag
-    ramp = run("translate 0° (ramp)")
-    assert not is_step(ramp) and is_step(s)
-    assert step_targets(ramp, MecanumKinematics(P), path, TARGETS) == dict(TARGETS)
+def test_only_held_nonzero_commands_are_steps():
+    assert is_step(run("translate 0° (step)")) and not is_step(run("translate 0° (ramp)"))
 
 
 def _advance(x, start, pose):
@@ -82,13 +71,17 @@ def test_steady_shortfall_is_the_pitch_averaged_one(name, pose, derived):
     assert 1 - moved / ideal == pytest.approx(derived, rel=0.25)
 
 
-def test_step_run_is_judged_on_the_derived_bound():
+def test_step_run_is_judged_on_the_requirement_against_the_step_model():
     s = dataclasses.replace(run("translate 0° (step)"), duration=1.0)
     r = rows(run_scenario(s))
     pos = r[("worst position error", "% of path")]
-    assert pos.basis.startswith("derived bound")
-    assert pos.passed
-    # The chassis cannot beat friction: the lag is at least the traction-limited part
-    # V T/2 (T = V / (μ g / √2)), 5 % allowance for contact softness.
-    t_rise = 0.3 / (P.sim.friction * 9.81 / math.sqrt(2))
-    assert r[("worst position error", "m")].value >= 0.95 * 0.3 * t_rise / 2
+    assert pos.basis.startswith("requirement") and pos.target == pytest.approx(1.0)
+    # The chassis cannot beat friction: against the instant step of the kinematics it
+    # lags by at least the traction-limited part V T/2 (T = V / (μ g / √2)), 5 %
+    # allowance for contact softness. The step model predicts that lag: its error is
+    # below a quarter of it (the rest: the simulator's start-up, docs/mecanum.md §4).
+    lag = 0.3 * 0.3 / (P.sim.friction * 9.81 / math.sqrt(2)) / 2
+    path = r[("path length", "m")].value
+    kin = r[("worst position error, kinematic model", "% of path")].value * path / 100
+    assert kin >= 0.95 * lag
+    assert r[("worst position error", "m")].value < 0.25 * lag

@@ -24,8 +24,10 @@ from wmr_mujoco.validation.metrics import Metric, Series, Trace
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
 #: The metrics of each member kept in the group's rows: the judged ones (they have a
-#: target), the ideal model's beside them and the RMS position error.
-KEPT = ("RMS position error",)
+#: target), the other models' beside them (:data:`BESIDE`) and the RMS errors.
+KEPT = ("RMS position error", "RMS heading error")
+#: Name endings of the reported models' metrics (kinematic model of a step run, ideal).
+BESIDE = ("kinematic model", "ideal model")
 
 
 @dataclass(frozen=True)
@@ -80,7 +82,7 @@ def evaluate_group(members: Sequence[Scenario], params: RobotParams | None
         trace = Trace()
         name = prep.scenario.name
         for m in measure_metrics(prep, states, trace):
-            if m.target is not None or "ideal model" in m.name or m.name in KEPT:
+            if m.target is not None or m.name.endswith(BESIDE) or m.name in KEPT:
                 metrics.append(m._replace(name=f"{name}: {m.name}"))
         tr = trace.arrays()
         err = np.linalg.norm(tr["sim"][:, :2] - tr["analytic"][:, :2], axis=1)

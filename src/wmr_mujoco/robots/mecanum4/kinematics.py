@@ -1,13 +1,16 @@
-"""``mecanum4`` on rate inputs: the ideal and the roller-pitch-averaged kinematics.
+"""``mecanum4`` on rate inputs: the step model, the pitch-averaged and the ideal kinematics.
 
 Inputs ``(u, v, r)``: the commanded body twist, driven as wheel rates from Lynch & Park's
-ideal formula ``θ̇ = H(γ) ν_cmd`` (FL, FR, RL, RR). The analytic state carries two poses
-side by side from the same start: the **pitch-averaged** model's ``(x, y, heading)``,
-``(Ẋ, Ẏ, ψ̇) = Rot(ψ) S ν_cmd`` with ``S = H(γ̄)⁺ H(γ)``
+ideal formula ``θ̇ = H(γ) ν_cmd`` (FL, FR, RL, RR). The **pitch-averaged** kinematics
+``(Ẋ, Ẏ, ψ̇) = Rot(ψ) S ν_cmd``, ``S = H(γ̄)⁺ H(γ)``
 (:mod:`wmr_mujoco.analytic.pitch_averaged`: the rolling constraint averaged over one
-roller pitch, ``tan γ̄ = ⟨sec φ⟩ tan γ``), and the **ideal** model's, ``Rot(ψ) ν_cmd``. The
-judged model is the first; the second is reported beside it so that the effect of the
-discrete rollers shows (:func:`judge_kinematic`).
+roller pitch, ``tan γ̄ = ⟨sec φ⟩ tan γ``) judge the ramped runs, with the **ideal** model
+``Rot(ψ) ν_cmd`` beside them. A **step** command is judged against the stick–slip
+dynamic model (:mod:`wmr_mujoco.analytic.roller_stick_slip`, parameters from the compiled
+model by :mod:`.traction`): its body twist ``ν(t)`` from rest is computed once, and the
+pose follows ``Rot(ψ) ν(t)``; the pitch-averaged and ideal kinematics are reported beside
+it (:func:`judge_kinematic`). After the rise the step model rolls as the pitch-averaged
+kinematics (same constraint rows).
 """
 
 from __future__ import annotations
@@ -22,41 +25,59 @@ import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic import pitch_averaged as pa
+from wmr_mujoco.analytic.planar import wrap_angle
+from wmr_mujoco.analytic.roller_stick_slip import StepResponse, step_response
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import traction
 from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
-from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
-from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking
+from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking, rms
 from wmr_mujoco.validation.scenarios import Scenario
 
+#: Names of the pitch-averaged model's pose in a step run's analytic state.
+KINEMATIC_STATE = ("x (kinematic)", "y (kinematic)", "heading (kinematic)")
 #: Names of the ideal model's pose components in the analytic state.
 IDEAL_STATE = ("x (ideal)", "y (ideal)", "heading (ideal)")
+#: A step run's clock: time since the command, s (the step model's ``ν(t)`` is read at it).
+CLOCK = "t"
 
 
 @dataclass(frozen=True)
 class MecanumKinematics:
-    """``x = (X, Y, ψ)`` of the pitch-averaged model, then of the ideal one.
+    """Ramped runs: ``x = (X, Y, ψ)`` pitch-averaged, then ideal. Steps: step model first.
+
+    A step run's state is ``(X, Y, ψ)`` of the step model, of the pitch-averaged model
+    and of the ideal model, then the clock ``t``.
 
     Attributes:
         params: the robot's parameters (layout, roller count).
-        accel_time: for a step command, the traction-limited time ``T`` to reach it
-            (:func:`wmr_mujoco.robots.mecanum4.traction.step_acceleration_time`); None
-            for a ramped command.
-        timestep: the model's Δt, s (the step's one-step delay).
+        step: for a step command, the step model's response from rest; None for a ramp.
+        start_time: the simulation time at which the command starts, s (the settle).
     """
 
     params: MecanumParams
-    accel_time: float | None = None
-    timestep: float = 0.0
+    step: StepResponse | None = None
+    start_time: float = 0.0
     mode: ActuationMode = ActuationMode.RATE
-    state_names: tuple[str, ...] = ("x", "y", "heading", *IDEAL_STATE)
-    state_units: tuple[str, ...] = (*POSE_UNITS, *POSE_UNITS)
     wheel_joints: tuple[str, ...] = WHEEL_NAMES
     lateral_wheels: tuple[str, ...] = ()
+
+    @property
+    def state_names(self) -> tuple[str, ...]:
+        """Pose of the judged model first (module docstring)."""
+        if self.step is None:
+            return ("x", "y", "heading", *IDEAL_STATE)
+        return ("x", "y", "heading", *KINEMATIC_STATE, *IDEAL_STATE, CLOCK)
+
+    @property
+    def state_units(self) -> tuple[str, ...]:
+        """Units of :attr:`state_names`."""
+        if self.step is None:
+            return (*POSE_UNITS, *POSE_UNITS)
+        return (*POSE_UNITS, *POSE_UNITS, *POSE_UNITS, "s")
 
     @functools.cached_property
     def layout(self) -> ok.WheelLayout:
@@ -92,18 +113,25 @@ class MecanumKinematics:
         return self.jacobian @ np.asarray(u, float)
 
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
-        """``(Rot(ψ) S u, Rot(ψ_ideal) u)``."""
+        """``(Rot(ψ) S u, Rot(ψ_ideal) u)``; a step run: ``Rot(ψ) ν(t)`` before them, ṫ = 1."""
         nu = np.asarray(u, float)
-        su, sv, sr = self.realised(nu)
-        c, s = math.cos(x[2]), math.sin(x[2])
-        ci, si = math.cos(x[5]), math.sin(x[5])
-        return np.array([c * su - s * sv, s * su + c * sv, sr,
-                         ci * nu[0] - si * nu[1], si * nu[0] + ci * nu[1], nu[2]])
+        poses = [self.realised(nu), nu]
+        if self.step is not None:
+            poses.insert(0, self.step.twist_at(float(x[-1])))
+        out = []
+        for i, (tu, tv, tr) in enumerate(poses):
+            c, s = math.cos(x[3 * i + 2]), math.sin(x[3 * i + 2])
+            out += [c * tu - s * tv, s * tu + c * tv, tr]
+        if self.step is not None:
+            out.append(1.0)
+        return np.array(out)
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-        """The ``base`` site's pose, once for each model."""
+        """The ``base`` site's pose, once for each model (and the clock of a step run)."""
         pose = base_pose(model, data)
-        return np.concatenate([pose, pose])
+        if self.step is None:
+            return np.concatenate([pose, pose])
+        return np.concatenate([pose, pose, pose, [data.time - self.start_time]])
 
 
 @functools.lru_cache(maxsize=4096)
@@ -141,71 +169,63 @@ def is_step(scenario: Scenario) -> bool:
 
 def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
                       params: RobotParams | None) -> MecanumKinematics:
-    """The kinematic models; a step command also gets its traction-limited rise time."""
-    p = params_or_default(params, MecanumParams)
-    accel = None
-    if is_step(scenario):
-        accel = traction.step_acceleration_time(model, p, scenario.input_at(0.0))
-    return MecanumKinematics(p, accel, float(model.opt.timestep))
+    """The kinematic models; a step command also gets the step model's response.
 
-
-def step_targets(scenario: Scenario, adapter: MecanumKinematics, path: float,
-                 targets: Mapping[str, Target]) -> dict[str, Target]:
-    """The targets of a run: for a step command, the requirement plus the step's lag.
-
-    A step is followed no faster than traction allows (:mod:`.traction`): the chassis
-    reaches the commanded twist after the rise time T, and starts one time step Δt late
-    (the velocity servo turns the wheel in the step the command arrives; the rim drags
-    the chassis through the contact from the next step on). It falls behind the instant
-    step of the kinematics by ``ν (T/2 + Δt)`` for good: ``|(u, v)| (T/2 + Δt)`` in
-    position and ``|r| (T/2 + Δt)`` in heading. The bound is the ramped runs'
-    requirement plus that lag, in the same unit (% of this run's path, degrees).
+    Raises:
+        ValueError: a step command that changes during the run (the step model holds
+            the command of t = 0).
     """
-    out = dict(targets)
-    if adapter.accel_time is None:
-        return out
-    t_rise = adapter.accel_time
-    delay = t_rise / 2.0 + adapter.timestep
-    u, v, r = scenario.input_at(0.0)
-    lag_m = float(np.hypot(u, v)) * delay
-    lag_deg = float(np.degrees(abs(r) * delay))
-    basis = (f"traction-limited step (roller-axis forces ≤ μN): rise time T = "
-             f"{1000 * t_rise:.1f} ms, lag ν (T/2 + Δt), Δt = "
-             f"{1000 * adapter.timestep:g} ms")
-    pos, head = targets.get(mt.POSITION_PCT), targets.get(mt.HEADING_DEG)
-    if pos is not None and path > mt.MIN_PATH:
-        lag_pct = 100.0 * lag_m / path
-        out[mt.POSITION_PCT] = Target.derived(
-            pos.value + lag_pct, f"{pos.value:g} % ({pos.basis}) + {basis} = "
-                                 f"{1000 * lag_m:.2f} mm = {lag_pct:.3f} % of path")
-    if head is not None:
-        out[mt.HEADING_DEG] = Target.derived(
-            head.value + lag_deg, f"{head.value:g}° ({head.basis}) + {basis} = "
-                                  f"{lag_deg:.3f}°")
+    p = params_or_default(params, MecanumParams)
+    if not is_step(scenario):
+        return MecanumKinematics(p)
+    twist = scenario.input_at(0.0)
+    if not np.array_equal(scenario.input_at(scenario.duration), twist):
+        raise ValueError(f"{scenario.key}: a step command must be held over the run "
+                         f"(u(0) = {twist}, u(end) = {scenario.input_at(scenario.duration)})")
+    platform, command = traction.step_platform(model, p, twist)
+    return MecanumKinematics(p, step_response(platform, command, scenario.duration),
+                             scenario.settle)
+
+
+def _reported(scenario: Scenario, trace: Trace, adapter: MecanumKinematics,
+              columns: slice, label: str, note: str) -> list[Metric]:
+    """Worst and RMS errors against the model whose pose is in ``columns``, reported."""
+    sub = Trace(time=trace.time, sim=[s[:3] for s in trace.sim],
+                analytic=[a[columns] for a in trace.analytic],
+                state_names=trace.state_names[:3], state_units=trace.state_units[:3])
+    out = []
+    for m in pose_tracking(scenario, sub, adapter, {}):
+        if (m.name, m.unit) in (("worst position error", "% of path"),
+                                ("worst centre drift", "m"), ("RMS position error", "m"),
+                                ("worst heading error", "deg")):
+            out.append(Metric(f"{m.name}, {label}", m.value, m.unit, note=note))
+    out.append(Metric(f"RMS heading error, {label}", heading_rms(sub), "deg", note=note))
     return out
+
+
+def heading_rms(trace: Trace) -> float:
+    """RMS over the run of the wrapped heading error, degrees."""
+    tr = trace.arrays()
+    return rms(np.degrees(wrap_angle(tr["sim"][:, 2] - tr["analytic"][:, 2])))
 
 
 def judge_kinematic(scenario: Scenario, trace: Trace, adapter: MecanumKinematics,
                     targets: Mapping[str, Target]) -> list[Metric]:
-    """Pose tracking against the pitch-averaged model; the ideal model's errors beside it.
+    """Pose tracking against the judged model; the other models' errors beside it.
 
     Worst, RMS and final errors over the whole run
-    (:func:`~wmr_mujoco.validation.metrics.pose_tracking`), judged on the pitch-averaged
-    model with :func:`step_targets`; the ideal Lynch & Park model's worst position
-    (% of path) and heading errors are reported, not judged.
+    (:func:`~wmr_mujoco.validation.metrics.pose_tracking`) and the RMS heading error,
+    judged at the requirement: a ramped run against the pitch-averaged kinematics, a step
+    run against the step model. Reported, not judged: for a step run the pitch-averaged
+    kinematics' worst and RMS errors, and for every run the ideal Lynch & Park model's.
     """
-    tr = trace.arrays()
-    ana = tr["analytic"]
-    path = float(np.sum(np.linalg.norm(np.diff(ana[:, :2], axis=0), axis=1)))
-    metrics = pose_tracking(scenario, trace, adapter, step_targets(scenario, adapter, path,
-                                                                   targets))
-    ideal = Trace(time=trace.time, sim=[s[:3] for s in trace.sim],
-                  analytic=[a[3:6] for a in trace.analytic],
-                  state_names=trace.state_names[:3], state_units=trace.state_units[:3])
-    for m in pose_tracking(scenario, ideal, adapter, {}):
-        if (m.name, m.unit) in (("worst position error", "% of path"),
-                                ("worst centre drift", "m"), ("worst heading error", "deg")):
-            metrics.append(Metric(f"{m.name}, ideal model", m.value, m.unit,
-                                  note="reported: Lynch & Park with horizontal contact "
-                                       "rollers (no pitch averaging)"))
+    metrics = pose_tracking(scenario, trace, adapter, targets)
+    metrics.append(Metric("RMS heading error", heading_rms(trace), "deg"))
+    ideal = slice(3, 6) if adapter.step is None else slice(6, 9)
+    if adapter.step is not None:
+        metrics += _reported(scenario, trace, adapter, slice(3, 6), "kinematic model",
+                             "reported: pitch-averaged kinematics (instant step)")
+    metrics += _reported(scenario, trace, adapter, ideal, "ideal model",
+                         "reported: Lynch & Park with horizontal contact rollers (no "
+                         "pitch averaging)")
     return metrics
