@@ -84,7 +84,8 @@ def test_unknown_engine_is_refused(model):
 
 
 @pytest.mark.parametrize("engine", list(Engine))
-def test_a_diverging_run_is_reported(model, engine):
+def test_a_diverging_run_is_reported(model, engine, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # MuJoCo logs the warning to MUJOCO_LOG.TXT in the cwd
     data = mujoco.MjData(model)
     with pytest.raises(SimulationDivergedError):
         simulate(model, data, np.full((20, 1), 1e300), engine=engine)
