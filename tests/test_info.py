@@ -8,6 +8,7 @@ import pytest
 
 from wmr_mujoco.info import describe, describe_file, used_params
 from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.loading import build_scene
 from wmr_mujoco.robots import ROBOTS, get_spec
 
 DECLARED = [(name, field) for name, spec in ROBOTS.items() if spec.params_type is not None
@@ -46,10 +47,14 @@ def test_omni3_has_no_steering_parameters_to_show():
     assert "drive.wheel_kv" in shown and not [k for k in shown if "steer" in k]
 
 
+def _scene_xml(robot, params):
+    """The robot in its scene (the scene may carry robot elements, e.g. contact pairs)."""
+    return common.to_xml(build_scene(robot, params))
+
+
 @functools.cache
 def _default_xml(robot):
-    spec = ROBOTS[robot]
-    return common.to_xml(spec.build(spec.params_type()))
+    return _scene_xml(robot, ROBOTS[robot].params_type())
 
 
 @pytest.mark.parametrize("robot, field", DECLARED)
@@ -57,7 +62,7 @@ def test_a_field_declared_unused_leaves_the_model_unchanged(robot, field):
     """Independent of the declaration: build the model with the field changed."""
     spec = ROBOTS[robot]
     changed = _with(spec.params_type(), field)
-    assert common.to_xml(spec.build(changed)) == _default_xml(robot)
+    assert _scene_xml(robot, changed) == _default_xml(robot)
 
 
 @pytest.mark.parametrize("robot, field", SHOWN)
@@ -68,7 +73,7 @@ def test_every_field_info_shows_changes_the_model(robot, field):
     """
     spec = ROBOTS[robot]
     changed = _with(spec.params_type(), field)
-    assert common.to_xml(spec.build(changed)) != _default_xml(robot), (
+    assert _scene_xml(robot, changed) != _default_xml(robot), (
         f"{robot}: {field} does not change the model; declare it UNUSED")
 
 
