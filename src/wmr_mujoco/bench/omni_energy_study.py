@@ -6,8 +6,9 @@
    contacts, stiff contacts (the rigid limit), pure translation;
 2. omni3's dynamic scenarios (step commands, torque inputs, coasting, slip onset)
    through the one runner (:func:`~wmr_mujoco.validation.runner.run_all`), every row;
+3. the torque runs at finer simulation steps (:mod:`~wmr_mujoco.bench.omni_timestep`);
 
-and pastes both tables between the markers of ``docs/omni-dynamics.md``.
+and pastes the tables between the markers of ``docs/omni-dynamics.md``.
 
 The budget instruments every step (too slow for ``wmr validate``): the work of every
 contact constraint force over a step, ``f · J (q̇ₖ + q̇ₖ₊₁)/2 Δt``, split into its normal
@@ -120,6 +121,7 @@ def budget_table(budgets: dict[str, list[Metric]]) -> str:
 
 def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about a minute
     """Run the budgets and omni3's dynamic scenarios; print and paste the tables."""
+    from wmr_mujoco.bench import omni_timestep
     from wmr_mujoco.robots import get_spec
     from wmr_mujoco.validation.report import markdown_table
     from wmr_mujoco.validation.runner import run_all
@@ -135,10 +137,12 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about a m
     scenarios = [s for s in get_spec("omni3").scenarios if s.kind is ScenarioKind.MEASUREMENT]
     results_md = markdown_table(run_all(scenarios))
     budget_md = budget_table(budgets)
-    print(results_md, "", budget_md, sep="\n")
+    timestep_md = omni_timestep.table(omni_timestep.convergence())
+    print(results_md, "", budget_md, "", timestep_md, sep="\n")
     if not args.no_write:
         replace_between(DOC, "omni dynamics: results", results_md)
         replace_between(DOC, "omni dynamics: energy budget", budget_md)
+        replace_between(DOC, "omni dynamics: time step", timestep_md)
         print(f"wrote {DOC}")
 
 
