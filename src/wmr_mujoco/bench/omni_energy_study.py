@@ -7,6 +7,7 @@
 2. omni3's dynamic scenarios (step commands, torque inputs, coasting, slip onset)
    through the one runner (:func:`~wmr_mujoco.validation.runner.run_all`), every row;
 3. the torque runs at finer simulation steps (:mod:`~wmr_mujoco.bench.omni_timestep`);
+4. the roller-row overlaps of the coast (:mod:`~wmr_mujoco.bench.omni_overlap`);
 
 and pastes the tables between the markers of ``docs/omni-dynamics.md``.
 
@@ -121,7 +122,7 @@ def budget_table(budgets: dict[str, list[Metric]]) -> str:
 
 def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about a minute
     """Run the budgets and omni3's dynamic scenarios; print and paste the tables."""
-    from wmr_mujoco.bench import omni_timestep
+    from wmr_mujoco.bench import omni_overlap, omni_timestep
     from wmr_mujoco.robots import get_spec
     from wmr_mujoco.validation.report import markdown_table
     from wmr_mujoco.validation.runner import run_all
@@ -138,11 +139,13 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about a m
     results_md = markdown_table(run_all(scenarios))
     budget_md = budget_table(budgets)
     timestep_md = omni_timestep.table(omni_timestep.convergence())
-    print(results_md, "", budget_md, "", timestep_md, sep="\n")
+    overlap_md = omni_overlap.table(omni_overlap.overlap_windows())
+    print(results_md, "", budget_md, "", timestep_md, "", overlap_md, sep="\n")
     if not args.no_write:
         replace_between(DOC, "omni dynamics: results", results_md)
         replace_between(DOC, "omni dynamics: energy budget", budget_md)
         replace_between(DOC, "omni dynamics: time step", timestep_md)
+        replace_between(DOC, "omni dynamics: overlap windows", overlap_md)
         print(f"wrote {DOC}")
 
 
