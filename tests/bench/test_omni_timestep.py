@@ -28,6 +28,8 @@ def test_position_lead_is_the_simulators_quadrature():
     (lambda: ts.position_lead(np.zeros((3, 3)), np.zeros((3, 3)), 0.0), "dt"),
     (lambda: ts.position_lead(np.zeros((3, 3)), np.zeros((2, 3)), 0.004), "pose"),
     (lambda: ts.convergence(steps=()), "steps"),
+    (lambda: ts.coast_convergence(steps=()), "steps"),
+    (lambda: ts.coast_convergence(steps=(0.02,)), "timestep"),
     (lambda: ts.convergence(steps=(0.004, 0.003)), "divide"),
     (lambda: ts.convergence(steps=(float("nan"),)), "step"),
     (lambda: settled(ActuationMode.TORQUE, timestep=-1.0), "timestep"),

@@ -6,7 +6,8 @@
    contacts, stiff contacts (the rigid limit), pure translation;
 2. omni3's dynamic scenarios (step commands, torque inputs, coasting, slip onset)
    through the one runner (:func:`~wmr_mujoco.validation.runner.run_all`), every row;
-3. the torque runs at finer simulation steps (:mod:`~wmr_mujoco.bench.omni_timestep`);
+3. the torque runs and the coast at finer simulation steps
+   (:mod:`~wmr_mujoco.bench.omni_timestep`);
 4. the roller-row overlaps of the coast (:mod:`~wmr_mujoco.bench.omni_overlap`);
 
 and pastes the tables between the markers of ``docs/omni-dynamics.md``.
@@ -139,12 +140,15 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about a m
     results_md = markdown_table(run_all(scenarios))
     budget_md = budget_table(budgets)
     timestep_md = omni_timestep.table(omni_timestep.convergence())
+    coast_md = omni_timestep.coast_table(omni_timestep.coast_convergence())
     overlap_md = omni_overlap.table(omni_overlap.overlap_windows())
-    print(results_md, "", budget_md, "", timestep_md, "", overlap_md, sep="\n")
+    print(results_md, "", budget_md, "", timestep_md, "", coast_md, "", overlap_md,
+          sep="\n")
     if not args.no_write:
         replace_between(DOC, "omni dynamics: results", results_md)
         replace_between(DOC, "omni dynamics: energy budget", budget_md)
         replace_between(DOC, "omni dynamics: time step", timestep_md)
+        replace_between(DOC, "omni dynamics: coast time step", coast_md)
         replace_between(DOC, "omni dynamics: overlap windows", overlap_md)
         print(f"wrote {DOC}")
 

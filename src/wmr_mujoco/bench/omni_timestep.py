@@ -23,6 +23,11 @@ finer steps and reports, per run and step,
    ``(Δt/2)(v_n − v_0)`` (:func:`position_lead`), a first-order start-up term of the
    integrator; its worst size is given in % of path.
 
+4. the coast after (0.3, 0, 1) at each step and at the reference (:func:`coast_convergence`):
+   the coast's three figures (yaw-rate decay, velocity-direction turn rate, energy lost
+   per second) of the physics and of the hybrid model, and their relative difference as
+   judged.
+
 Scales as the judged metrics (:func:`~wmr_mujoco.validation.metrics.twist_metrics`,
 :func:`~wmr_mujoco.robots.omni3.dynamics.pose_metrics`).
 """
@@ -35,6 +40,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from wmr_mujoco.analytic import omni_hybrid as oh
+from wmr_mujoco.robots.omni3.coasting import COAST_SPEC, coast_figures
 from wmr_mujoco.robots.omni3.dynamics import TORQUE_SPECS, path_length, pose_metrics
 from wmr_mujoco.robots.omni3.runs import Run, hybrid, simulate_runs
 from wmr_mujoco.validation.metrics import twist_metrics
@@ -159,11 +166,53 @@ def table(rows: list[dict[str, object]], reference: float = REFERENCE) -> str:
     return "\n".join(lines)
 
 
+#: The coast's figures, in the order of :func:`~wmr_mujoco.robots.omni3.coasting.coast_figures`.
+COAST_FIGURES = (("yaw-rate decay", "rad/s²"), ("velocity-direction turn rate", "rad/s"),
+                 ("energy lost per second", "W"))
+
+
+def coast_convergence(steps: Sequence[float] = (*STEPS, REFERENCE)
+                      ) -> list[dict[str, object]]:
+    """One row per step: the coast's figures, physics and hybrid model (as judged).
+
+    Raises:
+        ValueError: an empty list, or a step outside (0, 0.01] s.
+    """
+    if not steps:
+        raise ValueError("steps is empty; give at least one simulation step")
+    hy = hybrid(None)
+    rows: list[dict[str, object]] = []
+    for h in steps:
+        run = simulate_runs([COAST_SPEC], timestep=h)[COAST_SPEC.name]
+        dyn = run.hybrid
+        phys = coast_figures(run.t, run.pose, run.twist,
+                             oh.kinetic_energies(hy, run.twist, run.wheel_angles))
+        model = coast_figures(run.t, dyn.pose, dyn.twist,
+                              oh.kinetic_energies(hy, dyn.twist, dyn.thetas))
+        rows.append({"step": h, "physics": phys, "hybrid": model})
+    return rows
+
+
+def coast_table(rows: list[dict[str, object]]) -> str:
+    """Markdown table of :func:`coast_convergence` rows."""
+    head = ["Δt"]
+    for name, unit in COAST_FIGURES:
+        head += [f"{name}, physics ({unit})", f"{name}, hybrid ({unit})",
+                 f"{name}: hybrid vs physics (% of physics)"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for row in rows:
+        cells = [f"{1000 * float(row['step']):g} ms"]
+        for p, h in zip(row["physics"], row["hybrid"], strict=True):  # type: ignore[call-overload]
+            cells += [f"{p:.4g}", f"{h:.4g}", f"{100 * abs(h - p) / max(abs(p), 1e-12):.3g}"]
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about half a minute
     """Print the convergence table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.parse_args(argv)
-    print(table(convergence()))
+    print(table(convergence()), "", coast_table(coast_convergence()), sep="\n")
 
 
 if __name__ == "__main__":  # pragma: no cover
