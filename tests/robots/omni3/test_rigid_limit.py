@@ -1,13 +1,14 @@
 """omni3 in the rigid-contact limit: the hybrid model with the weight's moment over the arc.
 
-With stiff roller contacts (solref time constant 1 ms, step 0.5 ms; the static penetration
-drops to under 1 % of the axle's rise over a roller pitch) the soft contact's own terms of the hybrid model
-(compliant hand-over loss, overlap friction, both ∝ the penetration) vanish and what is
-left is the rigid model of ``docs/omni-dynamics.md`` §§ 1-5: the rolling constraints of the
-roller in contact, the impact map at each hand-over and the weight's moment
-``−N x_c`` as the wheel rolls over a roller's arc. These tests check that model against
-the physics with issue 16's targets (1 % of peak per twist component, 0.5 % of path,
-5 % on each coasting figure), and that the arc's moment is what makes it meet them.
+With stiff roller contacts (solref time constant 1 ms, step 0.5 ms; the static
+penetration drops to under 1 % of the axle's rise over a roller pitch) the soft
+contact's own terms of the hybrid model (compliant hand-over loss, overlap friction,
+both ∝ the penetration) vanish and what is left is the rigid model of
+``docs/omni-dynamics.md`` §§ 1-5: the rolling constraints of the roller in contact, the
+impact map at each hand-over and the weight's moment ``−N x_c`` as the wheel rolls over a
+roller's arc. These tests check that model against the physics with issue 16's targets
+(1 % of peak per twist component, 0.5 % of path, 5 % on each coasting figure), and that
+the arc's moment is what makes it meet them.
 """
 
 import numpy as np
