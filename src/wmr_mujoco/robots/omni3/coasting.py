@@ -36,7 +36,8 @@ YAW_DECAY = Target.open(
     "slide at the Coulomb limit in opposite directions with loads near equal, over windows "
     "set by the platform's vertical motion on the soft contacts, which the planar model "
     "lacks; the physics' own yaw-rate decay moves by more than this target with the "
-    "simulation step (docs/omni-dynamics.md, Not modelled; Time step)")
+    "simulation step; with stiff contacts the model with the weight's moment over the arc "
+    "meets it (docs/omni-dynamics.md, Not modelled; Time step; Contact stiffness)")
 #: Drive (with a 0.5 s ramp) and coast, s.
 DRIVE_TIME = 1.5
 COAST_TIME = 3.0
