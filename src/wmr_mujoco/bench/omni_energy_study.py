@@ -1,13 +1,18 @@
 """Where omni3's coasting energy goes, and the dynamics tables of ``docs/omni-dynamics.md``.
 
-``python -m wmr_mujoco.bench.omni_energy_study`` (``make study``, about a minute):
+``python -m wmr_mujoco.bench.omni_energy_study`` (``make study``, a few minutes):
 
 1. the coasting energy budget (:func:`coast_energy_budget`) of three coasts: default
    contacts, stiff contacts (the rigid limit), pure translation;
 2. omni3's dynamic scenarios (step commands, torque inputs, coasting, slip onset)
    through the one runner (:func:`~wmr_mujoco.validation.runner.run_all`), every row;
+3. the torque runs and the coast at finer simulation steps
+   (:mod:`~wmr_mujoco.bench.omni_timestep`);
+4. the roller-row overlaps of the coast (:mod:`~wmr_mujoco.bench.omni_overlap`);
+5. the dynamic targets against the contacts' stiffness, with the cost
+   (:mod:`~wmr_mujoco.bench.omni_stiffness`, a couple of minutes);
 
-and pastes both tables between the markers of ``docs/omni-dynamics.md``.
+and pastes the tables between the markers of ``docs/omni-dynamics.md``.
 
 The budget instruments every step (too slow for ``wmr validate``): the work of every
 contact constraint force over a step, ``f · J (q̇ₖ + q̇ₖ₊₁)/2 Δt``, split into its normal
@@ -118,8 +123,9 @@ def budget_table(budgets: dict[str, list[Metric]]) -> str:
     return "\n".join(lines)
 
 
-def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about a minute
+def main(argv: list[str] | None = None) -> None:  # pragma: no cover - a few minutes
     """Run the budgets and omni3's dynamic scenarios; print and paste the tables."""
+    from wmr_mujoco.bench import omni_overlap, omni_stiffness, omni_timestep
     from wmr_mujoco.robots import get_spec
     from wmr_mujoco.validation.report import markdown_table
     from wmr_mujoco.validation.runner import run_all
@@ -135,10 +141,19 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - about a m
     scenarios = [s for s in get_spec("omni3").scenarios if s.kind is ScenarioKind.MEASUREMENT]
     results_md = markdown_table(run_all(scenarios))
     budget_md = budget_table(budgets)
-    print(results_md, "", budget_md, sep="\n")
+    timestep_md = omni_timestep.table(omni_timestep.convergence())
+    coast_md = omni_timestep.coast_table(omni_timestep.coast_convergence())
+    overlap_md = omni_overlap.table(omni_overlap.overlap_windows())
+    stiffness_md = omni_stiffness.table(omni_stiffness.study())
+    print(results_md, "", budget_md, "", timestep_md, "", coast_md, "", overlap_md, "",
+          stiffness_md, sep="\n")
     if not args.no_write:
         replace_between(DOC, "omni dynamics: results", results_md)
         replace_between(DOC, "omni dynamics: energy budget", budget_md)
+        replace_between(DOC, "omni dynamics: time step", timestep_md)
+        replace_between(DOC, "omni dynamics: coast time step", coast_md)
+        replace_between(DOC, "omni dynamics: overlap windows", overlap_md)
+        replace_between(DOC, "omni dynamics: contact stiffness", stiffness_md)
         print(f"wrote {DOC}")
 
 

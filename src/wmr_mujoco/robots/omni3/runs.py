@@ -34,11 +34,12 @@ WHEELS = ("wheel1", "wheel2", "wheel3")
 CENTRE_BODY = "platform"
 #: Seconds at rest before a run (as the runner's scenarios).
 SETTLE = 0.5
-#: RK4 substeps of the hybrid model per simulation step (2 ms at the 4 ms step). The rate
-#: servo is stiff (k_v / I_w ≈ 480 /s): the worst step-command figure moves from 0.27 % of
-#: path at 2 ms to 0.15 % at 1 ms and 0.09 % at 0.5 ms (other directions by ±0.03 %), the
-#: torque and coasting figures by under 0.02 and 1 point; 2 ms keeps `wmr validate` fast.
-SUBSTEPS = 2
+#: Longest RK4 step of the hybrid model, s: 2 substeps per simulation step at the 4 ms
+#: step. The rate servo is stiff (k_v / I_w ≈ 480 /s): the worst step-command figure moves
+#: from 0.27 % of path at 2 ms to 0.15 % at 1 ms and 0.09 % at 0.5 ms (other directions by
+#: ±0.03 %), the torque and coasting figures by under 0.02 and 1 point; 2 ms keeps
+#: `wmr validate` fast.
+HYBRID_STEP = 0.002
 
 
 @dataclass(frozen=True)
@@ -99,12 +100,23 @@ class Run:
     dt: float
 
 
-def settled(mode: ActuationMode, params: OmniParams | None = None
-            ) -> tuple[mujoco.MjModel, mujoco.MjData]:
-    """omni3 in ``mode``, settled at rest on the floor for :data:`SETTLE` s."""
+def settled(mode: ActuationMode, params: OmniParams | None = None,
+            timestep: float | None = None) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    """omni3 in ``mode``, settled at rest on the floor for :data:`SETTLE` s.
+
+    ``timestep``: simulation step, s (None: the model's own); a finer one is the time-step
+    convergence study of ``docs/omni-dynamics.md``.
+
+    Raises:
+        ValueError: a timestep outside (0, 0.01] s.
+    """
     from wmr_mujoco.models.loading import load  # the registry imports this module
 
+    if timestep is not None and not (math.isfinite(timestep) and 0 < timestep <= 0.01):
+        raise ValueError(f"timestep = {timestep!r} s; valid range is (0, 0.01] s")
     model = load("omni3", params)
+    if timestep is not None:
+        model.opt.timestep = timestep
     set_actuation_mode(model, mode)
     data = mujoco.MjData(model)
     for _ in range(round(SETTLE / model.opt.timestep)):
@@ -155,19 +167,25 @@ def _ramp(twist: Sequence[float], hy: oh.OmniHybrid, n: int, dt: float) -> np.nd
     return np.clip(np.arange(n) * dt / 0.5, 0.0, 1.0)[:, None] * (H @ np.asarray(twist))
 
 
-def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None
-                  ) -> dict[str, Run]:
+def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
+                  timestep: float | None = None, arc: bool = False) -> dict[str, Run]:
     """Every run through the physics (batched rollouts) and the hybrid model (one batch).
 
+    ``timestep``: the physics' step (None: the model's own, as ``wmr validate``); the
+    hybrid model reports on the same grid, in RK4 steps of at most :data:`HYBRID_STEP`.
+    ``arc``: the hybrid model with the weight's moment over the roller arc
+    (:func:`~wmr_mujoco.analytic.omni_hybrid.simulate_batch`; off in ``wmr validate``).
+
     Raises:
-        ValueError: duplicate names, or a command beyond the actuators' range.
+        ValueError: duplicate names, a command beyond the actuators' range, or a bad
+            timestep.
         SimulationDivergedError: the physics diverged.
         FloatingPointError: the hybrid model diverged.
     """
     names = [s.name for s in specs]
     if len(set(names)) != len(names):
         raise ValueError(f"run names must be unique: {names}")
-    models = {m: settled(m, params) for m in ActuationMode}
+    models = {m: settled(m, params, timestep) for m in ActuationMode}
     hy = _read(models[ActuationMode.TORQUE][0], params)
     dt = models[ActuationMode.TORQUE][0].opt.timestep
     starts: dict[str, np.ndarray] = {}
@@ -218,7 +236,7 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None
         np.array([phys[s.name][1][0] for s in specs]),
         np.array([phys[s.name][2][0] for s in specs]),
         np.array([roller_rates(model, starts[s.name][1 + model.nq:], WHEELS)
-                  for s in specs]), substeps=SUBSTEPS)
+                  for s in specs]), substeps=max(1, math.ceil(dt / HYBRID_STEP - 1e-9)), arc=arc)
     out = {}
     for s, run in zip(specs, runs, strict=True):
         pose, twist, th, rates = phys[s.name]
