@@ -168,13 +168,13 @@ def _ramp(twist: Sequence[float], hy: oh.OmniHybrid, n: int, dt: float) -> np.nd
 
 
 def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
-                  timestep: float | None = None, arc: bool = False) -> dict[str, Run]:
+                  timestep: float | None = None, arc: bool = True) -> dict[str, Run]:
     """Every run through the physics (batched rollouts) and the hybrid model (one batch).
 
     ``timestep``: the physics' step (None: the model's own, as ``wmr validate``); the
     hybrid model reports on the same grid, in RK4 steps of at most :data:`HYBRID_STEP`.
     ``arc``: the hybrid model with the weight's moment over the roller arc
-    (:func:`~wmr_mujoco.analytic.omni_hybrid.simulate_batch`; off in ``wmr validate``).
+    (:func:`~wmr_mujoco.analytic.omni_hybrid.simulate_batch`; on in ``wmr validate``).
 
     Raises:
         ValueError: duplicate names, a command beyond the actuators' range, or a bad
