@@ -24,14 +24,13 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.analytic.roller_stick_slip import StepResponse, step_response
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.robots.mecanum4 import traction
+from wmr_mujoco.robots.mecanum4 import collider, traction
 from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking, rms
@@ -90,19 +89,13 @@ class MecanumKinematics:
         return ok.wheel_jacobian(self.layout)
 
     def realised(self, u: np.ndarray) -> tuple[float, float, float]:
-        """``S ν``: the pitch-averaged twist under the ideal wheel rates ``H(γ) u``.
+        """``ν̄``: the colliders' mean twist under the ideal wheel rates ``H(γ) u``.
 
-        ``S = H(γ̄)⁺ H(γ)`` with γ̄ on the wheels that turn (rate above 1e-9 rad/s).
+        :func:`~wmr_mujoco.robots.mecanum4.collider.realised_twist`: the rolling rows of
+        the model's own roller colliders, least squares over the four wheels, averaged
+        over the roller pitch.
         """
-        return _realised(self.layout_key, float(u[0]), float(u[1]), float(u[2]))
-
-    @functools.cached_property
-    def layout_key(self) -> tuple[tuple[float, ...], int]:
-        """Hashable layout (positions, drive and roller angles, radii) and roller count."""
-        lay = self.layout
-        return (tuple(np.concatenate([lay.positions.ravel(), lay.drive_angles,
-                                      lay.roller_angles, lay.radii]).tolist()),
-                self.params.rollers_per_wheel)
+        return _realised(self.params, float(u[0]), float(u[1]), float(u[2]))
 
     def twist(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
         """The commanded body twist (inputs are body rates)."""
@@ -135,31 +128,11 @@ class MecanumKinematics:
 
 
 @functools.lru_cache(maxsize=4096)
-def _realised(key: tuple[tuple[float, ...], int], u: float, v: float, r: float
+def _realised(params: MecanumParams, u: float, v: float, r: float
               ) -> tuple[float, float, float]:
-    """Cached ``S ν`` for one commanded twist (a run has few distinct inputs)."""
-    nu = np.array([u, v, r])
-    turning = tuple(bool(abs(w) > 1e-9) for w in _jacobian(key) @ nu)
-    su, sv, sr = _twist_map(key, turning) @ nu
+    """Cached ``ν̄`` for one commanded twist (a run has few distinct inputs)."""
+    su, sv, sr = collider.realised_twist(params, np.array([u, v, r]))
     return float(su), float(sv), float(sr)
-
-
-def _layout_of(key: tuple[tuple[float, ...], int]) -> ok.WheelLayout:
-    flat, _ = key
-    n = len(flat) // 5
-    v = np.asarray(flat)
-    return ok.WheelLayout(v[:2 * n].reshape(n, 2), v[2 * n:3 * n], v[3 * n:4 * n], v[4 * n:])
-
-
-@functools.lru_cache(maxsize=16)
-def _jacobian(key: tuple[tuple[float, ...], int]) -> np.ndarray:
-    return ok.wheel_jacobian(_layout_of(key))
-
-
-@functools.lru_cache(maxsize=64)
-def _twist_map(key: tuple[tuple[float, ...], int], turning: tuple[bool, ...]) -> np.ndarray:
-    """Cached :func:`~wmr_mujoco.analytic.pitch_averaged.realised_twist_map`."""
-    return pa.realised_twist_map(_layout_of(key), key[1], np.asarray(turning))
 
 
 def is_step(scenario: Scenario) -> bool:
