@@ -1,16 +1,17 @@
-"""``mecanum4`` on rate inputs: the step model, the pitch-averaged and the ideal kinematics.
+"""``mecanum4`` on rate inputs: the step model, the kinematic model and the ideal one.
 
 Inputs ``(u, v, r)``: the commanded body twist, driven as wheel rates from Lynch & Park's
-ideal formula ``θ̇ = H(γ) ν_cmd`` (FL, FR, RL, RR). The **pitch-averaged** kinematics
-``(Ẋ, Ẏ, ψ̇) = Rot(ψ) S ν_cmd``, ``S = H(γ̄)⁺ H(γ)``
-(:mod:`wmr_mujoco.analytic.pitch_averaged`: the rolling constraint averaged over one
-roller pitch, ``tan γ̄ = ⟨sec φ⟩ tan γ``) judge the ramped runs, with the **ideal** model
-``Rot(ψ) ν_cmd`` beside them. A **step** command is judged against the stick–slip
-dynamic model (:mod:`wmr_mujoco.analytic.roller_stick_slip`, parameters from the compiled
-model by :mod:`.traction`): its body twist ``ν(t)`` from rest is computed once, and the
-pose follows ``Rot(ψ) ν(t)``; the pitch-averaged and ideal kinematics are reported beside
-it (:func:`judge_kinematic`). After the rise the step model rolls as the pitch-averaged
-kinematics (same constraint rows).
+ideal formula ``θ̇ = H(γ) ν_cmd`` (FL, FR, RL, RR). The **kinematic** model
+``(Ẋ, Ẏ, ψ̇) = Rot(ψ) ν̄(ν_cmd)`` rolls on the model's own roller colliders
+(:mod:`wmr_mujoco.robots.mecanum4.collider`: their contact's rolling rows, least squares
+over the four wheels, averaged over the roller pitch; it contains the pitch average of
+:mod:`wmr_mujoco.analytic.pitch_averaged`, ``tan γ̄ = ⟨sec φ⟩ tan γ``) and judges the ramped
+runs, with the **ideal** model ``Rot(ψ) ν_cmd`` beside it. A **step** command is judged
+against the stick–slip dynamic model (:mod:`wmr_mujoco.analytic.roller_stick_slip`,
+parameters from the compiled model by :mod:`.traction`): its body twist ``ν(t)`` from rest
+is computed once, and the pose follows ``Rot(ψ) ν(t)``; the kinematic and ideal models
+are reported beside it (:func:`judge_kinematic`). After the rise the step model rolls as
+the kinematic model (its rows are the colliders' effective layout).
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking, rms
 from wmr_mujoco.validation.scenarios import Scenario
 
-#: Names of the pitch-averaged model's pose in a step run's analytic state.
+#: Names of the kinematic model's pose in a step run's analytic state.
 KINEMATIC_STATE = ("x (kinematic)", "y (kinematic)", "heading (kinematic)")
 #: Names of the ideal model's pose components in the analytic state.
 IDEAL_STATE = ("x (ideal)", "y (ideal)", "heading (ideal)")
@@ -46,9 +47,9 @@ CLOCK = "t"
 
 @dataclass(frozen=True)
 class MecanumKinematics:
-    """Ramped runs: ``x = (X, Y, ψ)`` pitch-averaged, then ideal. Steps: step model first.
+    """Ramped runs: ``x = (X, Y, ψ)`` kinematic, then ideal. Steps: step model first.
 
-    A step run's state is ``(X, Y, ψ)`` of the step model, of the pitch-averaged model
+    A step run's state is ``(X, Y, ψ)`` of the step model, of the kinematic model
     and of the ideal model, then the clock ``t``.
 
     Attributes:
@@ -188,16 +189,16 @@ def judge_kinematic(scenario: Scenario, trace: Trace, adapter: MecanumKinematics
 
     Worst, RMS and final errors over the whole run
     (:func:`~wmr_mujoco.validation.metrics.pose_tracking`) and the RMS heading error,
-    judged at the requirement: a ramped run against the pitch-averaged kinematics, a step
-    run against the step model. Reported, not judged: for a step run the pitch-averaged
-    kinematics' worst and RMS errors, and for every run the ideal Lynch & Park model's.
+    judged at the requirement: a ramped run against the kinematic model (the colliders'),
+    a step run against the step model. Reported, not judged: for a step run the kinematic
+    model's worst and RMS errors, and for every run the ideal Lynch & Park model's.
     """
     metrics = pose_tracking(scenario, trace, adapter, targets)
     metrics.append(Metric("RMS heading error", heading_rms(trace), "deg"))
     ideal = slice(3, 6) if adapter.step is None else slice(6, 9)
     if adapter.step is not None:
         metrics += _reported(scenario, trace, adapter, slice(3, 6), "kinematic model",
-                             "reported: pitch-averaged kinematics (instant step)")
+                             "reported: the colliders' kinematics (instant step)")
     metrics += _reported(scenario, trace, adapter, ideal, "ideal model",
                          "reported: Lynch & Park with horizontal contact rollers (no "
                          "pitch averaging)")
