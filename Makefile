@@ -47,6 +47,7 @@ study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.whipple_study
 	$(BIN)/python -m wmr_mujoco.bench.disc_study
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_study
+	$(BIN)/python -m wmr_mujoco.bench.mecanum_phase
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

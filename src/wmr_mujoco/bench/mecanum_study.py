@@ -49,9 +49,8 @@ class Summary:
     """One model's figures.
 
     ``tracking[kind]``, kind ``"ramp"`` or ``"step"``: worst over the runs of
-    ``(position % of path, heading °)`` against the judged model (ramps: the
-    pitch-averaged kinematics; steps: the stick–slip step model) and then against the
-    ideal one.
+    ``(position % of path, heading °)`` against the judged model (ramps: the colliders'
+    kinematics; steps: the stick–slip step model) and then against the ideal one.
     """
 
     label: str
@@ -67,7 +66,10 @@ def study_scenarios(duration: float = STUDY_DURATION) -> list[Scenario]:
 
 
 def sideways_shortfall_pct(params: MecanumParams) -> float:
-    """Derived shortfall of a sideways run, ``100 (1 − 1/⟨sec φ⟩)`` % (φ_m = π/n)."""
+    """Derived sideways shortfall of the ideal n-roller wheel, ``100 (1 − 1/⟨sec φ⟩)`` %.
+
+    The pitch average's value (φ_m = π/n): a property of the ideal wheel, not a bound.
+    """
     k = pa.mean_secant(pa.roller_half_pitch(params.rollers_per_wheel))
     return 100.0 * (1.0 - 1.0 / k)
 
@@ -111,9 +113,9 @@ def study_configs() -> list[tuple[str, MecanumParams]]:
 
 
 def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
-    """Markdown table: ramp (pitch-averaged) and step (step model) tracking / ideal model."""
+    """Markdown table: ramp (kinematic) and step (step model) tracking / ideal model."""
     lines = ["| rollers | ripple % | derived sideways shortfall % | ramps: worst position "
-             "% of path, averaged / ideal | ramps: worst heading °, averaged / ideal | "
+             "% of path, kinematic / ideal | ramps: worst heading °, kinematic / ideal | "
              "steps: worst position % of path, step model / ideal | steps: worst heading °, "
              "step model / ideal | real-time factor |", "|---|---|---|---|---|---|---|---|"]
     for s in rows:
@@ -152,9 +154,12 @@ def timing_table(params: MecanumParams, rounds: int = 3,
 
 
 def long_runs_table(params: MecanumParams, duration: float = LONG_DURATION) -> str:
-    """Worst position and heading errors of :data:`LONG_RUNS`, both models, judged rows."""
-    lines = ["| run (10 s) | metric | pitch-averaged model | target | ideal model |",
-             "|---|---|---|---|---|"]
+    """Worst position and heading errors of :data:`LONG_RUNS`, judged and ideal models.
+
+    The judged model: ramps, the colliders' kinematics; steps, the stick–slip step model.
+    """
+    lines = ["| run (10 s) | metric | judged model (ramps: kinematic; steps: step model) "
+             "| target | ideal model |", "|---|---|---|---|---|"]
     for name in LONG_RUNS:
         s = dataclasses.replace(next(k for k in mecanum4.kinematic_runs() if k.name == name),
                                 duration=duration)

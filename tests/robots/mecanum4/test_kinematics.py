@@ -9,6 +9,7 @@ import pytest
 from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import kinematic_runs
+from wmr_mujoco.robots.mecanum4.collider import realised_twist
 from wmr_mujoco.robots.mecanum4.kinematics import MecanumKinematics, is_step
 from wmr_mujoco.validation.runner import run_scenario
 
@@ -33,11 +34,14 @@ def test_controls_are_the_ideal_wheel_rates():
 
 
 def test_rhs_carries_both_models():
-    # Sideways at heading 90°: the averaged model moves at v / k, the ideal one at v,
-    # both along −X (Rot(90°) ŷ = −x̂).
+    # Sideways at heading 90°: the judged model moves at the colliders' mean speed
+    # (robots.mecanum4.collider, tested in test_collider.py and against MuJoCo's rolling
+    # radius in tests/analytic/test_mecanum_contact.py), the ideal one at v, both along
+    # −X (Rot(90°) ŷ = −x̂).
     x = np.array([0.0, 0.0, math.pi / 2, 0.0, 0.0, math.pi / 2])
     d = MecanumKinematics(P).rhs(x, np.array([0.0, 0.3, 0.0]))
-    np.testing.assert_allclose(d, [-0.3 / K, 0.0, 0.0, -0.3, 0.0, 0.0], atol=1e-12)
+    v = realised_twist(P, np.array([0.0, 0.3, 0.0]))[1]
+    np.testing.assert_allclose(d, [-v, 0.0, 0.0, -0.3, 0.0, 0.0], atol=1e-12)
 
 
 def test_only_held_nonzero_commands_are_steps():

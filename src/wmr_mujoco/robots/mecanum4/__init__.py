@@ -1,10 +1,11 @@
 """The mecanum platform: four mecanum wheels, 16 free ideal-profile rollers at 45° each.
 
 Kinematic inputs ``(u, v, r)``: the commanded body twist, driven as ideal wheel rates,
-judged against the roller-pitch-averaged kinematics with the ideal model beside it
-(:mod:`.kinematics`), from 0.5 s ramps and from steps (:mod:`.traction`); torque inputs
-against the reduced Lagrange equations (:mod:`.dynamics`); the collider ripple as a
-measurement (:mod:`.ripple`). Derivations: docs/mecanum.md.
+judged against the kinematics of the model's own roller colliders (pitch-averaged,
+:mod:`.collider`) with the ideal model beside it (:mod:`.kinematics`), from 0.5 s ramps
+and from steps (:mod:`.traction`); torque inputs against the reduced Lagrange equations
+(:mod:`.dynamics`); the collider ripple as a measurement (:mod:`.ripple`).
+Derivations: docs/mecanum.md.
 """
 
 from __future__ import annotations

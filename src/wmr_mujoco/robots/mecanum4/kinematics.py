@@ -1,16 +1,17 @@
-"""``mecanum4`` on rate inputs: the step model, the pitch-averaged and the ideal kinematics.
+"""``mecanum4`` on rate inputs: the step model, the kinematic model and the ideal one.
 
 Inputs ``(u, v, r)``: the commanded body twist, driven as wheel rates from Lynch & Park's
-ideal formula ``θ̇ = H(γ) ν_cmd`` (FL, FR, RL, RR). The **pitch-averaged** kinematics
-``(Ẋ, Ẏ, ψ̇) = Rot(ψ) S ν_cmd``, ``S = H(γ̄)⁺ H(γ)``
-(:mod:`wmr_mujoco.analytic.pitch_averaged`: the rolling constraint averaged over one
-roller pitch, ``tan γ̄ = ⟨sec φ⟩ tan γ``) judge the ramped runs, with the **ideal** model
-``Rot(ψ) ν_cmd`` beside them. A **step** command is judged against the stick–slip
-dynamic model (:mod:`wmr_mujoco.analytic.roller_stick_slip`, parameters from the compiled
-model by :mod:`.traction`): its body twist ``ν(t)`` from rest is computed once, and the
-pose follows ``Rot(ψ) ν(t)``; the pitch-averaged and ideal kinematics are reported beside
-it (:func:`judge_kinematic`). After the rise the step model rolls as the pitch-averaged
-kinematics (same constraint rows).
+ideal formula ``θ̇ = H(γ) ν_cmd`` (FL, FR, RL, RR). The **kinematic** model
+``(Ẋ, Ẏ, ψ̇) = Rot(ψ) ν̄(ν_cmd)`` rolls on the model's own roller colliders
+(:mod:`wmr_mujoco.robots.mecanum4.collider`: their contact's rolling rows, least squares
+over the four wheels, averaged over the roller pitch; it contains the pitch average of
+:mod:`wmr_mujoco.analytic.pitch_averaged`, ``tan γ̄ = ⟨sec φ⟩ tan γ``) and judges the ramped
+runs, with the **ideal** model ``Rot(ψ) ν_cmd`` beside it. A **step** command is judged
+against the stick–slip dynamic model (:mod:`wmr_mujoco.analytic.roller_stick_slip`,
+parameters from the compiled model by :mod:`.traction`): its body twist ``ν(t)`` from rest
+is computed once, and the pose follows ``Rot(ψ) ν(t)``; the kinematic and ideal models
+are reported beside it (:func:`judge_kinematic`). After the rise the step model rolls as
+the kinematic model (its rows are the colliders' effective layout).
 """
 
 from __future__ import annotations
@@ -24,20 +25,19 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.analytic.roller_stick_slip import StepResponse, step_response
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.robots.mecanum4 import traction
+from wmr_mujoco.robots.mecanum4 import collider, traction
 from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking, rms
 from wmr_mujoco.validation.scenarios import Scenario
 
-#: Names of the pitch-averaged model's pose in a step run's analytic state.
+#: Names of the kinematic model's pose in a step run's analytic state.
 KINEMATIC_STATE = ("x (kinematic)", "y (kinematic)", "heading (kinematic)")
 #: Names of the ideal model's pose components in the analytic state.
 IDEAL_STATE = ("x (ideal)", "y (ideal)", "heading (ideal)")
@@ -47,9 +47,9 @@ CLOCK = "t"
 
 @dataclass(frozen=True)
 class MecanumKinematics:
-    """Ramped runs: ``x = (X, Y, ψ)`` pitch-averaged, then ideal. Steps: step model first.
+    """Ramped runs: ``x = (X, Y, ψ)`` kinematic, then ideal. Steps: step model first.
 
-    A step run's state is ``(X, Y, ψ)`` of the step model, of the pitch-averaged model
+    A step run's state is ``(X, Y, ψ)`` of the step model, of the kinematic model
     and of the ideal model, then the clock ``t``.
 
     Attributes:
@@ -90,19 +90,13 @@ class MecanumKinematics:
         return ok.wheel_jacobian(self.layout)
 
     def realised(self, u: np.ndarray) -> tuple[float, float, float]:
-        """``S ν``: the pitch-averaged twist under the ideal wheel rates ``H(γ) u``.
+        """``ν̄``: the colliders' mean twist under the ideal wheel rates ``H(γ) u``.
 
-        ``S = H(γ̄)⁺ H(γ)`` with γ̄ on the wheels that turn (rate above 1e-9 rad/s).
+        :func:`~wmr_mujoco.robots.mecanum4.collider.realised_twist`: the rolling rows of
+        the model's own roller colliders, least squares over the four wheels, averaged
+        over the roller pitch.
         """
-        return _realised(self.layout_key, float(u[0]), float(u[1]), float(u[2]))
-
-    @functools.cached_property
-    def layout_key(self) -> tuple[tuple[float, ...], int]:
-        """Hashable layout (positions, drive and roller angles, radii) and roller count."""
-        lay = self.layout
-        return (tuple(np.concatenate([lay.positions.ravel(), lay.drive_angles,
-                                      lay.roller_angles, lay.radii]).tolist()),
-                self.params.rollers_per_wheel)
+        return _realised(self.params, float(u[0]), float(u[1]), float(u[2]))
 
     def twist(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
         """The commanded body twist (inputs are body rates)."""
@@ -135,31 +129,11 @@ class MecanumKinematics:
 
 
 @functools.lru_cache(maxsize=4096)
-def _realised(key: tuple[tuple[float, ...], int], u: float, v: float, r: float
+def _realised(params: MecanumParams, u: float, v: float, r: float
               ) -> tuple[float, float, float]:
-    """Cached ``S ν`` for one commanded twist (a run has few distinct inputs)."""
-    nu = np.array([u, v, r])
-    turning = tuple(bool(abs(w) > 1e-9) for w in _jacobian(key) @ nu)
-    su, sv, sr = _twist_map(key, turning) @ nu
+    """Cached ``ν̄`` for one commanded twist (a run has few distinct inputs)."""
+    su, sv, sr = collider.realised_twist(params, np.array([u, v, r]))
     return float(su), float(sv), float(sr)
-
-
-def _layout_of(key: tuple[tuple[float, ...], int]) -> ok.WheelLayout:
-    flat, _ = key
-    n = len(flat) // 5
-    v = np.asarray(flat)
-    return ok.WheelLayout(v[:2 * n].reshape(n, 2), v[2 * n:3 * n], v[3 * n:4 * n], v[4 * n:])
-
-
-@functools.lru_cache(maxsize=16)
-def _jacobian(key: tuple[tuple[float, ...], int]) -> np.ndarray:
-    return ok.wheel_jacobian(_layout_of(key))
-
-
-@functools.lru_cache(maxsize=64)
-def _twist_map(key: tuple[tuple[float, ...], int], turning: tuple[bool, ...]) -> np.ndarray:
-    """Cached :func:`~wmr_mujoco.analytic.pitch_averaged.realised_twist_map`."""
-    return pa.realised_twist_map(_layout_of(key), key[1], np.asarray(turning))
 
 
 def is_step(scenario: Scenario) -> bool:
@@ -215,16 +189,16 @@ def judge_kinematic(scenario: Scenario, trace: Trace, adapter: MecanumKinematics
 
     Worst, RMS and final errors over the whole run
     (:func:`~wmr_mujoco.validation.metrics.pose_tracking`) and the RMS heading error,
-    judged at the requirement: a ramped run against the pitch-averaged kinematics, a step
-    run against the step model. Reported, not judged: for a step run the pitch-averaged
-    kinematics' worst and RMS errors, and for every run the ideal Lynch & Park model's.
+    judged at the requirement: a ramped run against the kinematic model (the colliders'),
+    a step run against the step model. Reported, not judged: for a step run the kinematic
+    model's worst and RMS errors, and for every run the ideal Lynch & Park model's.
     """
     metrics = pose_tracking(scenario, trace, adapter, targets)
     metrics.append(Metric("RMS heading error", heading_rms(trace), "deg"))
     ideal = slice(3, 6) if adapter.step is None else slice(6, 9)
     if adapter.step is not None:
         metrics += _reported(scenario, trace, adapter, slice(3, 6), "kinematic model",
-                             "reported: pitch-averaged kinematics (instant step)")
+                             "reported: the colliders' kinematics (instant step)")
     metrics += _reported(scenario, trace, adapter, ideal, "ideal model",
                          "reported: Lynch & Park with horizontal contact rollers (no "
                          "pitch averaging)")

@@ -6,10 +6,12 @@ mass and yaw inertia (:func:`~wmr_mujoco.validation.omni_wheels.dynamics_from_mo
 wheel spin inertia with the rotor armature, the rate servo's gain and torque limit (the
 actuator's user data and ``forcerange``), the contact friction (MuJoCo takes the larger of
 the two geoms' coefficients) and the centre-of-mass height over the floor. The contact
-rows use the roller-pitch-averaged angles γ̄ on the wheels the command turns
-(:mod:`wmr_mujoco.analytic.pitch_averaged`), so that after the rise the model rolls as
-the kinematic model does. :func:`step_acceleration_time` keeps the traction-only rise
-time (:mod:`wmr_mujoco.analytic.roller_traction`) for comparison.
+rows are those of the colliders' effective layout
+(:func:`wmr_mujoco.robots.mecanum4.collider.effective_layout`: the roller-pitch-averaged
+angles γ̄ on the wheels the command turns, with the colliders' own rolling radius, angle
+and lever), so that after the rise the model rolls as the kinematic model does.
+:func:`step_acceleration_time` keeps the traction-only rise time
+(:mod:`wmr_mujoco.analytic.roller_traction`) for comparison.
 """
 
 from __future__ import annotations
@@ -18,19 +20,17 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.analytic.roller_stick_slip import RollerPlatform
 from wmr_mujoco.analytic.roller_traction import acceleration_time
 from wmr_mujoco.models.builders.common import NUSER_ACTUATOR
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.robots.mecanum4 import collider
 from wmr_mujoco.robots.mecanum4.geometry import layout
 from wmr_mujoco.validation.omni_wheels import dynamics_from_model
 
 #: Gravity, m/s².
 GRAVITY = 9.81
-#: A wheel whose commanded rate is below this (rad/s) is at rest (keeps γ).
-AT_REST = 1e-9
 
 
 def step_acceleration_time(model: mujoco.MjModel, params: MecanumParams,
@@ -87,12 +87,14 @@ def step_platform(model: mujoco.MjModel, params: MecanumParams, twist: np.ndarra
     """The stick–slip model of ``mecanum4`` for a step to ``twist``, and its wheel command.
 
     Returns:
-        ``(platform, ω_cmd)``: the model with γ̄ on the wheels ``ω_cmd = H(γ) ν_cmd`` turns,
-        and ``ω_cmd``.
+        ``(platform, ω_cmd)``: the model with the rows of
+        :func:`~wmr_mujoco.robots.mecanum4.collider.effective_layout` (γ̄ on the wheels
+        ``ω_cmd = H(γ) ν_cmd`` turns, and the colliders' own rolling radius, roller angle
+        and contact lever), and ``ω_cmd``.
     """
     lay = layout(params)
     cmd = ok.wheel_jacobian(lay) @ np.asarray(twist, float)
-    averaged = pa.averaged_layout(lay, params.rollers_per_wheel, np.abs(cmd) > AT_REST)
+    averaged = collider.effective_layout(params, twist)
     dyn = dynamics_from_model(model, lay, "chassis", WHEEL_NAMES[0])
     kv, tau_max = drive_law(model, WHEEL_NAMES[0])
     platform = RollerPlatform(
