@@ -36,10 +36,14 @@ def test_table_has_a_row_per_setting_and_model():
     for spec in st.TORQUE_SPECS:
         key = spec.name.removeprefix("torque ")
         row |= {f"{key} twist": 0.5, f"{key} position": 0.2}
-    text = st.table([row | {"arc": True}, row | {"arc": False}])
+    shipped = {"timeconst": st.SHIPPED[0], "step": st.SHIPPED[1]}
+    text = st.table([row | shipped | {"arc": True}, row | shipped | {"arc": False},
+                     row | {"arc": True}])
     lines = text.splitlines()
-    assert len(lines) == 4
+    assert len(lines) == 5
     assert all(line.count("|") == lines[0].count("|") for line in lines)
     assert "30 of 39" in lines[2] and "with the arc's moment (as judged)" in lines[2]
     assert "without the arc's moment" in lines[3]
+    # Only the shipped setting's model is the judged one.
+    assert "8 ms / 4 ms" in lines[4] and "as judged" not in lines[4]
     assert "n/a" in lines[2]

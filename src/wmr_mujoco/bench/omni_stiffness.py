@@ -161,6 +161,13 @@ def study(settings: tuple[tuple[float, float], ...] = SETTINGS) -> list[dict[str
     return rows
 
 
+def _variant(arc: bool, shipped: bool) -> str:
+    """The hybrid model's label; "as judged" only for the model ``wmr validate`` judges."""
+    if not arc:
+        return "without the arc's moment"
+    return "with the arc's moment (as judged)" if shipped else "with the arc's moment"
+
+
 def table(rows: list[dict[str, object]]) -> str:
     """Markdown table of :func:`study` rows."""
     runs = [s.name.removeprefix("torque ") for s in TORQUE_SPECS]
@@ -178,8 +185,8 @@ def table(rows: list[dict[str, object]]) -> str:
 
     for r in rows:
         cells = [f"{1000 * float(r['timeconst']):g} ms / {1000 * float(r['step']):g} ms",
-                 "with the arc's moment (as judged)" if r["arc"]
-                 else "without the arc's moment",
+                 _variant(bool(r["arc"]),
+                          (float(r["timeconst"]), float(r["step"])) == SHIPPED),
                  f"{int(float(r['met']))} of {int(float(r['rows']))}",
                  f"{g(r['step position'])} / {g(r['step heading'])}"]
         cells += [f"{g(r[f'{k} twist'])} / {g(r[f'{k} position'])}" for k in runs]
