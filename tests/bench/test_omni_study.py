@@ -2,10 +2,20 @@
 
 import pytest
 
-from wmr_mujoco.bench.omni_study import measure_peer
+from wmr_mujoco.bench.omni_study import measure_peer, study_configs
+from wmr_mujoco.models.params import OmniParams
 
 
 def test_missing_peer_names_the_path_and_the_variable(tmp_path):
     with pytest.raises(FileNotFoundError, match=r"scene\.xml \(install mujoco-menagerie, "
                                                   r"or set WMR_PEER_SCENE"):
         measure_peer(None, tmp_path / "scene.xml")
+
+
+def test_design_study_runs_at_the_robots_default_simulation():
+    """Every roller design is built at omni3's own contact time constant and step (the
+    study varies the rollers only), and the default design's row is the shipped model."""
+    configs = dict(study_configs())
+    assert all(p.sim == OmniParams().sim for p in configs.values())
+    default = OmniParams()
+    assert configs[f"{default.roller_shape}, 2×{default.rollers_per_row}"] == default

@@ -13,8 +13,9 @@ def test_position_lead_is_the_simulators_quadrature():
     exactly ``(Δt/2)(v_n − v_0)`` (the module docstring's identity for
     ``q_{n+1} = q_n + Δt v_{n+1}``). Tolerance 1e-7 m: the planar velocity is rebuilt from
     the body twist with the heading alone, so the platform's tilt (under 1e-3 rad on the
-    soft contacts) times its vertical speed (under 1e-3 m/s) over 0.3 s bounds what it
-    misses by 3e-7 m; the lead itself is a hundred times that tolerance."""
+    roller contacts) times its vertical speed (under 1e-3 m/s) over 0.3 s bounds what it
+    misses by 3e-7 m; the lead itself (Δt/2 times a speed change of a few cm/s) is over a
+    hundred times that tolerance."""
     spec = RunSpec("push", ActuationMode.TORQUE, (0.0, -0.03, 0.03), 0.3)
     run = simulate_runs([spec])["push"]
     v = ts.world_velocity(run.pose, run.twist)

@@ -32,7 +32,7 @@ def omni():
 def test_layout_read_from_model_is_the_lecture_geometry(omni):
     _, info = omni
     p = OmniParams()
-    # Rolling radius r less half the contact penetration (tens of µm at rest).
+    # Rolling radius r less half the contact penetration (a few µm at rest).
     np.testing.assert_allclose(info.layout.radii, p.wheel_radius, rtol=2e-3)
     H = ok.wheel_jacobian(info.layout) * p.wheel_radius
     np.testing.assert_allclose(H, ok.lecture_matrix(p.wheel_distance), atol=2e-3)
@@ -156,5 +156,5 @@ def test_drive_and_penetration(omni3_model):
     assert drive_from_model(omni3_model, HYBRID_WHEELS[0], "torque").mode == "torque"
     assert servo.gain == pytest.approx(p.drive.wheel_kv)
     assert servo.torque_limit == pytest.approx(p.drive.wheel_torque_limit)
-    # Soft contact under a third of the weight: tens of µm, far below the roller size.
+    # Soft contact under a third of the weight: µm, far below the roller size.
     assert 1e-6 < static_penetration(omni3_model) < 1e-3

@@ -706,9 +706,10 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             velocity continuous).
         slip: allow wheels to slip at the traction limit.
         arc: include the moment of the normal loads about the axles as the wheels roll
-            over the rollers' arcs (:meth:`OmniHybrid.accelerations`). Off by default:
-            with it the torque-combined and coasting figures move in opposite directions
-            (see ``docs/omni-dynamics.md``, "Open").
+            over the rollers' arcs (:meth:`OmniHybrid.accelerations`), with the static
+            loads ``N_i = M g / 3``. Off by default (the model of ``docs/omni-dynamics.md``
+            §§ 1-5 without it); omni3's judged runs turn it on
+            (:func:`wmr_mujoco.robots.omni3.runs.simulate_runs`; § 2 of that page).
 
     Raises:
         ValueError: non-finite or mis-shaped inputs, non-positive dt.

@@ -2,8 +2,9 @@
 
 ``python -m wmr_mujoco.bench.omni_energy_study`` (``make study``, a few minutes):
 
-1. the coasting energy budget (:func:`coast_energy_budget`) of three coasts: default
-   contacts, stiff contacts (the rigid limit), pure translation;
+1. the coasting energy budget (:func:`coast_energy_budget`) of four coasts: the default
+   contacts, the softer contacts shipped before them (:data:`SOFT`), stiffer contacts
+   (:data:`STIFF`, nearer the rigid limit), and a pure translation at the default;
 2. omni3's dynamic scenarios (step commands, torque inputs, coasting, slip onset)
    through the one runner (:func:`~wmr_mujoco.validation.runner.run_all`), every row;
 3. the torque runs and the coast at finer simulation steps
@@ -34,11 +35,16 @@ import numpy as np
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
+from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import WHEELS, hybrid, settled
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric
 
 DOC = Path(__file__).resolve().parents[3] / "docs" / "omni-dynamics.md"
+#: Roller contacts' ``solref`` time constants of the budget's other coasts, s: the soft
+#: setting shipped before the default, and a stiffer one (each with the step half of it).
+SOFT = 0.008
+STIFF = 0.001
 
 
 def _stiffen(model: mujoco.MjModel, timeconst: float) -> None:
@@ -134,10 +140,13 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - a few min
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--no-write", action="store_true", help="print only")
     args = parser.parse_args(argv)
-    budgets = {"(0.3, 0, 1), default contacts": coast_energy_budget(),
-               "(0.3, 0, 1), solref 1 ms": coast_energy_budget(contact_timeconst=0.001,
-                                                               duration=2.0),
-               "(0.3, 0, 0), default contacts": coast_energy_budget((0.3, 0.0, 0.0))}
+    default = f"default contacts (solref {1000 * OmniParams().sim.contact_timeconst:g} ms)"
+    budgets = {f"(0.3, 0, 1), {default}": coast_energy_budget(),
+               f"(0.3, 0, 1), solref {1000 * SOFT:g} ms": coast_energy_budget(
+                   contact_timeconst=SOFT),
+               f"(0.3, 0, 1), solref {1000 * STIFF:g} ms": coast_energy_budget(
+                   contact_timeconst=STIFF, duration=2.0),
+               f"(0.3, 0, 0), {default}": coast_energy_budget((0.3, 0.0, 0.0))}
     scenarios = [s for s in get_spec("omni3").scenarios if s.kind is ScenarioKind.MEASUREMENT]
     results_md = markdown_table(run_all(scenarios))
     budget_md = budget_table(budgets)

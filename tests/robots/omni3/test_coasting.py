@@ -20,15 +20,18 @@ def test_slope_and_velocity_direction_on_known_motions():
     np.testing.assert_allclose(side, psi + np.pi / 2, atol=1e-12)
 
 
-def test_coast_energy_and_turn_rate_judged_yaw_decay_open():
-    """The hybrid model (impacts, compliant hand-over loss, the rows' friction while two
-    rollers touch) meets issue 16's 5 % on the energy lost per second and the turn rate
-    of the velocity; the Lagrange model would give zero for both. The yaw-rate decay is
-    an open target."""
+def test_coast_figures_judged_and_met():
+    """The hybrid model (impacts, the weight's moment over the roller arc, the compliant
+    hand-over loss and the rows' friction while two rollers touch) meets issue 16's 5 % on
+    each coasting figure, judged: the yaw-rate decay, the velocity's turn rate and the
+    energy lost per second. The Lagrange model would give zero for all three, so the
+    physics must lose energy and its yaw rate must decay (relative figures of a coast that
+    lost nothing would be vacuous); 0.005 W over the 3 s coast is over a tenth of the
+    translational energy ½ M u² alone (M = 2.54 kg, u = 0.3 m/s: 0.11 J)."""
     res = co.evaluate_coast(omni3.SPEC.scenario(co.COAST_SPEC.name), None)
     m = {x.name: x for x in res.metrics}
     assert m["energy lost per second, physics"].value > 0.005
-    for name in ("energy lost per second", "velocity-direction turn rate"):
+    assert m["yaw-rate decay, physics"].value > 0
+    for name in ("yaw-rate decay", "energy lost per second", "velocity-direction turn rate"):
         row = m[f"{name}: hybrid vs physics"]
         assert row.target is co.COAST and row.value <= 5.0
-    assert m["yaw-rate decay: hybrid vs physics"].target.kind == "open"

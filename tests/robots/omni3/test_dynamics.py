@@ -29,15 +29,22 @@ def test_step_command_hybrid_beats_kinematics():
 
 
 def test_torque_rows_judged_or_open_as_declared():
-    """Along x: u is an open target (shown, not judged), v and r are judged and pass (no
-    yaw: the push is symmetric); the old single-instant figure is reported only."""
+    """Along x every component and the pose are judged (requirements) and pass (v and r
+    stay near zero: the push is symmetric); under pure rotation the yaw rate is the one
+    open target (shown, not judged) while u, v are judged; the Lagrange model's rows and
+    the old single-instant figure are reported only."""
     m, _ = _metrics("torque along x", dy.evaluate_torque)
-    assert m["hybrid: worst u error"].target.kind == "open"
-    for c in "vr":
+    for c in "uvr":
         row = m[f"hybrid: worst {c} error"]
-        assert row.target.kind == "requirement" and row.value <= row.target.value
+        assert row.target is dy.TORQUE_COMPONENT and row.value <= row.target.value
+    pose = m["hybrid: worst position error"]
+    assert pose.target is dy.TORQUE_PATH and pose.value <= pose.target.value
     assert m["Lagrange: |Δν| / |ν| at the last instant"].target is None
     assert m["Lagrange: worst u error"].target is None
+    assert dy.TORQUE_OPEN == {("rotate", "r")}
+    rot, _ = _metrics("torque rotate", dy.evaluate_torque)
+    assert rot["hybrid: worst r error"].target.kind == "open"
+    assert rot["hybrid: worst u error"].target is dy.TORQUE_COMPONENT
 
 
 def test_kinematic_pose_of_a_steady_turn_is_a_circle():
