@@ -32,11 +32,9 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.docs_sync.markers import replace_between
-from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
 from wmr_mujoco.models.params import OmniParams
-from wmr_mujoco.robots.omni3.runs import WHEELS, hybrid, settled
+from wmr_mujoco.robots.omni3.runs import WHEELS, coast_start
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric
 
@@ -65,25 +63,16 @@ def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
     Raises:
         ValueError: non-finite twist, bad durations or contact time constant.
     """
-    nu_cmd = np.asarray(twist, float)
-    if nu_cmd.shape != (3,) or not np.all(np.isfinite(nu_cmd)):
-        raise ValueError(f"twist = {twist!r}; needs 3 finite numbers")
-    for name, value in (("drive_time", drive_time), ("duration", duration)):
-        if not (math.isfinite(value) and 0 < value <= 30):
-            raise ValueError(f"{name} = {value!r} s; valid range is (0, 30] s")
-    model, data = settled(ActuationMode.RATE)
-    if contact_timeconst is not None:
-        _stiffen(model, contact_timeconst)
-    model.opt.enableflags |= mujoco.mjtEnableBit.mjENBL_ENERGY
-    hy = hybrid(None)
+    if not (math.isfinite(duration) and 0 < duration <= 30):
+        raise ValueError(f"duration = {duration!r} s; valid range is (0, 30] s")
+
+    def setup(model: mujoco.MjModel) -> None:
+        if contact_timeconst is not None:
+            _stiffen(model, contact_timeconst)
+        model.opt.enableflags |= mujoco.mjtEnableBit.mjENBL_ENERGY
+
+    model, data = coast_start(twist, drive_time, setup)
     dt = model.opt.timestep
-    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
-    for k in range(round(drive_time / dt)):
-        data.ctrl[:] = min(1.0, k * dt / 0.5) * (H @ nu_cmd)
-        mujoco.mj_step(model, data)
-    set_actuation_mode(model, ActuationMode.TORQUE)
-    data.ctrl[:] = 0.0
-    mujoco.mj_forward(model, data)
     energy0 = float(data.energy[0] + data.energy[1])
     wheel_of = {model.body(w).id: i for i, w in enumerate(WHEELS)}
     floor = model.geom("floor").id

@@ -29,9 +29,7 @@ import math
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
-from wmr_mujoco.robots.omni3.runs import WHEELS, hybrid, settled
+from wmr_mujoco.robots.omni3.runs import WHEELS, coast_start, hybrid
 from wmr_mujoco.sim.stepping import check_healthy
 
 #: |f_t| / (μ N) from which a contact counts as sliding at the Coulomb limit.
@@ -70,21 +68,11 @@ def overlap_windows(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
     Raises:
         ValueError: non-finite twist or bad durations.
     """
-    nu = np.asarray(twist, float)
-    if nu.shape != (3,) or not np.all(np.isfinite(nu)):
-        raise ValueError(f"twist = {twist!r}; needs 3 finite numbers")
-    for name, value in (("drive_time", drive_time), ("duration", duration)):
-        if not (math.isfinite(value) and 0 < value <= 30):
-            raise ValueError(f"{name} = {value!r} s; valid range is (0, 30] s")
-    model, data = settled(ActuationMode.RATE)
+    if not (math.isfinite(duration) and 0 < duration <= 30):
+        raise ValueError(f"duration = {duration!r} s; valid range is (0, 30] s")
+    model, data = coast_start(twist, drive_time)
     hy = hybrid(None)
     dt = model.opt.timestep
-    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
-    for k in range(round(drive_time / dt)):
-        data.ctrl[:] = min(1.0, k * dt / 0.5) * (H @ nu)
-        mujoco.mj_step(model, data)
-    set_actuation_mode(model, ActuationMode.TORQUE)
-    data.ctrl[:] = 0.0
     floor = model.geom("floor").id
     wheel_of = {model.body(w).id: i for i, w in enumerate(WHEELS)}
     dofs = [model.jnt_dofadr[model.joint(w).id] for w in WHEELS]

@@ -2,9 +2,10 @@
 
 import mujoco
 import numpy as np
+import pytest
 
-from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.robots.omni3.runs import base_states, relative, settled
+from wmr_mujoco.models.actuation import ActuationMode, actuation_mode
+from wmr_mujoco.robots.omni3.runs import base_states, coast_start, relative, settled
 from wmr_mujoco.sim.engine import get_state
 from wmr_mujoco.validation.adapters import base_pose, body_twist
 
@@ -29,3 +30,26 @@ def test_relative_pose_starts_at_the_origin():
     pose = np.array([start, [1.0, 3.0, np.pi / 2 + 0.1]])
     np.testing.assert_allclose(relative(pose, start), [[0, 0, 0], [1.0, 0.0, 0.1]],
                                atol=1e-12)
+
+
+def test_coast_starts_at_the_driven_twist_with_the_motors_off():
+    """After the ramped drive the platform moves at the commanded twist, and the motors
+    are in torque mode (no velocity feedback) at zero torque; ``setup`` runs on the
+    settled model. Tolerance: the instantaneous twist ripples within each roller pitch
+    (the yaw-rate ripple of the roller study, about 4 %), so 5 % of each component's
+    scale (0.3 m/s, 1 rad/s)."""
+    seen = []
+    model, data = coast_start((0.3, 0.0, 1.0), 1.0, lambda m: seen.append(m.opt.timestep))
+    assert seen == [model.opt.timestep]
+    error = np.abs(body_twist(model, data) - (0.3, 0.0, 1.0))
+    assert np.all(error <= 0.05 * np.array([0.3, 0.3, 1.0])), error
+    assert np.all(data.ctrl == 0.0)
+    assert actuation_mode(model) is ActuationMode.TORQUE
+
+
+@pytest.mark.parametrize("twist, drive_time, match", [
+    ((0.3, 0.0), 1.0, "twist = "), ((0.3, np.nan, 0.0), 1.0, "twist = "),
+    ((0.3, 0.0, 0.0), 0.0, r"drive_time = 0.0 s; valid range is \(0, 30\] s")])
+def test_coast_start_refuses_bad_input(twist, drive_time, match):
+    with pytest.raises(ValueError, match=match):
+        coast_start(twist, drive_time)

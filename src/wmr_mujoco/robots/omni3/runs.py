@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import mujoco
@@ -123,6 +123,39 @@ def settled(mode: ActuationMode, params: OmniParams | None = None,
     for _ in range(round(SETTLE / model.opt.timestep)):
         mujoco.mj_step(model, data)
     check_healthy(model, data)
+    mujoco.mj_forward(model, data)
+    return model, data
+
+
+def coast_start(twist: Sequence[float], drive_time: float,
+                setup: Callable[[mujoco.MjModel], None] | None = None
+                ) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    """omni3 settled, driven at ``twist`` for ``drive_time`` s, then its motors off.
+
+    The drive is the rate servo on ``H ν · min(1, t / 0.5 s)``; at motor-off the robot is
+    switched to torque mode with zero torque, so what follows is a coast. ``setup``
+    changes the settled model before the drive (e.g. stiffer contacts).
+
+    Raises:
+        ValueError: a twist that is not 3 finite numbers, or a drive time outside
+            (0, 30] s.
+    """
+    nu = np.asarray(twist, float)
+    if nu.shape != (3,) or not np.all(np.isfinite(nu)):
+        raise ValueError(f"twist = {twist!r}; needs 3 finite numbers")
+    if not (math.isfinite(drive_time) and 0 < drive_time <= 30):
+        raise ValueError(f"drive_time = {drive_time!r} s; valid range is (0, 30] s")
+    model, data = settled(ActuationMode.RATE)
+    if setup is not None:
+        setup(model)
+    hy = hybrid(None)
+    dt = model.opt.timestep
+    H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
+    for k in range(round(drive_time / dt)):
+        data.ctrl[:] = min(1.0, k * dt / 0.5) * (H @ nu)
+        mujoco.mj_step(model, data)
+    set_actuation_mode(model, ActuationMode.TORQUE)
+    data.ctrl[:] = 0.0
     mujoco.mj_forward(model, data)
     return model, data
 
