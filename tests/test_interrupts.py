@@ -1,10 +1,12 @@
 """Ctrl-C and SIGTERM end a command with one line, exit 130/143, and leave no file."""
 
+import contextlib
 import os
 import signal
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -19,25 +21,46 @@ def _default_sigint() -> None:
     signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
+def _interrupt(argv: list[str], cwd: Path, ready: Callable[[], bool], sig: int
+               ) -> tuple[int, str]:
+    """Start ``wmr argv``, wait (≤ 60 s) until ``ready()``, send ``sig``; exit code, stderr.
+
+    The child runs in its own session, which is killed whatever happens, so that a failed
+    test leaves no process behind (a render of 600 s would otherwise run on).
+    """
+    env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
+    proc = subprocess.Popen([sys.executable, "-m", "wmr_mujoco.cli", *argv], cwd=cwd,
+                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True, preexec_fn=_default_sigint, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not ready() and time.monotonic() < deadline:
+            assert proc.poll() is None, proc.communicate()
+            time.sleep(0.05)
+        proc.send_signal(sig)
+        _, err = proc.communicate(timeout=30)
+        return proc.returncode, err
+    finally:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+
+
 @pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
-    env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
-    # A clip far longer than the test waits: the signal always arrives mid-render.
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "wmr_mujoco.cli", "render", "disc", "--out",
-         str(tmp_path / "clip.mp4"), "--duration", "600", "--hold", "--fps", "10",
-         "--width", "64", "--height", "48", "--quiet"],
-        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-        preexec_fn=_default_sigint)
-    deadline = time.monotonic() + 60
-    # The temporary video appears once the writer is open, before the first frame.
-    while not list(tmp_path.glob(".clip.*.mp4")) and time.monotonic() < deadline:
-        assert proc.poll() is None, proc.communicate()
-        time.sleep(0.05)
-    time.sleep(0.2)
-    proc.send_signal(sig)
-    _, err = proc.communicate(timeout=30)
-    assert proc.returncode == code, err
+    # A clip far longer than the test waits: the signal always arrives mid-render. The
+    # temporary video appears once the writer is open, before the first frame.
+    def ready() -> bool:
+        if list(tmp_path.glob(".clip.*.mp4")):
+            time.sleep(0.2)
+            return True
+        return False
+
+    returncode, err = _interrupt(
+        ["render", "disc", "--out", str(tmp_path / "clip.mp4"), "--duration", "600",
+         "--hold", "--fps", "10", "--width", "64", "--height", "48", "--quiet"],
+        tmp_path, ready, sig)
+    assert returncode == code, err
     assert err.strip().splitlines() == [
         f"wmr render: {'interrupted' if code == 130 else 'terminated'}; nothing written"]
     assert list(tmp_path.iterdir()) == []
@@ -45,22 +68,13 @@ def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
 
 @pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_interrupted_validate_leaves_no_file(tmp_path, sig, code):
-    env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
     out = tmp_path / "report"
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "wmr_mujoco.cli", "validate", "whipple", "disc_free", "--out",
-         str(out), "--quiet"],
-        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-        preexec_fn=_default_sigint)
-    deadline = time.monotonic() + 60
     # The first staged plot: every worker has started (the signal then never meets a
     # worker still being set up), and most scenarios are still to run.
-    while not list(out.glob(".plots-*/*")) and time.monotonic() < deadline:
-        assert proc.poll() is None, proc.communicate()
-        time.sleep(0.05)
-    proc.send_signal(sig)
-    _, err = proc.communicate(timeout=30)
-    assert proc.returncode == code, err
+    returncode, err = _interrupt(
+        ["validate", "whipple", "disc_free", "--out", str(out), "--quiet"], tmp_path,
+        lambda: bool(list(out.glob(".plots-*/*"))), sig)
+    assert returncode == code, err
     assert err.strip().splitlines()[-1] == (
         f"wmr validate: {'interrupted' if code == 130 else 'terminated'}; nothing written")
     assert list(tmp_path.iterdir()) == []

@@ -17,6 +17,7 @@ of radius L, each driving tangentially (β_i = α_i + 90°), give ``H = J / r`` 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -150,11 +151,13 @@ def rotation(psi: float) -> np.ndarray:
 
 def body_to_world(psi: float, nu: np.ndarray) -> np.ndarray:
     """``(Ẋ, Ẏ, ψ̇) = (Rot(ψ)(u, v), r)``."""
-    nu = as_array("nu", nu, (3,))
-    return np.concatenate([rotation(psi) @ nu[:2], nu[2:]])
+    u, v, r = as_array("nu", nu, (3,))
+    c, s = math.cos(psi), math.sin(psi)  # scalar arithmetic: the integrators' hot path
+    return np.array([c * u - s * v, s * u + c * v, r])
 
 
 def world_to_body(psi: float, world_rates: np.ndarray) -> np.ndarray:
     """``ν = (Rot(ψ)ᵀ(Ẋ, Ẏ), ψ̇)``."""
-    w = as_array("world_rates", world_rates, (3,))
-    return np.concatenate([rotation(psi).T @ w[:2], w[2:]])
+    x, y, r = as_array("world_rates", world_rates, (3,))
+    c, s = math.cos(psi), math.sin(psi)
+    return np.array([c * x + s * y, -s * x + c * y, r])

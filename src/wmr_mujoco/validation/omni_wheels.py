@@ -290,24 +290,24 @@ def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniMod
     commanded twist, ``ρ`` the contact's distance from the roller axis and ``ω_r`` the
     roller's measured spin rate. Contacts of wheels sliding slower than 1 mm/s are skipped.
     """
-    errors = []
-    wheel_bodies = {int(model.jnt_bodyid[j]): i for i, j in enumerate(info.wheel_joints)}
-    for c in data.contact[:data.ncon]:
-        geom = c.geom2 if model.geom_bodyid[c.geom1] == 0 else c.geom1
-        body = int(model.geom_bodyid[geom])
-        parent = int(model.body_parentid[body])
-        if parent not in wheel_bodies or model.body_jntnum[body] != 1:
-            continue
-        jnt = int(model.body_jntadr[body])
-        axis = data.xaxis[jnt]
-        rel = c.pos - data.xanchor[jnt]
-        rho = np.linalg.norm(rel - axis * (rel @ axis))
-        slide = abs(slide_speeds[wheel_bodies[parent]])
-        if slide < 1e-3 or rho < 1e-6:
-            continue
-        omega = abs(data.qvel[model.jnt_dofadr[jnt]])
-        errors.append(abs(omega * rho - slide) / slide)
-    return errors
+    if data.ncon == 0:
+        return []
+    wheel_of = np.full(model.nbody, -1)
+    for i, j in enumerate(info.wheel_joints):
+        wheel_of[model.jnt_bodyid[j]] = i
+    g1, g2 = data.contact.geom1[:data.ncon], data.contact.geom2[:data.ncon]
+    geom = np.where(model.geom_bodyid[g1] == 0, g2, g1)
+    body = model.geom_bodyid[geom]
+    wheel = wheel_of[model.body_parentid[body]]
+    roller = (wheel >= 0) & (model.body_jntnum[body] == 1)
+    jnt = model.body_jntadr[body[roller]]
+    axis = data.xaxis[jnt]
+    rel = data.contact.pos[:data.ncon][roller] - data.xanchor[jnt]
+    rho = np.linalg.norm(rel - axis * np.sum(rel * axis, axis=1)[:, None], axis=1)
+    slide = np.abs(np.asarray(slide_speeds, float)[wheel[roller]])
+    omega = np.abs(data.qvel[model.jnt_dofadr[jnt]])
+    keep = (slide >= 1e-3) & (rho >= 1e-6)
+    return (np.abs(omega * rho - slide)[keep] / slide[keep]).tolist()
 
 
 def rolling_radius_profile(model: mujoco.MjModel, wheel_joint: str, roller_prefix: str,

@@ -84,8 +84,10 @@ class OmniKinematics:
         return self.jacobian @ self.twist(u, analytic_state)
 
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
-        """``(Ẋ, Ẏ, ψ̇) = R(ψ) ν``."""
-        return ok.body_to_world(x[2], self.twist(u, x))
+        """``(Ẋ, Ẏ, ψ̇) = R(ψ) ν`` (scalar arithmetic: called four times per step)."""
+        uu, vv, rr = self.twist(u, x)
+        c, s = math.cos(x[2]), math.sin(x[2])
+        return np.array([c * uu - s * vv, s * uu + c * vv, rr])
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """Pose of the ``base`` site."""
