@@ -1,7 +1,13 @@
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic.planar import cumulative_path, path_length, wrap_angle, yaw_from_rotation
+from wmr_mujoco.analytic.planar import (
+    cumulative_path,
+    path_length,
+    twist_step,
+    wrap_angle,
+    yaw_from_rotation,
+)
 
 
 def test_wrap_angle_into_half_open_interval():
@@ -32,3 +38,19 @@ def test_yaw_of_a_tilted_rotation(yaw):
 
     rot = rz(yaw) @ ry(0.3) @ rx(-0.4)
     assert yaw_from_rotation(rot.ravel()) == pytest.approx(yaw, abs=1e-12)
+
+
+@pytest.mark.parametrize("twist", [(0.3, -0.1, 1.2), (0.0, 0.2, -0.7), (0.5, 0.1, 3e-6),
+                                   (0.4, 0.0, 0.0)])
+def test_twist_step_is_the_exact_flow_of_the_kinematic_model(twist, rk4):
+    """Against RK4 with a thousandth of the step on ``(Ẋ, Ẏ, ψ̇) = (Rot(ψ)(u, v), r)``:
+    RK4's error at h = 0.5 ms over 0.5 s is O(h⁴) ≈ 1e-14; 1e-12 for round-off. The small
+    |θ| uses the series (error θ⁴/120 relative ≈ 1e-23 here)."""
+    pose = np.array([0.2, -0.4, 0.9])
+
+    def f(x):
+        c, s = np.cos(x[2]), np.sin(x[2])
+        return np.array([c * twist[0] - s * twist[1], s * twist[0] + c * twist[1], twist[2]])
+
+    np.testing.assert_allclose(twist_step(pose, np.array(twist), 0.5),
+                               rk4(f, pose, 5e-4, 1000), atol=1e-12)

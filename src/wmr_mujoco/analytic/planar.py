@@ -5,6 +5,8 @@ Headings are angles about the world ``z`` axis; a path is a polyline of ``(x, y)
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 
@@ -34,3 +36,31 @@ def yaw_from_rotation(xmat: np.ndarray) -> float:
     """
     m = np.asarray(xmat, float).reshape(3, 3)
     return float(np.arctan2(m[1, 0], m[0, 0]))
+
+
+def twist_step(pose: np.ndarray, twist: np.ndarray, dt: float) -> np.ndarray:
+    """Exact pose after ``dt`` of a constant body twist: the exponential map of SE(2).
+
+    With ``θ = r Δt`` the body moves on a circular arc; in its starting frame by::
+
+        Δ = [[sin θ/θ, −(1 − cos θ)/θ], [(1 − cos θ)/θ, sin θ/θ]] (u, v) Δt
+
+    so ``(x, y)⁺ = (x, y) + Rot(ψ) Δ`` and ``ψ⁺ = ψ + θ`` (the matrix → identity as
+    θ → 0; a series is used below |θ| = 1e-4, error O(θ⁴)). It is what RK4 approximates
+    for the kinematic model ``(Ẋ, Ẏ, ψ̇) = (Rot(ψ)(u, v), r)`` under a held input.
+
+    Args:
+        pose: ``(x, y, ψ)``.
+        twist: ``(u, v, r)`` in the body frame.
+        dt: s.
+    """
+    x, y, psi = pose[0], pose[1], pose[2]
+    u, v, r = twist[0], twist[1], twist[2]
+    th = r * dt
+    if abs(th) < 1e-4:
+        a, b = 1.0 - th * th / 6.0, th / 2.0 - th ** 3 / 24.0
+    else:
+        a, b = math.sin(th) / th, (1.0 - math.cos(th)) / th
+    dx, dy = (a * u - b * v) * dt, (b * u + a * v) * dt
+    c, s = math.cos(psi), math.sin(psi)
+    return np.array([x + c * dx - s * dy, y + s * dx + c * dy, psi + th])

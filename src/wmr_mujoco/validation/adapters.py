@@ -58,6 +58,9 @@ class Adapter(Protocol):
         """The analytic state's quantities, read from the simulation."""
         ...
 
+    # Optional: ``exact_step(x, u, dt) -> x⁺``, the exact solution of ``ẋ = rhs(x, u)`` over
+    # ``dt`` with ``u`` held; the runner then uses it instead of an RK4 step.
+
 
 #: ``factory(scenario, model, params) -> Adapter`` (params: the robot's, defaults if None).
 AdapterFactory = Callable[["Scenario", mujoco.MjModel, "RobotParams | None"], Adapter]

@@ -144,18 +144,20 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
 
     The analytic model does not depend on the simulation, so the whole open-loop schedule
     is known before MuJoCo runs: ``u_k = u(k Δt)``, ``ctrl_k = controls(u_k, x_k)`` and
-    ``x_{k+1} = RK4(x_k, u_k)``.
+    ``x_{k+1} = RK4(x_k, u_k)``, or ``adapter.exact_step(x_k, u_k, Δt)`` where the adapter has
+    an exact step for a held input.
 
     Returns:
         ``(inputs (N, m), controls (N, nu), analytic (N + 1, n))``.
     """
     x = np.asarray(x0, float)
+    step = getattr(adapter, "exact_step", None)  # where the adapter has one
     inputs, controls, states = [], [], [x]
     for k in range(nstep):
         u = s.input_at(k * dt)
         inputs.append(u)
         controls.append(adapter.controls(u, x))
-        x = rk4_step(adapter.rhs, x, u, dt)
+        x = step(x, u, dt) if step is not None else rk4_step(adapter.rhs, x, u, dt)
         states.append(x)
     return np.asarray(inputs), np.asarray(controls), np.asarray(states)
 

@@ -22,6 +22,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
+from wmr_mujoco.analytic.planar import twist_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
@@ -88,6 +89,16 @@ class OmniKinematics:
         uu, vv, rr = self.twist(u, x)
         c, s = math.cos(x[2]), math.sin(x[2])
         return np.array([c * uu - s * vv, s * uu + c * vv, rr])
+
+    def exact_step(self, x: np.ndarray, u: np.ndarray, dt: float) -> np.ndarray:
+        """Exact step under the held input.
+
+        World rates move the pose linearly; a body twist along the arc of
+        :func:`~wmr_mujoco.analytic.planar.twist_step`.
+        """
+        if self.world_frame:
+            return x + dt * np.asarray(u, float)
+        return twist_step(x, u, dt)
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """Pose of the ``base`` site."""
