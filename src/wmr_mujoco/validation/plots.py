@@ -130,7 +130,9 @@ def plot_trace(trace: Trace, title: str, path: Path) -> Path | None:
     else:
         _plot_states(axes, tr, trace)
     fig.suptitle(title)
-    _fix_layout(fig)
+    # Three panels of one fixed size: fixed margins, a third of the figure's cost less
+    # than laying it out with ``tight_layout`` (the report draws about a hundred).
+    fig.subplots_adjust(left=0.065, right=0.99, bottom=0.14, top=0.86, wspace=0.3)
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=80)
     plt.close(fig)
