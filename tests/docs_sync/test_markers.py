@@ -2,7 +2,14 @@
 
 import pytest
 
-from wmr_mujoco.docs_sync.markers import fixed, has_markers, markers, replace_between
+from wmr_mujoco.docs_sync.markers import (
+    fixed,
+    has_markers,
+    markers,
+    publish,
+    replace_between,
+    study_parser,
+)
 
 
 def test_replace_between_keeps_the_rest(tmp_path):
@@ -27,3 +34,18 @@ def test_bad_markers_are_refused_and_the_file_kept(tmp_path, text):
 def test_fixed_cells():
     assert (fixed(1.23456), fixed(1.23456, 3), fixed(2.5, 0)) == ("1.23", "1.235", "2")
     assert fixed(float("nan")) == fixed(float("inf")) == "n/a"
+
+
+def test_publish_prints_always_and_pastes_only_when_asked(tmp_path, capsys):
+    doc = tmp_path / "README.md"
+    original = ("a\n<!-- t1: begin -->\nold\n<!-- t1: end -->\nb\n"
+                "<!-- t2: begin -->\n<!-- t2: end -->\n")
+    doc.write_text(original)
+    tables = {"t1": "| new |", "t2": "| two |"}
+    assert study_parser("x").parse_args(["--no-write"]).no_write
+    publish(doc, tables, write=False)
+    assert doc.read_text() == original and "| new |\n\n| two |" in capsys.readouterr().out
+    publish(doc, tables, write=True)
+    assert doc.read_text() == ("a\n<!-- t1: begin -->\n| new |\n<!-- t1: end -->\nb\n"
+                               "<!-- t2: begin -->\n| two |\n<!-- t2: end -->\n")
+    assert f"wrote {doc}" in capsys.readouterr().out

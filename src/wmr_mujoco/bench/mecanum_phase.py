@@ -12,7 +12,6 @@ goes between markers in ``docs/mecanum.md`` (docs/mecanum.md §4).
 
 from __future__ import annotations
 
-import argparse
 import math
 from collections.abc import Sequence
 
@@ -21,7 +20,7 @@ import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic import pitch_averaged as pa
-from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.docs_sync.markers import publish, study_parser
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params_mecanum import MecanumParams
@@ -100,14 +99,8 @@ def table(duration: float = DURATION) -> str:
 
 def main(argv: Sequence[str] | None = None) -> None:
     """Print the table and write it into docs/mecanum.md."""
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--no-write", action="store_true", help="print only")
-    args = parser.parse_args(argv)
-    text = table()
-    print(text)
-    if not args.no_write:
-        replace_between(DOC, MARKER, text)
-        print(f"wrote {DOC}")
+    args = study_parser(__doc__).parse_args(argv)
+    publish(DOC, {MARKER: table()}, not args.no_write)
 
 
 if __name__ == "__main__":

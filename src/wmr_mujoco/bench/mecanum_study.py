@@ -15,7 +15,6 @@ turning length (10 s) are tabled too. The tables go between markers in
 
 from __future__ import annotations
 
-import argparse
 import dataclasses
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -24,7 +23,7 @@ import numpy as np
 
 from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.bench.trials import TrialRun, run_trial
-from wmr_mujoco.docs_sync.markers import fixed, replace_between
+from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import mecanum4, omni3
@@ -178,8 +177,7 @@ def long_runs_table(params: MecanumParams, duration: float = LONG_DURATION) -> s
 
 def main(argv: Sequence[str] | None = None) -> None:
     """Run the study; print the tables and update the README."""
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--no-write", action="store_true", help="print only")
+    parser = study_parser(__doc__)
     parser.add_argument("--duration", type=float, default=STUDY_DURATION,
                         help="seconds per study run")
     parser.add_argument("--timing-only", action="store_true",
@@ -187,11 +185,9 @@ def main(argv: Sequence[str] | None = None) -> None:
     args = parser.parse_args(argv)
     default = MecanumParams()
     if args.timing_only:
-        timing = timing_table(default, rounds=5, duration=args.duration)
-        print(timing)
-        if not args.no_write:
-            replace_between(README, "mecanum timing", timing)
-            print(f"wrote {README}")
+        publish(README, {"mecanum timing": timing_table(default, rounds=5,
+                                                        duration=args.duration)},
+                not args.no_write)
         return
     scenarios = study_scenarios(args.duration)
     default_label = f"{default.roller_shape}, {default.rollers_per_wheel}"
@@ -199,15 +195,9 @@ def main(argv: Sequence[str] | None = None) -> None:
     for label, params in study_configs():
         study.append(measure(params, scenarios, label))
         print(table(study[-1:]).splitlines()[-1], flush=True)
-    timing = timing_table(default, duration=args.duration)
-    study_md = table(study, default_label)
-    long_md = long_runs_table(default)
-    print(study_md, "", timing, "", long_md, sep="\n")
-    if not args.no_write:
-        replace_between(README, "mecanum roller study", study_md)
-        replace_between(README, "mecanum timing", timing)
-        replace_between(README, "mecanum long runs", long_md)
-        print(f"wrote {README}")
+    publish(README, {"mecanum roller study": table(study, default_label),
+                     "mecanum timing": timing_table(default, duration=args.duration),
+                     "mecanum long runs": long_runs_table(default)}, not args.no_write)
 
 
 if __name__ == "__main__":

@@ -25,14 +25,13 @@ rows' overlap). Their sum is checked against the change of kinetic + potential e
 
 from __future__ import annotations
 
-import argparse
 import math
 from pathlib import Path
 
 import mujoco
 import numpy as np
 
-from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.docs_sync.markers import publish, study_parser
 from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import WHEELS, coast_start
 from wmr_mujoco.sim.stepping import check_healthy
@@ -126,9 +125,7 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - a few min
     from wmr_mujoco.validation.runner import run_all
     from wmr_mujoco.validation.scenarios import ScenarioKind
 
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--no-write", action="store_true", help="print only")
-    args = parser.parse_args(argv)
+    args = study_parser(__doc__.splitlines()[0]).parse_args(argv)
     default = f"default contacts (solref {1000 * OmniParams().sim.contact_timeconst:g} ms)"
     budgets = {f"(0.3, 0, 1), {default}": coast_energy_budget(),
                f"(0.3, 0, 1), solref {1000 * SOFT:g} ms": coast_energy_budget(
@@ -137,22 +134,15 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - a few min
                    contact_timeconst=STIFF, duration=2.0),
                f"(0.3, 0, 0), {default}": coast_energy_budget((0.3, 0.0, 0.0))}
     scenarios = [s for s in get_spec("omni3").scenarios if s.kind is ScenarioKind.MEASUREMENT]
-    results_md = markdown_table(run_all(scenarios))
-    budget_md = budget_table(budgets)
-    timestep_md = omni_timestep.table(omni_timestep.convergence())
-    coast_md = omni_timestep.coast_table(omni_timestep.coast_convergence())
-    overlap_md = omni_overlap.table(omni_overlap.overlap_windows())
-    stiffness_md = omni_stiffness.table(omni_stiffness.study())
-    print(results_md, "", budget_md, "", timestep_md, "", coast_md, "", overlap_md, "",
-          stiffness_md, sep="\n")
-    if not args.no_write:
-        replace_between(DOC, "omni dynamics: results", results_md)
-        replace_between(DOC, "omni dynamics: energy budget", budget_md)
-        replace_between(DOC, "omni dynamics: time step", timestep_md)
-        replace_between(DOC, "omni dynamics: coast time step", coast_md)
-        replace_between(DOC, "omni dynamics: overlap windows", overlap_md)
-        replace_between(DOC, "omni dynamics: contact stiffness", stiffness_md)
-        print(f"wrote {DOC}")
+    publish(DOC, {
+        "omni dynamics: results": markdown_table(run_all(scenarios)),
+        "omni dynamics: energy budget": budget_table(budgets),
+        "omni dynamics: time step": omni_timestep.table(omni_timestep.convergence()),
+        "omni dynamics: coast time step": omni_timestep.coast_table(
+            omni_timestep.coast_convergence()),
+        "omni dynamics: overlap windows": omni_overlap.table(omni_overlap.overlap_windows()),
+        "omni dynamics: contact stiffness": omni_stiffness.table(omni_stiffness.study()),
+    }, not args.no_write)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -10,7 +10,6 @@ real-time factor of the ``mj_step`` loop.
 
 from __future__ import annotations
 
-import argparse
 import dataclasses
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -25,7 +24,7 @@ from wmr_mujoco.bench.trials import (
     run_trial,
     standard_trials,
 )
-from wmr_mujoco.docs_sync.markers import fixed, replace_between
+from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.models.paths import MODELS_DIR
@@ -129,9 +128,7 @@ def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
 
 def main(argv: Sequence[str] | None = None) -> None:
     """Run the study and the side-by-side; print the tables and update the README."""
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--no-write", action="store_true", help="print only")
-    args = parser.parse_args(argv)
+    args = study_parser(__doc__).parse_args(argv)
     default = OmniParams()
     default_label = f"{default.roller_shape}, 2×{default.rollers_per_row}"
     study = []
@@ -140,13 +137,8 @@ def main(argv: Sequence[str] | None = None) -> None:
         print(table(study[-1:]).splitlines()[-1], flush=True)
     ours = measure_omni(default, f"{ROBOT} (this package, default)")
     peer = measure_peer()
-    study_md = table(study, default_label)
-    side_md = table([ours, peer])
-    print(study_md, "", side_md, sep="\n")
-    if not args.no_write:
-        replace_between(README, "roller study", study_md)
-        replace_between(README, "side by side", side_md)
-        print(f"wrote {README}")
+    publish(README, {"roller study": table(study, default_label),
+                     "side by side": table([ours, peer])}, not args.no_write)
 
 
 if __name__ == "__main__":

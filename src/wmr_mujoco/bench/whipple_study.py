@@ -20,7 +20,6 @@ well under a minute on one core.
 
 from __future__ import annotations
 
-import argparse
 import math
 import time
 from collections.abc import Sequence
@@ -30,7 +29,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import whipple as analytic
-from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.docs_sync.markers import publish, study_parser
 from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.builders.common import to_xml
 from wmr_mujoco.models.builders.scene import add_scene
@@ -307,9 +306,7 @@ def write_figure(params: WhippleParams | None = None) -> None:
 
 def main(argv: Sequence[str] | None = None) -> None:
     """Run the study, print the tables and paste them into the model README."""
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--no-write", action="store_true", help="print only")
-    args = parser.parse_args(argv)
+    args = study_parser(__doc__).parse_args(argv)
     rows = []
     for label, p in study_configs():
         rows.append(measure_row(label, p))
@@ -319,13 +316,10 @@ def main(argv: Sequence[str] | None = None) -> None:
              "whipple metrics": metrics_table(measure(), rows[0].rtf),
              "whipple self-stability": self_stability_text(),
              "whipple integrator cost": integrator_cost_text()}
-    for key, text in texts.items():
-        print(f"\n## {key}\n{text}")
+    publish(README, texts, not args.no_write)
     if not args.no_write:
-        for key, text in texts.items():
-            replace_between(README, key, text)
         write_figure()
-        print(f"wrote {README} and {FIGURE}")
+        print(f"wrote {FIGURE}")
 
 
 if __name__ == "__main__":

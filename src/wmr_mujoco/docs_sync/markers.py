@@ -6,7 +6,9 @@ markers is replaced wholesale by what a generator produced.
 
 from __future__ import annotations
 
+import argparse
 import math
+from collections.abc import Mapping
 from pathlib import Path
 
 from wmr_mujoco.atomic import write_text_atomic
@@ -40,6 +42,26 @@ def replace_between(path: Path, key: str, body: str) -> None:
     head, rest = text.split(begin, 1)
     _, tail = rest.split(end, 1)
     write_text_atomic(Path(path), f"{head}{begin}\n{body.strip()}\n{end}{tail}")
+
+
+def study_parser(description: str | None) -> argparse.ArgumentParser:
+    """The command line of a study that pastes its tables: ``--no-write`` prints only."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--no-write", action="store_true", help="print only")
+    return parser
+
+
+def publish(path: Path, tables: Mapping[str, str], write: bool) -> None:
+    """Print each generated table (by marker key) and, if ``write``, paste it into ``path``.
+
+    Raises:
+        ValueError: a key's markers are missing from ``path`` (:func:`replace_between`).
+    """
+    print("\n\n".join(tables.values()))
+    if write:
+        for key, text in tables.items():
+            replace_between(path, key, text)
+        print(f"wrote {path}")
 
 
 def fixed(x: float, digits: int = 2) -> str:
