@@ -199,3 +199,25 @@ def test_a_kind_without_a_judge_is_refused_before_any_simulation(monkeypatch):
         with pytest.raises(ValueError, match="robot 'disc_unjudged' has no judge for dynamic "
                            "scenarios; kinds it judges: kinematic"):
             prepare(scenario)
+
+
+def test_schedule_uses_an_adapters_exact_step_and_else_rk4():
+    """ẋ = u held: RK4 and an exact step agree, so a marked exact step must be the one used."""
+    from wmr_mujoco.validation.runner import schedule
+
+    class Linear:
+        def controls(self, u, x):
+            return np.asarray(u, float)
+
+        def rhs(self, x, u):
+            return np.asarray(u, float)
+
+    class Marked(Linear):
+        def exact_step(self, x, u, dt):
+            return x + dt * np.asarray(u, float) + 1.0  # +1: shows it was called
+
+    s = Scenario("disc", "t", (const(2.0), const(0.0)), duration=0.01)
+    _, _, rk = schedule(s, Linear(), np.zeros(2), 0.002, 5)
+    np.testing.assert_allclose(rk[-1], [0.02, 0.0], atol=1e-15)
+    _, _, ex = schedule(s, Marked(), np.zeros(2), 0.002, 5)
+    np.testing.assert_allclose(ex[-1], [5.02, 5.0], atol=1e-12)
