@@ -36,11 +36,13 @@ def _sections() -> list[tuple[Path, str]]:
 
 
 def _literal_writers() -> dict[str, set[str]]:
-    """Key -> modules that call ``replace_between`` and hold the key as a string literal."""
+    """Key -> modules that paste generated text (``replace_between`` or ``publish``) and
+    hold the key as a string literal."""
     writers: dict[str, set[str]] = {}
     for path in _PACKAGE.rglob("*.py"):
         tree = ast.parse(path.read_text())
-        calls = any(isinstance(n, ast.Call) and getattr(n.func, "id", "") == "replace_between"
+        calls = any(isinstance(n, ast.Call)
+                    and getattr(n.func, "id", "") in {"replace_between", "publish"}
                     for n in ast.walk(tree))
         if not calls or path.name == "markers.py":
             continue
