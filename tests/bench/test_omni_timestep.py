@@ -38,3 +38,17 @@ def test_position_lead_is_the_simulators_quadrature():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_table_gives_both_twist_figures_per_row():
+    """One synthetic row: the physics' and the hybrid model's twist figures appear
+    sample by sample and with jumps one sample apart, each row as wide as the header."""
+    fig = {"u": 0.1, "v": 0.2, "r": 0.3, "u sample by sample": 1.5,
+           "v sample by sample": 2.5, "r sample by sample": 6.5, "position": 0.04}
+    text = ts.table([{"run": "torque rotate", "step": 0.001, "arc": True,
+                      "physics": fig, "hybrid": fig, "lead": 0.05}])
+    lines = text.splitlines()
+    assert len(lines) == 3
+    assert all(line.count("|") == lines[0].count("|") for line in lines)
+    assert lines[2].count("1.5 / 2.5 / 6.5") == 2 and lines[2].count("0.1 / 0.2 / 0.3") == 2
+    assert "jumps one sample apart (as judged)" in lines[0]

@@ -36,7 +36,12 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
 from wmr_mujoco.robots.omni3.coasting import COAST_SPEC, coast_figures
-from wmr_mujoco.robots.omni3.dynamics import STEP_SPECS, TORQUE_SPECS, pose_metrics
+from wmr_mujoco.robots.omni3.dynamics import (
+    EVENT_SHIFT,
+    STEP_SPECS,
+    TORQUE_SPECS,
+    pose_metrics,
+)
 from wmr_mujoco.robots.omni3.runs import hybrid, settled, simulate_runs
 from wmr_mujoco.validation.metrics import twist_metrics
 
@@ -95,8 +100,9 @@ def issue_figures(params: OmniParams, arc: bool) -> dict[str, float]:
     out["step position"], out["step heading"] = worst_path, worst_head
     for spec in TORQUE_SPECS:
         run = runs[spec.name]
-        tw = [m.value for m in twist_metrics("h", run.twist, run.hybrid.twist, L)
-              if "worst" in m.name]
+        tw = [m.value for m in twist_metrics("h", run.twist, run.hybrid.twist, L,
+                                             shift=EVENT_SHIFT)
+              if m.name.endswith("error") and "worst" in m.name]
         pos = pose_metrics("h", run.pose, run.hybrid.pose, L)[0].value
         for v in tw:
             judge(v, "torque twist")

@@ -11,11 +11,13 @@ finer steps and reports, per run and step,
 1. the physics against the physics at the finest step (``REFERENCE``), sampled on the
    coarsest grid: how much of a figure is the simulator's time discretisation (each
    roller hand-over is a velocity jump the simulator resolves on its step grid);
+   Each figure twice: the same samples at the same instant, and with jumps allowed one
+   sample of the coarse grid apart (:func:`~wmr_mujoco.validation.metrics.event_aligned_error`,
+   how ``wmr validate`` judges the torque runs);
 2. the hybrid model against the physics at that step (the judged figures at the model's
-   own step), also with the samples within :data:`HAND_OVER_STEPS` steps of a hand-over
-   left out (what the continuous phase misses, apart from the jumps' timing); with the
-   weight's moment over the roller arc (as judged) and without it
-   (``docs/omni-dynamics.md``, Open);
+   own step), sample by sample and with jumps allowed one sample apart (as judged); with
+   the weight's moment over the roller arc (as judged) and without it
+   (``docs/omni-dynamics.md`` §§ 10-11);
 3. the semi-implicit position lead: MuJoCo advances ``q_{n+1} = q_n + Δt v_{n+1}``, so
 
        q_n − q_0 = Δt Σ_{k=1..n} v_k = Δt Σ (v_{k−1} + v_k)/2 + (Δt/2)(v_n − v_0),
@@ -44,8 +46,13 @@ import numpy as np
 from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3.coasting import COAST_SPEC, coast_figures
-from wmr_mujoco.robots.omni3.dynamics import TORQUE_SPECS, path_length, pose_metrics
-from wmr_mujoco.robots.omni3.runs import Run, hybrid, simulate_runs
+from wmr_mujoco.robots.omni3.dynamics import (
+    EVENT_SHIFT,
+    TORQUE_SPECS,
+    path_length,
+    pose_metrics,
+)
+from wmr_mujoco.robots.omni3.runs import hybrid, simulate_runs
 from wmr_mujoco.validation.metrics import twist_metrics
 
 #: Steps compared, s (the first is the model's own, as ``wmr validate`` runs it; then
@@ -53,10 +60,6 @@ from wmr_mujoco.validation.metrics import twist_metrics
 MODEL_STEP = OmniParams().sim.timestep
 STEPS = (MODEL_STEP, MODEL_STEP / 2)
 REFERENCE = MODEL_STEP / 4
-#: Samples (of the run's own step) either side of a hybrid hand-over left out for the
-#: "away from hand-overs" figure: the hand-over's own step and the one the simulator may
-#: register it in, on either side.
-HAND_OVER_STEPS = 2
 
 
 def world_velocity(pose: np.ndarray, twist: np.ndarray) -> np.ndarray:
@@ -80,22 +83,18 @@ def position_lead(pose: np.ndarray, twist: np.ndarray, dt: float) -> np.ndarray:
     return 0.5 * dt * (v - v[0])
 
 
-def near_hand_overs(run: Run, steps: int = HAND_OVER_STEPS) -> np.ndarray:
-    """Mask of the samples within ``steps`` samples of a hybrid-model hand-over."""
-    mask = np.zeros(len(run.t), dtype=bool)
-    for time, _, _ in run.hybrid.switches:
-        k = round(time / run.dt)
-        mask[max(k - steps, 0):k + steps + 1] = True
-    return mask
-
-
 def _worst(metrics: list, prefix: str) -> dict[str, float]:
-    """``{u, v, r, position}`` worst figures of twist and pose metric lists."""
+    """Worst figures of twist and pose metric lists.
+
+    Keys: ``u``, ``v``, ``r``, ``position``, and ``<c> sample by sample`` where reported.
+    """
     out = {}
     for m in metrics:
         for key in ("u", "v", "r"):
             if m.name == f"{prefix}: worst {key} error":
                 out[key] = m.value
+            if m.name == f"{prefix}: worst {key} error, sample by sample":
+                out[f"{key} sample by sample"] = m.value
         if m.name == f"{prefix}: worst position error":
             out["position"] = m.value
     return out
@@ -132,17 +131,15 @@ def convergence(steps: Sequence[float] = STEPS, reference: float = REFERENCE,
             run, base = runs[spec.name], ref[spec.name]
             s, sr = round(coarse / h), round(coarse / reference)
             n = min(len(run.t[::s]), len(base.t[::sr]))
-            phys = _worst(twist_metrics("p", base.twist[::sr][:n], run.twist[::s][:n], L)
+            phys = _worst(twist_metrics("p", base.twist[::sr][:n], run.twist[::s][:n], L,
+                                        shift=EVENT_SHIFT)
                           + pose_metrics("p", base.pose[::sr][:n], run.pose[::s][:n], L), "p")
             dyn = run.hybrid
-            model = _worst(twist_metrics("h", run.twist, dyn.twist, L)
+            model = _worst(twist_metrics("h", run.twist, dyn.twist, L, shift=EVENT_SHIFT)
                            + pose_metrics("h", run.pose, dyn.pose, L), "h")
-            away = ~near_hand_overs(run)
-            off = _worst(twist_metrics("h", run.twist[away], dyn.twist[away], L), "h")
             lead = np.linalg.norm(position_lead(run.pose, run.twist, h), axis=1).max()
             rows.append({"run": spec.name, "step": h, "arc": arc, "physics": phys,
                          "hybrid": model,
-                         "away": off,
                          "lead": 100 * float(lead) / max(path_length(run.pose, L), 1e-9)})
     return rows
 
@@ -151,21 +148,24 @@ def table(rows: list[dict[str, object]], reference: float = REFERENCE) -> str:
     """Markdown table of :func:`convergence` rows."""
     ref = f"{1000 * reference:g} ms"
     lines = [f"| run | Δt | hybrid model | physics vs physics at {ref}: worst u, v, r "
-             f"(% of peak) | physics vs physics at {ref}: worst position (% of path) | "
-             "hybrid vs physics: worst u, v, r (% of peak) | "
+             "(% of peak), sample by sample | the same, jumps one sample apart | "
+             f"physics vs physics at {ref}: worst position (% of path) | "
+             "hybrid vs physics: worst u, v, r (% of peak), sample by sample | "
+             "the same, jumps one sample apart (as judged) | "
              "hybrid vs physics: worst position (% of path) | "
-             "hybrid vs physics, away from hand-overs: worst u, v, r (% of peak) | "
              "semi-implicit position lead (% of path) |",
-             "|---|---|---|---|---|---|---|---|---|"]
-    def trio(figures: dict[str, float]) -> str:
-        return " / ".join(f"{figures[c]:.3g}" for c in "uvr")
+             "|---|---|---|---|---|---|---|---|---|---|"]
+
+    def trio(figures: dict[str, float], suffix: str = "") -> str:
+        return " / ".join(f"{figures[c + suffix]:.3g}" for c in "uvr")
 
     for row in rows:
-        p, h, a = row["physics"], row["hybrid"], row["away"]
+        p, h = row["physics"], row["hybrid"]
         variant = "with the arc's moment (as judged)" if row["arc"] else "without the arc's moment"
+        point = " sample by sample"
         lines.append(f"| {row['run']} | {1000 * float(row['step']):g} ms | {variant} | "
-                     f"{trio(p)} | "
-                     f"{p['position']:.3g} | {trio(h)} | {h['position']:.3g} | {trio(a)} | "
+                     f"{trio(p, point)} | {trio(p)} | {p['position']:.3g} | "
+                     f"{trio(h, point)} | {trio(h)} | {h['position']:.3g} | "
                      f"{float(row['lead']):.3g} |")
     return "\n".join(lines)
 
