@@ -95,3 +95,19 @@ def test_bad_run_is_rejected(kwargs, match):
             "duration": 1.0, **kwargs}
     with pytest.raises(ValueError, match=match):
         RunSpec(**args)
+
+
+def test_torque_plots_show_each_twist_component_of_physics_and_models():
+    """A torque run's figure: one panel per body-twist component (what is judged), each
+    with the physics and the three predictions; the series are the run's own arrays."""
+    _, series = _metrics("torque rotate", dy.evaluate_torque)
+    panels = {}
+    for s in series:
+        panels.setdefault(s.ylabel, set()).add(s.label)
+    assert list(panels) == ["u [m/s]", "v [m/s]", "r [rad/s]"]
+    assert all(p == {"physics", "kinematic", "Lagrange", "hybrid"} for p in panels.values())
+    run = cached_runs(DYNAMIC_SPECS)["torque rotate"]
+    phys_r = next(s for s in series if s.ylabel == "r [rad/s]" and s.label == "physics")
+    assert np.array_equal(phys_r.y, run.twist[:, 2])
+    hyb_r = next(s for s in series if s.ylabel == "r [rad/s]" and s.label == "hybrid")
+    assert np.array_equal(hyb_r.y, run.hybrid.twist[:, 2])

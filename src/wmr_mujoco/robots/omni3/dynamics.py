@@ -134,6 +134,26 @@ def plot_series(run: Run, models: dict[str, tuple[np.ndarray, np.ndarray]]) -> l
     return out
 
 
+#: Body-twist components of the torque runs' plots: name, unit.
+TWIST_COMPONENTS = (("u", "m/s"), ("v", "m/s"), ("r", "rad/s"))
+
+
+def twist_series(run: Run, models: dict[str, np.ndarray]) -> list[Series]:
+    """The body twist over time, one panel per component: physics and each model.
+
+    What the torque runs judge (each component against its own scale); the hand-overs'
+    jumps show as steps of the physics and the hybrid model, which the Lagrange model
+    (continuous) does not have.
+    """
+    out = []
+    for j, (name, unit) in enumerate(TWIST_COMPONENTS):
+        ylabel = f"{name} [{unit}]"
+        out.append(Series("physics", run.t, run.twist[:, j], ylabel=ylabel))
+        out += [Series(label, run.t, twist[:, j], ylabel=ylabel)
+                for label, twist in models.items()]
+    return out
+
+
 def _run(scenario: Scenario, params: RobotParams | None, specs: tuple[RunSpec, ...]) -> Run:
     from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
 
@@ -219,11 +239,11 @@ def evaluate_torque(scenario: Scenario, params: RobotParams | None) -> Measureme
                + pose_metrics("hybrid", run.pose, dyn.pose, L, TORQUE_PATH)
                + [traction_metric(params, tau, lag_twist[::5])]
                + twist_metrics("Lagrange", run.twist, lag_twist, L)
+               + pose_metrics("Lagrange", run.pose, lag, L)
                + pose_metrics("kinematic", run.pose, kin, L)
                + [Metric("Lagrange: |Δν| / |ν| at the last instant", 100 * final, "%",
                          note="the single-instant figure judged before issue 16 "
                               "(mixed units); kept for comparison only")])
-    return MeasurementResult(metrics, plot_series(run, {
-        "kinematic": (kin, kin_twist), "Lagrange": (lag, lag_twist),
-        "hybrid": (dyn.pose, dyn.twist)}))
+    return MeasurementResult(metrics, twist_series(run, {
+        "kinematic": kin_twist, "Lagrange": lag_twist, "hybrid": dyn.twist}))
 
