@@ -361,3 +361,47 @@ def test_hand_overs_are_located_within_the_step():
     fine = simulate(*args, substeps=16, impacts=False, slip=False)
     assert len(fine.switches) >= 6
     np.testing.assert_allclose(coarse.pose, fine.pose, atol=1e-6)
+
+
+def test_relaxed_hand_over_leaves_rho_to_the_m_of_the_jump():
+    """A soft contact makes a hand-over's jump over several steps: with ``relax`` ρ the
+    reported twist differs from the rigid run's by a transient that shrinks by ρ every
+    step between hand-overs and grows by ρ (ν⁻ − ν⁺) at each, ν⁺ − ν⁻ the rigid run's
+    jump over that step less its continuous change (bounded by the largest change over a
+    step without a hand-over, the tolerance there, times ρ); the pose differs by the
+    transient's running sum times Δt (pure rotation: heading). The dynamics are the rigid
+    run's (wheel angles identical). Other tolerances: 1e-12, rounding."""
+    rho, dt = 0.5, 0.001
+    inputs = np.tile([0.02, 0.02, 0.02], (1000, 1))
+    args = (MODEL, Drive("torque", 1.0), inputs, dt, np.zeros(3), np.zeros(3),
+            np.array([0.1, 0.1, 0.1]))
+    rigid = simulate(*args, substeps=1, slip=False)
+    soft = simulate(*args, substeps=1, slip=False, relax=rho)
+    np.testing.assert_array_equal(soft.thetas, rigid.thetas)
+    diff = soft.twist - rigid.twist
+    steps = sorted({round(t / dt) for t, _, _ in rigid.switches})
+    assert len(steps) >= 4
+    # Between hand-overs: a geometric decay by ρ.
+    quiet = [k for k in range(steps[0] + 1, len(diff)) if k not in steps]
+    np.testing.assert_allclose(diff[quiet], rho * diff[[k - 1 for k in quiet]],
+                               rtol=0, atol=1e-12)
+    # At a hand-over: ρ times the rigid jump, reversed.
+    quiet_change = np.abs(np.diff(rigid.twist[:, 2]))[[k - 1 for k in quiet]].max()
+    for k in steps:
+        jump = rigid.twist[k, 2] - rigid.twist[k - 1, 2]
+        assert abs(jump) > 10 * quiet_change
+        assert diff[k, 2] - rho * diff[k - 1, 2] == pytest.approx(-rho * jump,
+                                                                  abs=rho * quiet_change)
+    # Pure rotation: the heading lags by Δt Σ of the yaw-rate transient.
+    np.testing.assert_allclose(soft.pose[:, 2] - rigid.pose[:, 2],
+                               dt * np.cumsum(diff[:, 2]), rtol=0, atol=1e-12)
+    # ρ = 0 is the rigid impact, bit for bit.
+    np.testing.assert_array_equal(simulate(*args, substeps=1, slip=False, relax=0.0).twist,
+                                  rigid.twist)
+
+
+@pytest.mark.parametrize("relax", [1.0, -1.0, math.nan])
+def test_relax_outside_its_range_is_refused(relax):
+    with pytest.raises(ValueError, match="relax"):
+        simulate(MODEL, Drive("torque", 1.0), np.zeros((3, 3)), 0.004, np.zeros(3),
+                 np.zeros(3), np.zeros(3), relax=relax)

@@ -45,7 +45,7 @@ def test_table_gives_both_twist_figures_per_row():
     sample by sample and with jumps one sample apart, each row as wide as the header."""
     fig = {"u": 0.1, "v": 0.2, "r": 0.3, "u sample by sample": 1.5,
            "v sample by sample": 2.5, "r sample by sample": 6.5, "position": 0.04}
-    text = ts.table([{"run": "torque rotate", "step": 0.001, "arc": True,
+    text = ts.table([{"run": "torque rotate", "step": 0.001, "variant": ts.VARIANTS[0][0],
                       "physics": fig, "hybrid": fig, "lead": 0.05}])
     lines = text.splitlines()
     assert len(lines) == 3

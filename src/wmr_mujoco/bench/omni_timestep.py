@@ -15,9 +15,11 @@ finer steps and reports, per run and step,
    sample of the coarse grid apart (:func:`~wmr_mujoco.validation.metrics.event_aligned_error`,
    how ``wmr validate`` judges the torque runs);
 2. the hybrid model against the physics at that step (the judged figures at the model's
-   own step), sample by sample and with jumps allowed one sample apart (as judged); with
-   the weight's moment over the roller arc (as judged) and without it
-   (``docs/omni-dynamics.md`` §§ 10-11);
+   own step), sample by sample and with jumps allowed one sample apart (as judged); as
+   judged (the weight's moment over the roller arc, each hand-over spread as the soft
+   contact does it at that step), with each hand-over made at once (the rigid impact
+   map), and without the arc's moment (:data:`VARIANTS`; ``docs/omni-dynamics.md``
+   §§ 5, 10-11);
 3. the semi-implicit position lead: MuJoCo advances ``q_{n+1} = q_n + Δt v_{n+1}``, so
 
        q_n − q_0 = Δt Σ_{k=1..n} v_k = Δt Σ (v_{k−1} + v_k)/2 + (Δt/2)(v_n − v_0),
@@ -56,10 +58,15 @@ from wmr_mujoco.robots.omni3.runs import hybrid, simulate_runs
 from wmr_mujoco.validation.metrics import twist_metrics
 
 #: Steps compared, s (the first is the model's own, as ``wmr validate`` runs it; then
-#: half of it), and the reference step (a quarter of it).
+#: half and a quarter of it), and the reference step (a quarter of it).
 MODEL_STEP = OmniParams().sim.timestep
-STEPS = (MODEL_STEP, MODEL_STEP / 2)
+STEPS = (MODEL_STEP, MODEL_STEP / 2, MODEL_STEP / 4)
 REFERENCE = MODEL_STEP / 4
+#: Hybrid models compared: label, the weight's moment over the arc, the soft contact's
+#: hand-over relaxation (:func:`~wmr_mujoco.robots.omni3.runs.simulate_runs`).
+VARIANTS = (("with the arc's moment (as judged)", True, True),
+            ("hand-overs at once (rigid impact)", True, False),
+            ("without the arc's moment", False, True))
 
 
 def world_velocity(pose: np.ndarray, twist: np.ndarray) -> np.ndarray:
@@ -125,8 +132,8 @@ def convergence(steps: Sequence[float] = STEPS, reference: float = REFERENCE,
     L = hybrid(None).distance
     ref = simulate_runs(specs, timestep=reference)
     rows: list[dict[str, object]] = []
-    for h, arc in ((h, arc) for h in steps for arc in (True, False)):
-        runs = simulate_runs(specs, timestep=h, arc=arc)
+    for h, (variant, arc, relax) in ((h, v) for h in steps for v in VARIANTS):
+        runs = simulate_runs(specs, timestep=h, arc=arc, relax=relax)
         for spec in specs:
             run, base = runs[spec.name], ref[spec.name]
             s, sr = round(coarse / h), round(coarse / reference)
@@ -138,7 +145,7 @@ def convergence(steps: Sequence[float] = STEPS, reference: float = REFERENCE,
             model = _worst(twist_metrics("h", run.twist, dyn.twist, L, shift=EVENT_SHIFT)
                            + pose_metrics("h", run.pose, dyn.pose, L), "h")
             lead = np.linalg.norm(position_lead(run.pose, run.twist, h), axis=1).max()
-            rows.append({"run": spec.name, "step": h, "arc": arc, "physics": phys,
+            rows.append({"run": spec.name, "step": h, "variant": variant, "physics": phys,
                          "hybrid": model,
                          "lead": 100 * float(lead) / max(path_length(run.pose, L), 1e-9)})
     return rows
@@ -161,7 +168,7 @@ def table(rows: list[dict[str, object]], reference: float = REFERENCE) -> str:
 
     for row in rows:
         p, h = row["physics"], row["hybrid"]
-        variant = "with the arc's moment (as judged)" if row["arc"] else "without the arc's moment"
+        variant = row["variant"]
         point = " sample by sample"
         lines.append(f"| {row['run']} | {1000 * float(row['step']):g} ms | {variant} | "
                      f"{trio(p, point)} | {trio(p)} | {p['position']:.3g} | "

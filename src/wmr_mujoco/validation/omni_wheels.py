@@ -21,6 +21,7 @@ from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.analytic.omni_hybrid import Drive, OmniHybrid, RollerGeometry
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis, inertia_tensor_about
+from wmr_mujoco.sim.soft_contact import slip_relaxation
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose, body_twist
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -165,7 +166,11 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
     offset, one ellipsoid collider each with its size, friction and solref time
     constant; the roller hinge's inertia and armature); the wheel centres' radius and
     angles. With ``compliant`` the hand-over loss of the soft contact uses
-    :func:`static_penetration`; without, contacts are rigid.
+    :func:`static_penetration`, and a hand-over's jump is spread as the contact's
+    friction rows remove a slip at the model's step
+    (:func:`~wmr_mujoco.sim.soft_contact.slip_relaxation` of the roller's ``solref`` and
+    ``solimp`` at that penetration, with ``impratio`` for elliptic cones; 0 for solref
+    given as direct stiffness and damping); without, contacts are rigid.
 
     Raises:
         ValueError: a wheel without roller bodies, or a roller without exactly one
@@ -183,7 +188,7 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
     children = [b for b in range(model.nbody) if model.body_parentid[b] == wb]
     if not children:
         raise ValueError(f"wheel {wheel_joints[0]!r} has no roller bodies")
-    angles, offsets, size, friction, timeconst = [], [], None, 1.0, 0.0
+    angles, offsets, size, friction, timeconst, solimp = [], [], None, 1.0, 0.0, None
     for c in children:
         x, y, z = model.body_pos[c]
         angles.append(np.arctan2(x, z))
@@ -197,6 +202,7 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
         size = model.geom_size[geoms[0]]
         friction = float(model.geom_friction[geoms[0], 0])  # rollers have priority 1
         timeconst = float(model.geom_solref[geoms[0], 0])
+        solimp = model.geom_solimp[geoms[0]]
     d = float(np.mean(np.hypot(model.body_pos[children, 0], model.body_pos[children, 2])))
     roller_joint = int(model.body_jntadr[children[0]])
     roller_axial = float(model.body_inertia[children[0]][2]
@@ -205,6 +211,11 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
                              np.asarray(offsets))
     wheel_pos = np.array([model.body_pos[model.joint(w).bodyid[0]] for w in wheel_joints])
     armature = float(model.dof_armature[wheel.dofadr[0]])
+    penetration = static_penetration(model) if compliant else 0.0
+    elliptic = model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC
+    relaxation = (slip_relaxation(model.opt.timestep, timeconst, solimp, penetration,
+                                  float(model.opt.impratio) if elliptic else 1.0)
+                  if compliant and timeconst > 0 else 0.0)
     return OmniHybrid(
         mass=lagrange.mass, inertia=inertia,
         wheel_axial=lagrange.wheel_inertia - armature, wheel_armature=armature,
@@ -212,8 +223,8 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
         distance=float(np.mean(np.linalg.norm(wheel_pos[:, :2], axis=1))),
         rollers=rollers, wheel_angles=np.arctan2(wheel_pos[:, 1], wheel_pos[:, 0]),
         gravity=float(-model.opt.gravity[2]),
-        penetration=static_penetration(model) if compliant else 0.0,
-        friction=friction, contact_timeconst=timeconst if compliant else 0.0)
+        penetration=penetration, friction=friction,
+        contact_timeconst=timeconst if compliant else 0.0, handover_relaxation=relaxation)
 
 
 def lagrange_of(hy: OmniHybrid) -> OmniDynamics:

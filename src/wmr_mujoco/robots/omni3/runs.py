@@ -202,13 +202,17 @@ def _ramp(twist: Sequence[float], hy: oh.OmniHybrid, n: int, dt: float) -> np.nd
 
 
 def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
-                  timestep: float | None = None, arc: bool = True) -> dict[str, Run]:
+                  timestep: float | None = None, arc: bool = True,
+                  relax: bool = True) -> dict[str, Run]:
     """Every run through the physics (batched rollouts) and the hybrid model (one batch).
 
     ``timestep``: the physics' step (None: the model's own, as ``wmr validate``); the
     hybrid model reports on the same grid, in RK4 steps of at most :data:`HYBRID_STEP`.
     ``arc``: the hybrid model with the weight's moment over the roller arc
     (:func:`~wmr_mujoco.analytic.omni_hybrid.simulate_batch`; on in ``wmr validate``).
+    ``relax``: each hand-over's jump spread as the soft contact makes it at the physics'
+    step (:attr:`~wmr_mujoco.analytic.omni_hybrid.OmniHybrid.handover_relaxation`; on in
+    ``wmr validate``); off: made at once (the rigid impact map).
 
     Raises:
         ValueError: duplicate names, a command beyond the actuators' range, or a bad
@@ -270,7 +274,8 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
         np.array([phys[s.name][1][0] for s in specs]),
         np.array([phys[s.name][2][0] for s in specs]),
         np.array([roller_rates(model, starts[s.name][1 + model.nq:], WHEELS)
-                  for s in specs]), substeps=max(1, math.ceil(dt / HYBRID_STEP - 1e-9)), arc=arc)
+                  for s in specs]), substeps=max(1, math.ceil(dt / HYBRID_STEP - 1e-9)), arc=arc,
+        relax=hy.handover_relaxation if relax else 0.0)
     out = {}
     for s, run in zip(specs, runs, strict=True):
         pose, twist, th, rates = phys[s.name]

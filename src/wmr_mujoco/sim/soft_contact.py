@@ -1,0 +1,99 @@
+"""MuJoCo's soft contact in closed form: impedance, and how fast friction removes a slip.
+
+MuJoCo solves each constraint row for the acceleration (MuJoCo documentation,
+*Computation*, "Solver parameters")
+
+    a₁ + d (b v + k r) = (1 − d) a₀,
+
+``a₀`` the unconstrained acceleration, ``v`` and ``r`` the row's velocity and violation,
+``d ∈ (0, 1)`` the impedance of ``solimp = (d₀, d_w, width, mid, p)`` at the violation
+(:func:`impedance`), and, for ``solref = (t_c, ζ)`` with ``t_c > 0``,
+
+    b = 2 / (d_w t_c),    k = d / (d_w² t_c² ζ²).
+
+A friction row has no position term (``k r`` absent). In an elliptic cone its regulariser
+is the normal row's divided by ``impratio`` (MuJoCo's ``impratio`` option), which is the
+row of impedance ``d_f`` with ``(1 − d_f)/d_f = (1 − d)/(d · impratio)``:
+
+    d_f = d · impratio / (d · impratio + 1 − d).
+
+A gripping contact's slip ``s`` (tangential velocity, ``a₀ ≈ 0`` over a step) therefore
+follows ``ṡ = −d_f b s``, which MuJoCo's step (the velocity updated from the force at the
+step's start) discretises as
+
+    s_{n+1} = ρ s_n,    ρ = 1 − Δt d_f b                                  (slip_relaxation)
+
+per step Δt: at ``Δt = t_c/2`` and ``d_f → d_w``, ρ → 0 (the slip gone in one step, the
+stiffest contact MuJoCo allows at that step), at ``Δt = t_c/4`` about ½, and so on. The
+test checks ρ against MuJoCo itself (a block sliding on a floor).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+
+def impedance(violation: float, solimp: Sequence[float]) -> float:
+    """MuJoCo's impedance ``d(r)`` of a constraint violated by ``r`` ≥ 0.
+
+    With ``x = min(r / width, 1)`` and the sigmoid of ``mid`` and power ``p``:
+    ``y = x^p / mid^(p−1)`` for ``x ≤ mid``, else ``y = 1 − (1 − x)^p / (1 − mid)^(p−1)``;
+    ``d = d₀ + y (d_w − d₀)``.
+
+    Args:
+        violation: r, the penetration, m (≥ 0).
+        solimp: ``(d₀, d_w, width, mid, p)`` as MuJoCo's ``solimp``.
+
+    Raises:
+        ValueError: a negative or non-finite violation, or a solimp outside MuJoCo's range
+            (``0 < d₀, d_w < 1``, ``width > 0``, ``0 < mid < 1``, ``p ≥ 1``).
+    """
+    if not (math.isfinite(violation) and violation >= 0):
+        raise ValueError(f"violation = {violation!r} m; valid range is [0, inf)")
+    d0, dw, width, mid, power = (float(v) for v in solimp)
+    if not (0 < d0 < 1 and 0 < dw < 1 and width > 0 and 0 < mid < 1 and power >= 1):
+        raise ValueError(f"solimp = {tuple(solimp)!r}; needs 0 < d0, dwidth < 1, width > 0, "
+                         "0 < mid < 1, power >= 1")
+    x = min(violation / width, 1.0)
+    if x <= mid:
+        y = x ** power / mid ** (power - 1)
+    else:
+        y = 1.0 - (1.0 - x) ** power / (1.0 - mid) ** (power - 1)
+    return d0 + y * (dw - d0)
+
+
+def friction_impedance(d: float, impratio: float) -> float:
+    """``d_f = d · impratio / (d · impratio + 1 − d)`` (module docstring).
+
+    Raises:
+        ValueError: ``d`` outside (0, 1) or ``impratio`` ≤ 0.
+    """
+    if not (0 < d < 1):
+        raise ValueError(f"d = {d!r}; valid range is (0, 1)")
+    if not (math.isfinite(impratio) and impratio > 0):
+        raise ValueError(f"impratio = {impratio!r}; valid range is (0, inf)")
+    return d * impratio / (d * impratio + 1.0 - d)
+
+
+def slip_relaxation(timestep: float, timeconst: float, solimp: Sequence[float],
+                    violation: float, impratio: float = 1.0) -> float:
+    """``ρ = 1 − Δt d_f b``: the share of a gripping contact's slip left after one step.
+
+    Args:
+        timestep: Δt, s.
+        timeconst: ``t_c`` of the contact's ``solref`` (friction rows: ``solreffriction``
+            where a pair sets it), s.
+        solimp: the contact's ``solimp``.
+        violation: its penetration, m (the loaded contact's static one).
+        impratio: MuJoCo's ``impratio`` (elliptic cones; 1 for pyramidal).
+
+    Raises:
+        ValueError: a non-positive step or time constant, or bad impedance input.
+    """
+    for name, value in (("timestep", timestep), ("timeconst", timeconst)):
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"{name} = {value!r} s; valid range is (0, inf)")
+    d_f = friction_impedance(impedance(violation, solimp), impratio)
+    b = 2.0 / (float(solimp[1]) * timeconst)
+    return 1.0 - timestep * d_f * b
