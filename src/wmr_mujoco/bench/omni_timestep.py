@@ -182,7 +182,7 @@ COAST_FIGURES = (("yaw-rate decay", "rad/s²"), ("velocity-direction turn rate",
                  ("energy lost per second", "W"))
 
 
-def coast_convergence(steps: Sequence[float] = (*STEPS, REFERENCE)
+def coast_convergence(steps: Sequence[float] = tuple(dict.fromkeys((*STEPS, REFERENCE)))
                       ) -> list[dict[str, object]]:
     """One row per step: the coast's figures, physics and hybrid model (as judged).
 
