@@ -9,6 +9,7 @@ import pytest
 from wmr_mujoco.analytic import mecanum_contact as mc
 from wmr_mujoco.analytic import mecanum_roller as mr
 from wmr_mujoco.models.builders.mecanum4 import WHEELS
+from wmr_mujoco.models.colliders import colliders
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.validation.omni_wheels import rolling_radius_profile
@@ -34,9 +35,8 @@ def _mujoco_contact(model, wheel, angle):
     mujoco.mj_kinematics(model, data)
     floor = model.geom("floor").id
     best, point = np.inf, None
-    for g in range(model.ngeom):
-        if (model.geom(g).name or "").startswith(f"{wheel}_roller") and model.geom_contype[g] \
-                | model.geom_conaffinity[g]:
+    for g in colliders(model):
+        if (model.geom(g).name or "").startswith(f"{wheel}_roller"):
             fromto = np.zeros(6)
             dist = mujoco.mj_geomDistance(model, data, g, floor, 2.0, fromto)
             if dist < best:

@@ -1,6 +1,14 @@
 """The mecanum design study: one short measurement, the table, the configurations."""
 
-from wmr_mujoco.bench.mecanum_study import COUNTS, measure, study_configs, study_scenarios, table
+from wmr_mujoco.bench.mecanum_study import (
+    COUNTS,
+    contact_variant,
+    cost_table,
+    measure,
+    study_configs,
+    study_scenarios,
+    table,
+)
 from wmr_mujoco.models.params_mecanum import MecanumParams
 
 
@@ -22,3 +30,21 @@ def test_measure_splits_ramps_and_steps_and_marks_the_default():
 def test_configs_are_shapes_times_counts():
     labels = [label for label, _ in study_configs()]
     assert len(labels) == len(set(labels)) == len(COUNTS) * len(MecanumParams.ROLLER_SHAPES)
+
+
+def test_contact_variants_differ_only_in_how_contacts_are_found():
+    p = MecanumParams()
+    paired, bits = contact_variant(p, pairs=True), contact_variant(p, pairs=False)
+    rollers = [g for g in range(paired.ngeom) if paired.geom(g).name.endswith("_collision")
+               and "_roller" in paired.geom(g).name]
+    assert paired.npair == len(rollers) == 4 * p.rollers_per_wheel and bits.npair == 0
+    assert not paired.geom_conaffinity[rollers].any() and bits.geom_conaffinity[rollers].all()
+    assert paired.nq == bits.nq and paired.ngeom == bits.ngeom
+
+
+def test_cost_table_has_every_variant_and_one_default():
+    text = cost_table(rounds=1)
+    rows = text.splitlines()[2:]
+    assert len(rows) == 5  # bits/pairs × Newton/PGS, and omni3
+    assert sum("(default)" in r for r in rows) == 2  # mecanum4's and omni3's
+    assert "| mecanum4, floor pairs, Newton (default) |" in text

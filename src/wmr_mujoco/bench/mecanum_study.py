@@ -9,25 +9,32 @@ steps), shortened to :data:`STUDY_DURATION` so that the study stays a few minute
 over every run, against the roller-pitch-averaged kinematics and the ideal Lynch & Park
 model; and the real-time factor of the step loop on one thread. ``omni3`` (default model)
 is timed in the same process for the ratio; the default model's runs at the validation's
-turning length (10 s) are tabled too. The tables go between markers in
+turning length (10 s) are tabled too; so is the cost of one ``mj_step`` of the default
+model with its contacts from contact bits or from explicit floor pairs and with the Newton
+or the PGS solver (:func:`cost_table`). The tables go between markers in
 ``models/mecanum4/README.md`` (``make study``).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.bench.trials import TrialRun, run_trial
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
+from wmr_mujoco.models.builders import common
+from wmr_mujoco.models.loading import build_scene, load
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import mecanum4, omni3
 from wmr_mujoco.robots.mecanum4 import kinematics, ripple
+from wmr_mujoco.sim.thread_scaling import driving_controls
 from wmr_mujoco.validation.scenarios import Scenario
 
 README = MODELS_DIR / mecanum4.NAME / "README.md"
@@ -152,6 +159,81 @@ def timing_table(params: MecanumParams, rounds: int = 3,
         f"| ratio mecanum4 / omni3 | {max(ours) / max(omni):.2f} |"])
 
 
+#: Steps per timed loop of :func:`cost_table` (8 s of the 4 ms model), after
+#: :data:`COST_WARMUP` steps from rest, so that the robot cruises.
+COST_STEPS = 2000
+COST_WARMUP = 200
+
+
+def contact_variant(params: MecanumParams, pairs: bool) -> mujoco.MjModel:
+    """The scene of ``params`` with its roller contacts from floor pairs or from bits.
+
+    ``pairs=False``: the pairs removed and the roller colliders given ``conaffinity`` 1
+    (``contype`` 0; the floor's ``contype`` is 1), so that the broadphase finds the same
+    roller–floor contacts and MuJoCo combines the geoms' parameters itself.
+    """
+    root = build_scene(mecanum4.NAME, params)
+    if not pairs:
+        for pair in root.contact.get_children("pair"):
+            pair.remove()
+        root.default.find("default", "roller").geom.conaffinity = 1
+    return mujoco.MjModel.from_xml_string(common.to_xml(root))
+
+
+def _timed_loop(model: mujoco.MjModel, ctrl: np.ndarray) -> tuple[float, float, float]:
+    """``(s per step, constraint s per step, collision s per step)`` of one loop."""
+    data = mujoco.MjData(model)
+    data.ctrl[:] = ctrl
+    for _ in range(COST_WARMUP):
+        mujoco.mj_step(model, data)
+    for timer in data.timer:
+        timer.duration, timer.number = 0.0, 0
+    start = time.perf_counter()
+    for _ in range(COST_STEPS):
+        mujoco.mj_step(model, data)
+    wall = (time.perf_counter() - start) / COST_STEPS
+    stage = [data.timer[t].duration / COST_STEPS for t in
+             (mujoco.mjtTimer.mjTIMER_CONSTRAINT, mujoco.mjtTimer.mjTIMER_POS_COLLISION)]
+    return wall, stage[0], stage[1]
+
+
+def cost_table(rounds: int = 7) -> str:
+    """µs per ``mj_step`` and real-time factor of the contact/solver variants and ``omni3``.
+
+    The default parameters with contacts from bits or pairs and the Newton or PGS solver,
+    and ``omni3``'s default model, each on its cruising controls
+    (:func:`~wmr_mujoco.sim.thread_scaling.driving_controls`); ``rounds`` interleaved
+    rounds of :data:`COST_STEPS` steps on one thread; median and range over the rounds.
+    The stage columns (MuJoCo's own timers, median) show where the time goes.
+    """
+    default = MecanumParams()
+    models = {}
+    for pairs in (False, True):
+        for solver in ("Newton", "PGS"):
+            params = dataclasses.replace(default, solver=solver)
+            label = (f"mecanum4, {'floor pairs' if pairs else 'contact bits'}, {solver}"
+                     + (" (default)" if pairs and params == default else ""))
+            models[label] = contact_variant(params, pairs)
+    models["omni3 (default)"] = load(omni3.NAME)
+    ctrls = {k: driving_controls(m, omni3.NAME if k.startswith("omni3") else mecanum4.NAME)
+             for k, m in models.items()}
+    loops = {k: [] for k in models}
+    for _ in range(rounds):
+        for k, m in models.items():
+            loops[k].append(_timed_loop(m, ctrls[k]))
+    lines = [f"| model (one thread, {rounds} interleaved rounds of {COST_STEPS} steps) | "
+             "µs per step, median (range) | real-time factor, median (range) | "
+             "constraint µs | collision µs |", "|---|---|---|---|---|"]
+    for k, runs in loops.items():
+        wall = np.array([r[0] for r in runs])
+        dt = models[k].opt.timestep
+        med = [1e6 * float(np.median([r[i] for r in runs])) for i in range(3)]
+        lines.append(f"| {k} | {med[0]:.0f} ({1e6 * wall.min():.0f}–{1e6 * wall.max():.0f}) "
+                     f"| {dt / np.median(wall):.0f}× ({dt / wall.max():.0f}–"
+                     f"{dt / wall.min():.0f}×) | {med[1]:.0f} | {med[2]:.0f} |")
+    return "\n".join(lines)
+
+
 def long_runs_table(params: MecanumParams, duration: float = LONG_DURATION) -> str:
     """Worst position and heading errors of :data:`LONG_RUNS`, judged and ideal models.
 
@@ -181,13 +263,13 @@ def main(argv: Sequence[str] | None = None) -> None:
     parser.add_argument("--duration", type=float, default=STUDY_DURATION,
                         help="seconds per study run")
     parser.add_argument("--timing-only", action="store_true",
-                        help="only the mecanum4 / omni3 timing table (best of 5 rounds)")
+                        help="only the mecanum4 / omni3 timing tables (best of 5 rounds)")
     args = parser.parse_args(argv)
     default = MecanumParams()
     if args.timing_only:
         publish(README, {"mecanum timing": timing_table(default, rounds=5,
-                                                        duration=args.duration)},
-                not args.no_write)
+                                                        duration=args.duration),
+                         "mecanum cost": cost_table()}, not args.no_write)
         return
     scenarios = study_scenarios(args.duration)
     default_label = f"{default.roller_shape}, {default.rollers_per_wheel}"
@@ -197,6 +279,7 @@ def main(argv: Sequence[str] | None = None) -> None:
         print(table(study[-1:]).splitlines()[-1], flush=True)
     publish(README, {"mecanum roller study": table(study, default_label),
                      "mecanum timing": timing_table(default, duration=args.duration),
+                     "mecanum cost": cost_table(),
                      "mecanum long runs": long_runs_table(default)}, not args.no_write)
 
 

@@ -33,6 +33,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic.campion import Classification, Wheel, classify_wheels, summary
+from wmr_mujoco.models.colliders import colliders, is_collider
 
 SETTLE_TIME = 0.5
 #: |cos| of the angle to the vertical above which a hinge counts as vertical.
@@ -57,8 +58,7 @@ def _settle(model: mujoco.MjModel) -> mujoco.MjData:
 
 
 def _floor(model: mujoco.MjModel, data: mujoco.MjData) -> tuple[set[int], float]:
-    floor = {g for g in range(model.ngeom) if model.geom_bodyid[g] == 0
-             and (model.geom_contype[g] or model.geom_conaffinity[g])}
+    floor = {g for g in colliders(model) if model.geom_bodyid[g] == 0}
     if not floor:
         raise ValueError("the model has no floor: no collision geom on the world body "
                          "(load the scene, not the robot file)")
@@ -82,7 +82,7 @@ def _ancestors(model: mujoco.MjModel, body: int) -> list[int]:
 
 
 def _is_collider(model: mujoco.MjModel, g: int) -> bool:
-    return bool(model.geom_contype[g] or model.geom_conaffinity[g])
+    return is_collider(model, g)
 
 
 @dataclass

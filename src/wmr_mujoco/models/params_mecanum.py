@@ -53,6 +53,12 @@ class MecanumParams:
             half-span needed for one roller to always touch, as a fraction.
         roller_armature: rotor inertia added to each roller joint, kg·m².
         roller_damping: viscous damping of each roller joint, N·m·s/rad.
+        solver: MuJoCo constraint solver, ``"Newton"`` (default), ``"PGS"`` or ``"CG"``.
+            PGS solves the dozen contact rows in about half Newton's time but not to
+            Newton's solution (it breaks the mirror symmetry of a straight run and
+            shortens the traction-limited lag of a step; ``docs/mecanum.md`` §6), so it
+            is not the default; the cost table in ``models/mecanum4/README.md``
+            measures both.
         drive: actuator settings (no steering).
         sim: simulation settings.
 
@@ -84,11 +90,13 @@ class MecanumParams:
     roller_overlap: float = 0.1
     roller_armature: float = 0.0
     roller_damping: float = 0.0
+    solver: str = "Newton"
     drive: DriveParams = DriveParams(
         wheel_kv=2.0, wheel_armature=0.004, wheel_torque_limit=3.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
+    SOLVERS = ("Newton", "PGS", "CG")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS
 
@@ -107,6 +115,7 @@ class MecanumParams:
         _check_range(self, "roller_mass", 0.0, self.hub_mass)
         _check_count(self, "rollers_per_wheel", 6, 24)
         _check_choice(self, "roller_shape", self.ROLLER_SHAPES)
+        _check_choice(self, "solver", self.SOLVERS)
         if self.roller_half_span >= math.pi / 3.0:
             raise ValueError(f"MecanumParams.roller_overlap = {self.roller_overlap!r} gives a "
                              f"roller half-span of {math.degrees(self.roller_half_span):.1f}°; "

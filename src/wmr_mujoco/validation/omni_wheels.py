@@ -20,6 +20,7 @@ from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.analytic.omni_hybrid import Drive, OmniHybrid, RollerGeometry
 from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.models.colliders import colliders
 from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis, inertia_tensor_about
 from wmr_mujoco.sim.soft_contact import slip_relaxation
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose, body_twist
@@ -335,9 +336,7 @@ def rolling_radius_profile(model: mujoco.MjModel, wheel_joint: str, roller_prefi
     data = mujoco.MjData(model)
     floor = model.geom("floor").id
     jid = model.joint(wheel_joint).id
-    geoms = [g for g in range(model.ngeom)
-             if (model.geom(g).name or "").startswith(roller_prefix)
-             and model.geom_contype[g] | model.geom_conaffinity[g]]
+    geoms = [g for g in colliders(model) if (model.geom(g).name or "").startswith(roller_prefix)]
     if not geoms:
         raise ValueError(f"no collision geoms named {roller_prefix!r}* in the model")
     fromto = np.zeros(6)

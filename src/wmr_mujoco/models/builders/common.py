@@ -34,6 +34,10 @@ MARK_RGBA = (0.95, 0.75, 0.1, 1.0)
 BODY_RGBA = (0.2, 0.45, 0.8, 1.0)
 MOTOR_RGBA = (0.25, 0.25, 0.28, 1.0)
 METAL_RGBA = (0.72, 0.72, 0.75, 1.0)
+#: Contact of the ``collision`` class: torsional and rolling friction, ``solimp``.
+TORSIONAL_FRICTION = 0.005
+ROLLING_FRICTION = 0.0001
+CONTACT_SOLIMP = (0.95, 0.99, 0.001, 0.5, 2.0)
 
 
 def new_root(model: str, sim: SimParams) -> mjcf.RootElement:
@@ -72,9 +76,26 @@ def _set_contact(geom: mjcf.Element, sim: SimParams) -> None:
     geom.group = 3
     geom.condim = 3
     geom.priority = 1
-    geom.friction = (sim.friction, 0.005, 0.0001)
+    geom.friction = (sim.friction, TORSIONAL_FRICTION, ROLLING_FRICTION)
     geom.solref = (sim.contact_timeconst, 1.0)
-    geom.solimp = (0.95, 0.99, 0.001, 0.5, 2.0)
+    geom.solimp = CONTACT_SOLIMP
+
+
+def contact_pair_kwargs(sim: SimParams) -> dict:
+    """Attributes of a ``<pair>`` that contacts exactly as a ``collision``-class geom would.
+
+    MuJoCo fills a pair's unset attributes from the pair defaults (``solref`` 0.02, ...),
+    not from its geoms, so every attribute is given. Against a geom of lower priority
+    (the scene's floor, priority 0) the collision class's priority 1 makes MuJoCo take
+    its ``condim``, friction, ``solref`` and ``solimp`` whole; a contact's five friction
+    coefficients are ``(μ, μ, torsional, rolling, rolling)``; ``margin`` and ``gap`` are
+    the larger of the two geoms' (both 0).
+    """
+    mu = sim.friction
+    return {"condim": 3,
+            "friction": (mu, mu, TORSIONAL_FRICTION, ROLLING_FRICTION, ROLLING_FRICTION),
+            "solref": (sim.contact_timeconst, 1.0), "solimp": CONTACT_SOLIMP,
+            "margin": 0.0, "gap": 0.0}
 
 
 def add_roller_default(root: mjcf.RootElement, sim: SimParams, damping: float,

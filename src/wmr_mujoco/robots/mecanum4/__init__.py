@@ -131,4 +131,5 @@ SPEC = RobotSpec(
     probes=(ramp_probes,),
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="translate+rotate (ramp)",
     bench_scenario="translate+rotate (ramp)", render_scenario="translate+rotate (ramp)",
+    scene_extras=builder.floor_pairs,
 )

@@ -24,6 +24,7 @@ from wmr_mujoco.analytic.roller_stick_slip import RollerPlatform
 from wmr_mujoco.analytic.roller_traction import acceleration_time
 from wmr_mujoco.models.builders.common import NUSER_ACTUATOR
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
+from wmr_mujoco.models.colliders import colliders, pair_with
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import collider
 from wmr_mujoco.robots.mecanum4.geometry import layout
@@ -62,12 +63,20 @@ def drive_law(model: mujoco.MjModel, wheel: str) -> tuple[float, float]:
 
 
 def contact_friction(model: mujoco.MjModel, wheel: str) -> float:
-    """μ of a roller of ``wheel`` on the floor plane: the larger of the two geoms'."""
+    """μ of a roller of ``wheel`` on the floor plane.
+
+    The explicit ``<pair>``'s sliding friction if one names the two geoms, else MuJoCo's
+    combination of the geoms' (the larger of the two: the rollers' priority 1 makes it
+    theirs, and theirs is the floor's μ).
+    """
     planes = [g for g in range(model.ngeom) if model.geom_type[g] == mujoco.mjtGeom.mjGEOM_PLANE]
-    rollers = [g for g in range(model.ngeom) if model.geom_contype[g] == 0
-               and model.geom_conaffinity[g] and (model.geom(g).name or "").startswith(wheel)]
+    rollers = [g for g in colliders(model) if model.geom_bodyid[g] != 0
+               and (model.geom(g).name or "").startswith(wheel)]
     if not planes or not rollers:
         raise ValueError(f"wheel {wheel!r}: no roller collider or no floor plane in the model")
+    pair = pair_with(model, planes[0], rollers[0])
+    if pair is not None:
+        return float(model.pair_friction[pair, 0])
     return float(max(model.geom_friction[planes[0], 0], model.geom_friction[rollers[0], 0]))
 
 
