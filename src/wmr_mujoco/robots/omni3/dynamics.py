@@ -173,7 +173,7 @@ def evaluate_step(scenario: Scenario, params: RobotParams | None) -> Measurement
     kin = kinematic_pose(kin_twist, run.dt)
     dyn = run.hybrid
     metrics = (pose_metrics("hybrid", run.pose, dyn.pose, L, STEP_PATH, STEP_HEADING)
-               + twist_metrics("hybrid", run.twist, dyn.twist, L)
+               + twist_metrics("hybrid", run.twist, dyn.twist, L, shift=EVENT_SHIFT)
                + pose_metrics("kinematic", run.pose, kin, L))
     return MeasurementResult(metrics, plot_series(run, {"kinematic": (kin, kin_twist),
                                                         "hybrid": (dyn.pose, dyn.twist)}))
