@@ -20,6 +20,8 @@ finer steps and reports, per run and step,
    contact does it at that step), with each hand-over made at once (the rigid impact
    map), and without the arc's moment (:data:`VARIANTS`; ``docs/omni-dynamics.md``
    §§ 5, 10-11);
+   and the worst wheel-phase difference of the model in steps' turns
+   (:func:`phase_lag_steps`: how many samples its hand-overs fall from the physics');
 3. the semi-implicit position lead: MuJoCo advances ``q_{n+1} = q_n + Δt v_{n+1}``, so
 
        q_n − q_0 = Δt Σ_{k=1..n} v_k = Δt Σ (v_{k−1} + v_k)/2 + (Δt/2)(v_n − v_0),
@@ -54,7 +56,7 @@ from wmr_mujoco.robots.omni3.dynamics import (
     path_length,
     pose_metrics,
 )
-from wmr_mujoco.robots.omni3.runs import hybrid, simulate_runs
+from wmr_mujoco.robots.omni3.runs import Run, hybrid, simulate_runs
 from wmr_mujoco.validation.metrics import twist_metrics
 
 #: Steps compared, s (the first is the model's own, as ``wmr validate`` runs it; then
@@ -88,6 +90,22 @@ def position_lead(pose: np.ndarray, twist: np.ndarray, dt: float) -> np.ndarray:
         raise ValueError(f"pose {pose.shape} and twist {twist.shape} must both be (N, 3)")
     v = world_velocity(pose, twist)
     return 0.5 * dt * (v - v[0])
+
+
+def phase_lag_steps(run: Run) -> float:
+    """Worst wheel-phase difference of the hybrid model from the physics, in steps' turns.
+
+    ``max |θ_model − θ_physics| / |θ_physics,k+1 − θ_physics,k|`` over the wheels and the
+    samples whose turn per step is at least a tenth of the run's largest (how many
+    samples a hand-over of the model falls from the physics'; 0 for a run that does not
+    turn its wheels).
+    """
+    turn = np.abs(np.diff(run.wheel_angles, axis=0))
+    fast = turn >= 0.1 * turn.max() if turn.size and turn.max() > 0 else turn > np.inf
+    if not fast.any():
+        return 0.0
+    gap = np.abs(run.hybrid.thetas - run.wheel_angles)[:-1]
+    return float(np.max(gap[fast] / turn[fast]))
 
 
 def _worst(metrics: list, prefix: str) -> dict[str, float]:
@@ -146,7 +164,7 @@ def convergence(steps: Sequence[float] = STEPS, reference: float = REFERENCE,
                            + pose_metrics("h", run.pose, dyn.pose, L), "h")
             lead = np.linalg.norm(position_lead(run.pose, run.twist, h), axis=1).max()
             rows.append({"run": spec.name, "step": h, "variant": variant, "physics": phys,
-                         "hybrid": model,
+                         "hybrid": model, "phase": phase_lag_steps(run),
                          "lead": 100 * float(lead) / max(path_length(run.pose, L), 1e-9)})
     return rows
 
@@ -160,8 +178,9 @@ def table(rows: list[dict[str, object]], reference: float = REFERENCE) -> str:
              "hybrid vs physics: worst u, v, r (% of peak), sample by sample | "
              "the same, jumps one sample apart (as judged) | "
              "hybrid vs physics: worst position (% of path) | "
+             "hybrid vs physics: worst wheel phase (steps' turns) | "
              "semi-implicit position lead (% of path) |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
 
     def trio(figures: dict[str, float], suffix: str = "") -> str:
         return " / ".join(f"{figures[c + suffix]:.3g}" for c in "uvr")
@@ -173,7 +192,7 @@ def table(rows: list[dict[str, object]], reference: float = REFERENCE) -> str:
         lines.append(f"| {row['run']} | {1000 * float(row['step']):g} ms | {variant} | "
                      f"{trio(p, point)} | {trio(p)} | {p['position']:.3g} | "
                      f"{trio(h, point)} | {trio(h)} | {h['position']:.3g} | "
-                     f"{float(row['lead']):.3g} |")
+                     f"{float(row['phase']):.2f} | {float(row['lead']):.3g} |")
     return "\n".join(lines)
 
 
