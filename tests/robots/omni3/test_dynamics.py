@@ -2,6 +2,7 @@
 
 import math
 
+import mujoco
 import numpy as np
 import pytest
 
@@ -10,7 +11,16 @@ from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots import omni3
 from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
 from wmr_mujoco.robots.omni3 import dynamics as dy
-from wmr_mujoco.robots.omni3.runs import RunSpec, cached_runs, hybrid, simulate_runs
+from wmr_mujoco.robots.omni3.runs import (
+    CONTACT_WINDOW,
+    RunSpec,
+    cached_runs,
+    hybrid,
+    settled,
+    simulate_runs,
+    wheels_off_floor,
+)
+from wmr_mujoco.sim.engine import STATE_SPEC
 from wmr_mujoco.validation.metrics import twist_metrics
 
 
@@ -126,3 +136,33 @@ def test_soft_hand_overs_follow_the_physics_at_half_the_step():
     worst = {m.name: m.value for m in twist_metrics("h", run.twist, run.hybrid.twist,
                                                     hybrid().distance, shift=dy.EVENT_SHIFT)}
     assert worst["h: worst r error"] <= 1.0
+
+
+def test_wheels_off_floor_reads_the_contacts_of_each_state():
+    """The settled robot has every wheel on the floor; raised 1 cm (free joint z), none;
+    tilted about the axis of wheel 1 so that wheel 1 rises, wheel 1 alone is off."""
+    model, data = settled(ActuationMode.TORQUE)
+    rest = np.empty(mujoco.mj_stateSize(model, STATE_SPEC))
+    mujoco.mj_getState(model, data, rest, STATE_SPEC)
+    raised = rest.copy()
+    raised[1 + 2] += 0.01  # time first, then qpos: free joint (x, y, z, quaternion)
+    # Tilt 0.1 rad about the horizontal axis normal to wheel 1's direction (through the
+    # centre): wheel 1 rises by L sin 0.1 ≈ 15 mm, wheels 2 and 3 sink by half that.
+    alpha = float(hybrid().wheel_angles[0])
+    axis = np.array([-np.sin(alpha), np.cos(alpha), 0.0])
+    tilt = np.zeros(4)
+    mujoco.mju_axisAngle2Quat(tilt, axis, -0.1)
+    tilted = rest.copy()
+    quat = np.zeros(4)
+    mujoco.mju_mulQuat(quat, tilt, rest[1 + 3:1 + 7])
+    tilted[1 + 3:1 + 7] = quat
+    off = wheels_off_floor(model, np.array([rest, raised, tilted]))
+    assert not off[0].any() and off[1].all()
+    assert off[2].tolist() == [True, False, False]
+
+
+def test_off_floor_metric_is_reported_and_zero_under_torque():
+    """Reported only; the torque inputs stay below the traction limit, so no wheel lifts."""
+    m, _ = _metrics("torque along y", dy.evaluate_torque)
+    row = m[f"wheels off the floor, first {CONTACT_WINDOW:g} s"]
+    assert row.target is None and row.value == 0.0

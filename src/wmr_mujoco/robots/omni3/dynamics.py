@@ -30,7 +30,7 @@ from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams, RobotParams
-from wmr_mujoco.robots.omni3.runs import Run, RunSpec, cached_runs, hybrid
+from wmr_mujoco.robots.omni3.runs import CONTACT_WINDOW, Run, RunSpec, cached_runs, hybrid
 from wmr_mujoco.validation.metrics import Metric, Series, Target, rms, twist_metrics
 from wmr_mujoco.validation.omni_wheels import (
     DIRECTIONS_DEG,
@@ -164,6 +164,19 @@ def _run(scenario: Scenario, params: RobotParams | None, specs: tuple[RunSpec, .
     return cached_runs(DYNAMIC_SPECS, params)[scenario.name]
 
 
+def off_floor_metric(run: Run) -> Metric:
+    """Share of wheel samples off the floor over the run's first :data:`CONTACT_WINDOW` s.
+
+    No roller of the wheel touching the floor, % of the samples (reported: the hybrid
+    model never leaves it; a sliding soft contact lifts its wheel,
+    ``docs/omni-dynamics.md`` § 10).
+    """
+    return Metric(f"wheels off the floor, first {CONTACT_WINDOW:g} s",
+                  100.0 * float(np.mean(run.off_floor)), "% of wheel samples",
+                  note="no roller of the wheel touching the floor; the hybrid model "
+                       "keeps every wheel on it")
+
+
 def evaluate_step(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
     """A step command: the hybrid model judged, the kinematic prediction reported."""
     run = _run(scenario, params, STEP_SPECS)
@@ -174,6 +187,7 @@ def evaluate_step(scenario: Scenario, params: RobotParams | None) -> Measurement
     dyn = run.hybrid
     metrics = (pose_metrics("hybrid", run.pose, dyn.pose, L, STEP_PATH, STEP_HEADING)
                + twist_metrics("hybrid", run.twist, dyn.twist, L, shift=EVENT_SHIFT)
+               + [off_floor_metric(run)]
                + pose_metrics("kinematic", run.pose, kin, L))
     return MeasurementResult(metrics, plot_series(run, {"kinematic": (kin, kin_twist),
                                                         "hybrid": (dyn.pose, dyn.twist)}))
@@ -237,7 +251,7 @@ def evaluate_torque(scenario: Scenario, params: RobotParams | None) -> Measureme
     comp = dict.fromkeys("uvr", TORQUE_COMPONENT)
     metrics = (twist_metrics("hybrid", run.twist, dyn.twist, L, comp, EVENT_SHIFT)
                + pose_metrics("hybrid", run.pose, dyn.pose, L, TORQUE_PATH)
-               + [traction_metric(params, tau, lag_twist[::5])]
+               + [traction_metric(params, tau, lag_twist[::5]), off_floor_metric(run)]
                + twist_metrics("Lagrange", run.twist, lag_twist, L)
                + pose_metrics("Lagrange", run.pose, lag, L)
                + pose_metrics("kinematic", run.pose, kin, L)

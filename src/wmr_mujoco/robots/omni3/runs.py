@@ -32,6 +32,9 @@ from wmr_mujoco.validation.omni_wheels import drive_from_model, hybrid_from_mode
 WHEELS = ("wheel1", "wheel2", "wheel3")
 #: The body the platform's yaw inertia is taken about.
 CENTRE_BODY = "platform"
+#: Seconds from a run's start over which the wheels' floor contacts are read
+#: (:attr:`Run.off_floor`): a step command's start-up, where sliding wheels can lift.
+CONTACT_WINDOW = 0.1
 #: Seconds at rest before a run (as the runner's scenarios).
 SETTLE = 0.5
 #: Longest RK4 step of the hybrid model, s: at the default 1 ms simulation step the model
@@ -89,6 +92,8 @@ class Run:
         wheel_angles, wheel_rates: (N + 1, 3) physics wheel hinges.
         hybrid: the hybrid model's run.
         dt: simulation step, s.
+        off_floor: (K, 3) per sample of the first :data:`CONTACT_WINDOW` s, whether each
+            wheel has no roller touching the floor (:func:`wheels_off_floor`).
     """
 
     spec: RunSpec
@@ -99,6 +104,37 @@ class Run:
     wheel_rates: np.ndarray
     hybrid: oh.HybridRun
     dt: float
+    off_floor: np.ndarray
+
+
+def wheels_off_floor(model: mujoco.MjModel, states: np.ndarray,
+                     wheels: Sequence[str] = WHEELS) -> np.ndarray:
+    """(N, len(wheels)) True where no collider below a wheel's body touches the ``floor``.
+
+    Each full-physics state (rows of ``STATE_SPEC``) is set and its contacts found
+    (``mj_fwdPosition``); a contact belongs to the wheel whose body is an ancestor of its
+    geom's body.
+    """
+    data = mujoco.MjData(model)
+    floor = model.geom("floor").id
+    wheel_bodies = [int(model.joint(w).bodyid[0]) for w in wheels]
+
+    def wheel_of(geom: int) -> int:
+        body = int(model.geom_bodyid[geom])
+        while body and body not in wheel_bodies:
+            body = int(model.body_parentid[body])
+        return wheel_bodies.index(body) if body in wheel_bodies else -1
+
+    out = np.ones((len(states), len(wheels)), dtype=bool)
+    for k, state in enumerate(states):
+        mujoco.mj_setState(model, data, state, STATE_SPEC)
+        mujoco.mj_fwdPosition(model, data)
+        for c in data.contact[:data.ncon]:
+            if floor in (c.geom1, c.geom2):
+                w = wheel_of(int(c.geom2 if c.geom1 == floor else c.geom1))
+                if w >= 0:
+                    out[k, w] = False
+    return out
 
 
 def settled(mode: ActuationMode, params: OmniParams | None = None,
@@ -282,7 +318,9 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
         n = len(pose)
         cut = oh.HybridRun(run.t[:n], run.pose[:n], run.twist[:n], run.thetas[:n],
                            run.torques[:n], [w for w in run.switches if w[0] <= run.t[n - 1]])
-        out[s.name] = Run(s, cut.t, pose, twist, th, rates, cut, dt)
+        window = states[s.name][:round(CONTACT_WINDOW / dt) + 1]
+        out[s.name] = Run(s, cut.t, pose, twist, th, rates, cut, dt,
+                          wheels_off_floor(model, window))
     return out
 
 
