@@ -171,3 +171,18 @@ def test_twist_metrics_with_a_shift_judge_aligned_and_report_pointwise():
     assert rows["M: worst r error"].target.value == 1
     assert rows["M: worst r error, sample by sample"].value == pytest.approx(50.0)
     assert rows["M: worst r error, sample by sample"].target is None
+
+
+def test_event_aligned_error_retimes_the_trace_as_a_whole():
+    # Two components jumping at sample 5 in x; in y the first jumps one sample late and
+    # the second one sample early. One match per sample cannot serve both: at sample 5
+    # (and 4) one component's whole jump remains, where matching each column apart would
+    # forgive both.
+    k = np.arange(12)
+    x = np.column_stack([k >= 5, k >= 5]).astype(float)
+    y = np.column_stack([k >= 6, k >= 4]).astype(float)
+    assert mt.event_aligned_error(x, y, 1).max() == 1.0
+    assert mt.event_aligned_error(x[:, 0], y[:, 0], 1).max() == 0.0
+    assert mt.event_aligned_error(x[:, 1], y[:, 1], 1).max() == 0.0
+    with pytest.raises(ValueError, match="scale"):
+        mt.event_aligned_error(x, y, 1, scale=(1.0, 0.0))

@@ -37,9 +37,9 @@ from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
 from wmr_mujoco.robots.omni3.coasting import COAST_SPEC, coast_figures
 from wmr_mujoco.robots.omni3.dynamics import (
-    EVENT_SHIFT,
     STEP_SPECS,
     TORQUE_SPECS,
+    event_shift,
     pose_metrics,
 )
 from wmr_mujoco.robots.omni3.runs import hybrid, settled, simulate_runs
@@ -101,7 +101,7 @@ def issue_figures(params: OmniParams, arc: bool) -> dict[str, float]:
     for spec in TORQUE_SPECS:
         run = runs[spec.name]
         tw = [m.value for m in twist_metrics("h", run.twist, run.hybrid.twist, L,
-                                             shift=EVENT_SHIFT)
+                                             shift=event_shift(run))
               if m.name.endswith("error") and "worst" in m.name]
         pos = pose_metrics("h", run.pose, run.hybrid.pose, L)[0].value
         for v in tw:

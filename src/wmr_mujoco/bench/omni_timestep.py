@@ -11,17 +11,19 @@ finer steps and reports, per run and step,
 1. the physics against the physics at the finest step (``REFERENCE``), sampled on the
    coarsest grid: how much of a figure is the simulator's time discretisation (each
    roller hand-over is a velocity jump the simulator resolves on its step grid);
-   Each figure twice: the same samples at the same instant, and with jumps allowed one
-   sample of the coarse grid apart (:func:`~wmr_mujoco.validation.metrics.event_aligned_error`,
-   how ``wmr validate`` judges the torque runs);
+   each figure twice: the same samples at the same instant, and with jumps allowed one
+   sample of the coarse grid apart
+   (:func:`~wmr_mujoco.validation.metrics.event_aligned_error`);
 2. the hybrid model against the physics at that step (the judged figures at the model's
-   own step), sample by sample and with jumps allowed one sample apart (as judged); as
-   judged (the weight's moment over the roller arc, each hand-over spread as the soft
-   contact does it at that step), with each hand-over made at once (the rigid impact
-   map), and without the arc's moment (:data:`VARIANTS`; ``docs/omni-dynamics.md``
-   §§ 5, 10-11);
-   and the worst wheel-phase difference of the model in steps' turns
-   (:func:`phase_lag_steps`: how many samples its hand-overs fall from the physics');
+   own step), sample by sample and with jumps allowed one sample apart (judged where the
+   model's wheel phase stays within one step's turn); as judged (the weight's moment
+   over the roller arc, each hand-over spread as the soft contact does it at that step),
+   with each hand-over made at once (the rigid impact map), and without the arc's
+   moment (:data:`VARIANTS`; ``docs/omni-dynamics.md`` §§ 5, 10-11); with the model's
+   hand-over relaxation ρ at that step (``sim/soft_contact.py``; 0 where the variant
+   makes each hand-over at once) and its worst wheel phase against the physics' in
+   steps' turns, signed (:func:`~wmr_mujoco.robots.omni3.runs.phase_lag_steps`: how many
+   samples its hand-overs fall from the physics'; the premise of the allowance);
 3. the semi-implicit position lead: MuJoCo advances ``q_{n+1} = q_n + Δt v_{n+1}``, so
 
        q_n − q_0 = Δt Σ_{k=1..n} v_k = Δt Σ (v_{k−1} + v_k)/2 + (Δt/2)(v_n − v_0),
@@ -56,7 +58,7 @@ from wmr_mujoco.robots.omni3.dynamics import (
     path_length,
     pose_metrics,
 )
-from wmr_mujoco.robots.omni3.runs import Run, hybrid, simulate_runs
+from wmr_mujoco.robots.omni3.runs import hybrid, hybrid_at, phase_lag_steps, simulate_runs
 from wmr_mujoco.validation.metrics import twist_metrics
 
 #: Steps compared, s (the first is the model's own, as ``wmr validate`` runs it; then
@@ -90,22 +92,6 @@ def position_lead(pose: np.ndarray, twist: np.ndarray, dt: float) -> np.ndarray:
         raise ValueError(f"pose {pose.shape} and twist {twist.shape} must both be (N, 3)")
     v = world_velocity(pose, twist)
     return 0.5 * dt * (v - v[0])
-
-
-def phase_lag_steps(run: Run) -> float:
-    """Worst wheel-phase difference of the hybrid model from the physics, in steps' turns.
-
-    ``max |θ_model − θ_physics| / |θ_physics,k+1 − θ_physics,k|`` over the wheels and the
-    samples whose turn per step is at least a tenth of the run's largest (how many
-    samples a hand-over of the model falls from the physics'; 0 for a run that does not
-    turn its wheels).
-    """
-    turn = np.abs(np.diff(run.wheel_angles, axis=0))
-    fast = turn >= 0.1 * turn.max() if turn.size and turn.max() > 0 else turn > np.inf
-    if not fast.any():
-        return 0.0
-    gap = np.abs(run.hybrid.thetas - run.wheel_angles)[:-1]
-    return float(np.max(gap[fast] / turn[fast]))
 
 
 def _worst(metrics: list, prefix: str) -> dict[str, float]:
@@ -150,6 +136,7 @@ def convergence(steps: Sequence[float] = STEPS, reference: float = REFERENCE,
     L = hybrid(None).distance
     ref = simulate_runs(specs, timestep=reference)
     rows: list[dict[str, object]] = []
+    rho = {h: hybrid_at(h).handover_relaxation for h in steps}
     for h, (variant, arc, relax) in ((h, v) for h in steps for v in VARIANTS):
         runs = simulate_runs(specs, timestep=h, arc=arc, relax=relax)
         for spec in specs:
@@ -163,7 +150,8 @@ def convergence(steps: Sequence[float] = STEPS, reference: float = REFERENCE,
             model = _worst(twist_metrics("h", run.twist, dyn.twist, L, shift=EVENT_SHIFT)
                            + pose_metrics("h", run.pose, dyn.pose, L), "h")
             lead = np.linalg.norm(position_lead(run.pose, run.twist, h), axis=1).max()
-            rows.append({"run": spec.name, "step": h, "variant": variant, "physics": phys,
+            rows.append({"run": spec.name, "step": h, "rho": rho[h] if relax else 0.0,
+                         "variant": variant, "physics": phys,
                          "hybrid": model, "phase": phase_lag_steps(run),
                          "lead": 100 * float(lead) / max(path_length(run.pose, L), 1e-9)})
     return rows
@@ -172,15 +160,17 @@ def convergence(steps: Sequence[float] = STEPS, reference: float = REFERENCE,
 def table(rows: list[dict[str, object]], reference: float = REFERENCE) -> str:
     """Markdown table of :func:`convergence` rows."""
     ref = f"{1000 * reference:g} ms"
-    lines = [f"| run | Δt | hybrid model | physics vs physics at {ref}: worst u, v, r "
+    lines = [f"| run | Δt | hybrid model | ρ, a hand-over's share left after a step | "
+             f"physics vs physics at {ref}: worst u, v, r "
              "(% of peak), sample by sample | the same, jumps one sample apart | "
              f"physics vs physics at {ref}: worst position (% of path) | "
              "hybrid vs physics: worst u, v, r (% of peak), sample by sample | "
-             "the same, jumps one sample apart (as judged) | "
+             "the same, jumps one sample apart (judged where the wheel phase is within a "
+             "step's turn) | "
              "hybrid vs physics: worst position (% of path) | "
-             "hybrid vs physics: worst wheel phase (steps' turns) | "
+             "hybrid vs physics: worst wheel phase (steps' turns, − behind) | "
              "semi-implicit position lead (% of path) |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
 
     def trio(figures: dict[str, float], suffix: str = "") -> str:
         return " / ".join(f"{figures[c + suffix]:.3g}" for c in "uvr")
@@ -190,9 +180,10 @@ def table(rows: list[dict[str, object]], reference: float = REFERENCE) -> str:
         variant = row["variant"]
         point = " sample by sample"
         lines.append(f"| {row['run']} | {1000 * float(row['step']):g} ms | {variant} | "
+                     f"{float(row['rho']):.3g} | "
                      f"{trio(p, point)} | {trio(p)} | {p['position']:.3g} | "
                      f"{trio(h, point)} | {trio(h)} | {h['position']:.3g} | "
-                     f"{float(row['phase']):.2f} | {float(row['lead']):.3g} |")
+                     f"{float(row['phase']):+.2f} | {float(row['lead']):.3g} |")
     return "\n".join(lines)
 
 

@@ -11,11 +11,18 @@ MuJoCo solves each constraint row for the acceleration (MuJoCo documentation,
 
     b = 2 / (d_w t_c),    k = d / (d_w² t_c² ζ²).
 
-A friction row has no position term (``k r`` absent). In an elliptic cone its regulariser
-is the normal row's divided by ``impratio`` (MuJoCo's ``impratio`` option), which is the
-row of impedance ``d_f`` with ``(1 − d_f)/d_f = (1 − d)/(d · impratio)``:
+with ``t_c`` raised to ``2 Δt`` where it is shorter (MuJoCo's ``refsafe``, on unless
+disabled). A friction row has no position term (``k r`` absent). MuJoCo's regulariser of
+a row is ``R = (1 − d)/d · Â``, Â its diagonal approximation of the row's inverse
+inertia; in an elliptic cone the friction rows' is the normal row's divided by
+``impratio``. A row whose true inverse inertia A equals Â (a point mass on its contact:
+the exact case) then behaves as the row of impedance
 
-    d_f = d · impratio / (d · impratio + 1 − d).
+    d_f = d · impratio / (d · impratio + 1 − d);
+
+for ``A = a Â`` it is ``a / (a + (1 − d_f)/d_f)``, between ``d_f`` and 1 for ``a ≥ 1`` (a
+body that also turns at the contact), so ρ below is then high by at most
+``Δt b (1 − d_f)``.
 
 A gripping contact's slip ``s`` (tangential velocity, ``a₀ ≈ 0`` over a step) therefore
 follows ``ṡ = −d_f b s``, which MuJoCo's step (the velocity updated from the force at the
@@ -23,9 +30,9 @@ step's start) discretises as
 
     s_{n+1} = ρ s_n,    ρ = 1 − Δt d_f b                                  (slip_relaxation)
 
-per step Δt: at ``Δt = t_c/2`` and ``d_f → d_w``, ρ → 0 (the slip gone in one step, the
-stiffest contact MuJoCo allows at that step), at ``Δt = t_c/4`` about ½, and so on. The
-test checks ρ against MuJoCo itself (a block sliding on a floor).
+per step Δt: at ``Δt = t_c/2`` and ``d_f → d_w``, ρ → 0 (the slip gone in one step; a
+shorter ``t_c`` is raised to ``2 Δt``), at ``Δt = t_c/4`` about ½, and so on. The tests
+check ρ against MuJoCo itself: a point mass (exact) and a free sphere (within the bound).
 """
 
 from __future__ import annotations
@@ -51,6 +58,9 @@ def impedance(violation: float, solimp: Sequence[float]) -> float:
     """
     if not (math.isfinite(violation) and violation >= 0):
         raise ValueError(f"violation = {violation!r} m; valid range is [0, inf)")
+    if len(solimp) != 5:
+        raise ValueError(f"solimp = {tuple(solimp)!r}; give 5 numbers (d0, dwidth, width, "
+                         "mid, power)")
     d0, dw, width, mid, power = (float(v) for v in solimp)
     if not (0 < d0 < 1 and 0 < dw < 1 and width > 0 and 0 < mid < 1 and power >= 1):
         raise ValueError(f"solimp = {tuple(solimp)!r}; needs 0 < d0, dwidth < 1, width > 0, "
@@ -77,8 +87,12 @@ def friction_impedance(d: float, impratio: float) -> float:
 
 
 def slip_relaxation(timestep: float, timeconst: float, solimp: Sequence[float],
-                    violation: float, impratio: float = 1.0) -> float:
+                    violation: float, impratio: float = 1.0, refsafe: bool = True) -> float:
     """``ρ = 1 − Δt d_f b``: the share of a gripping contact's slip left after one step.
+
+    Exact for a row whose inverse inertia is MuJoCo's diagonal approximation of it (a
+    point mass on the contact); otherwise high by at most ``Δt b (1 − d_f)`` (module
+    docstring).
 
     Args:
         timestep: Δt, s.
@@ -87,6 +101,8 @@ def slip_relaxation(timestep: float, timeconst: float, solimp: Sequence[float],
         solimp: the contact's ``solimp``.
         violation: its penetration, m (the loaded contact's static one).
         impratio: MuJoCo's ``impratio`` (elliptic cones; 1 for pyramidal).
+        refsafe: MuJoCo raises ``t_c`` to ``2 Δt`` (its ``refsafe``; False where the
+            model disables it).
 
     Raises:
         ValueError: a non-positive step or time constant, or bad impedance input.
@@ -95,5 +111,5 @@ def slip_relaxation(timestep: float, timeconst: float, solimp: Sequence[float],
         if not (math.isfinite(value) and value > 0):
             raise ValueError(f"{name} = {value!r} s; valid range is (0, inf)")
     d_f = friction_impedance(impedance(violation, solimp), impratio)
-    b = 2.0 / (float(solimp[1]) * timeconst)
+    b = 2.0 / (float(solimp[1]) * (max(timeconst, 2.0 * timestep) if refsafe else timeconst))
     return 1.0 - timestep * d_f * b

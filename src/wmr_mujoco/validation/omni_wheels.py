@@ -214,8 +214,9 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
     armature = float(model.dof_armature[wheel.dofadr[0]])
     penetration = static_penetration(model) if compliant else 0.0
     elliptic = model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC
+    refsafe = not model.opt.disableflags & mujoco.mjtDisableBit.mjDSBL_REFSAFE
     relaxation = (slip_relaxation(model.opt.timestep, timeconst, solimp, penetration,
-                                  float(model.opt.impratio) if elliptic else 1.0)
+                                  float(model.opt.impratio) if elliptic else 1.0, refsafe)
                   if compliant and timeconst > 0 else 0.0)
     return OmniHybrid(
         mass=lagrange.mass, inertia=inertia,

@@ -43,9 +43,10 @@ def test_step_command_hybrid_beats_kinematics():
 
 def test_torque_rows_judged_as_declared():
     """Along x every component and the pose are judged (requirements) and pass (v and r
-    stay near zero: the push is symmetric); under pure rotation too, the twist compared
-    with jumps allowed one sample apart and the same-instant figure reported beside (never
-    below the aligned one); the Lagrange model's rows and the old single-instant figure
+    stay near zero: the push is symmetric); under pure rotation too, where the premise of
+    the one-sample allowance holds (the model's wheel phase within one step's turn of the
+    physics') so the twist is compared with jumps one sample apart, the same-instant
+    figure reported beside; the Lagrange model's rows and the old single-instant figure
     are reported only."""
     m, _ = _metrics("torque along x", dy.evaluate_torque)
     for c in "uvr":
@@ -59,8 +60,8 @@ def test_torque_rows_judged_as_declared():
     for c in "uvr":
         row = rot[f"hybrid: worst {c} error"]
         assert row.target is dy.TORQUE_COMPONENT and row.value <= row.target.value
-        point = rot[f"hybrid: worst {c} error, sample by sample"]
-        assert point.target is None and point.value >= row.value
+        assert rot[f"hybrid: worst {c} error, sample by sample"].target is None
+    assert abs(rot["hybrid: worst wheel phase"].value) <= 1.0
 
 
 def test_a_hand_over_jump_lands_on_the_model_sample_or_the_next():

@@ -1,11 +1,19 @@
 """omni3's dynamic runs: state extraction against MuJoCo's own functions."""
 
+from types import SimpleNamespace
+
 import mujoco
 import numpy as np
 import pytest
 
 from wmr_mujoco.models.actuation import ActuationMode, actuation_mode
-from wmr_mujoco.robots.omni3.runs import base_states, coast_start, relative, settled
+from wmr_mujoco.robots.omni3.runs import (
+    base_states,
+    coast_start,
+    phase_lag_steps,
+    relative,
+    settled,
+)
 from wmr_mujoco.sim.engine import get_state
 from wmr_mujoco.validation.adapters import base_pose, body_twist
 
@@ -53,3 +61,21 @@ def test_coast_starts_at_the_driven_twist_with_the_motors_off():
 def test_coast_start_refuses_bad_input(twist, drive_time, match):
     with pytest.raises(ValueError, match=match):
         coast_start(twist, drive_time)
+
+
+def test_phase_lag_counts_steps_of_wheel_turn_with_its_sign():
+    """Physics wheels turning 0.01 rad per step, the model 0.03 rad behind: −3 steps'
+    turns; 0.02 rad ahead on one wheel only: +2; wheels standing still: 0."""
+    t = np.arange(50)
+    phys = np.column_stack([0.01 * t] * 3)
+
+    def run(model):
+        return SimpleNamespace(wheel_angles=phys, hybrid=SimpleNamespace(thetas=model))
+
+    assert phase_lag_steps(run(phys - 0.03)) == pytest.approx(-3.0, rel=1e-9)
+    ahead = phys.copy()
+    ahead[:, 1] += 0.02
+    assert phase_lag_steps(run(ahead)) == pytest.approx(2.0, rel=1e-9)
+    still = np.zeros((50, 3))
+    assert phase_lag_steps(SimpleNamespace(wheel_angles=still,
+                                           hybrid=SimpleNamespace(thetas=still))) == 0.0

@@ -137,6 +137,24 @@ def wheels_off_floor(model: mujoco.MjModel, states: np.ndarray,
     return out
 
 
+def phase_lag_steps(run: Run) -> float:
+    """The hybrid model's worst wheel phase against the physics', in steps' turns, signed.
+
+    ``(θ_model − θ_physics) / |θ_physics,k+1 − θ_physics,k|`` at the wheel and sample
+    where its magnitude is largest, over the samples whose turn per step is at least a
+    tenth of the run's largest (negative: the model's wheels behind; how many samples a
+    hand-over of the model falls from the physics'; 0 for a run that does not turn its
+    wheels).
+    """
+    turn = np.abs(np.diff(run.wheel_angles, axis=0))
+    if not turn.size or turn.max() <= 0:
+        return 0.0
+    fast = turn >= 0.1 * turn.max()
+    ratio = np.where(fast, (run.hybrid.thetas - run.wheel_angles)[:-1]
+                     / np.where(fast, turn, 1.0), 0.0)
+    return float(ratio.flat[np.argmax(np.abs(ratio))])
+
+
 def settled(mode: ActuationMode, params: OmniParams | None = None,
             timestep: float | None = None) -> tuple[mujoco.MjModel, mujoco.MjData]:
     """omni3 in ``mode``, settled at rest on the floor for :data:`SETTLE` s.
@@ -341,6 +359,14 @@ def _hybrid(params: OmniParams | None) -> oh.OmniHybrid:
     from wmr_mujoco.models.loading import load  # the registry imports this module
 
     return _read(load("omni3", params), params)
+
+
+def hybrid_at(timestep: float, params: OmniParams | None = None) -> oh.OmniHybrid:
+    """The hybrid model of omni3 simulated at ``timestep``.
+
+    Its hand-over relaxation ρ depends on the step; everything else is the model's own.
+    """
+    return _read(settled(ActuationMode.TORQUE, params, timestep)[0], params)
 
 
 def _read(model: mujoco.MjModel, params: OmniParams | None) -> oh.OmniHybrid:
