@@ -128,15 +128,21 @@ def test_torque_plots_show_each_twist_component_of_physics_and_models():
 
 def test_soft_hand_overs_follow_the_physics_at_half_the_step():
     """At half the shipped step the soft contact spreads each hand-over's jump over a few
-    steps (ρ = 1 − Δt d_f b ≈ ½, sim/soft_contact.py); the hybrid model with that
-    relaxation keeps pure rotation's yaw rate within issue 16's 1 % of peak there too,
-    jumps one sample apart (docs/omni-dynamics.md § 11 has the rigid map's figure)."""
+    steps (ρ = 1 − Δt d_f b ≈ ½, sim/soft_contact.py). Pure rotation's yaw rate, jumps
+    one sample apart: the hybrid model with that relaxation stays within issue 16's 1 %
+    of peak, the same model making each hand-over at once misses it by more than twice
+    (the spread jump differs from the instant one by about half a jump, several % of peak,
+    for a sample or two)."""
     spec = next(s for s in dy.TORQUE_SPECS if s.name == "torque rotate")
     step = OmniParams().sim.timestep / 2
-    run = simulate_runs([spec], timestep=step)[spec.name]
-    worst = {m.name: m.value for m in twist_metrics("h", run.twist, run.hybrid.twist,
-                                                    hybrid().distance, shift=dy.EVENT_SHIFT)}
-    assert worst["h: worst r error"] <= 1.0
+
+    def worst_r(relax: bool) -> float:
+        run = simulate_runs([spec], timestep=step, relax=relax)[spec.name]
+        rows = {m.name: m.value for m in twist_metrics(
+            "h", run.twist, run.hybrid.twist, hybrid().distance, shift=dy.EVENT_SHIFT)}
+        return rows["h: worst r error"]
+
+    assert worst_r(True) <= 1.0 < 2.0 < worst_r(False)
 
 
 def test_wheels_off_floor_reads_the_contacts_of_each_state():
