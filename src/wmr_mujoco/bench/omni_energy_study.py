@@ -33,7 +33,7 @@ import numpy as np
 
 from wmr_mujoco.docs_sync.markers import publish, study_parser
 from wmr_mujoco.models.params import OmniParams
-from wmr_mujoco.robots.omni3.runs import WHEELS, coast_start
+from wmr_mujoco.robots.omni3.runs import coast_start, contact_wheels
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric
 
@@ -73,8 +73,6 @@ def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
     model, data = coast_start(twist, drive_time, setup)
     dt = model.opt.timestep
     energy0 = float(data.energy[0] + data.energy[1])
-    wheel_of = {model.body(w).id: i for i, w in enumerate(WHEELS)}
-    floor = model.geom("floor").id
     work = {"single normal": 0.0, "single tangential": 0.0, "overlap normal": 0.0,
             "overlap tangential": 0.0}
     contact_floor = int(mujoco.mjtConstraint.mjCNSTR_CONTACT_FRICTIONLESS)
@@ -83,10 +81,7 @@ def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
         mujoco.mj_step(model, data)
         jv = np.zeros(data.nefc)
         mujoco.mj_mulJacVec(model, data, jv, 0.5 * (q0 + data.qvel))
-        wheel = np.full(data.ncon, -1)
-        for ci, c in enumerate(data.contact[:data.ncon]):
-            geom = c.geom2 if c.geom1 == floor else c.geom1
-            wheel[ci] = wheel_of.get(int(model.body_parentid[model.geom_bodyid[geom]]), -1)
+        wheel = contact_wheels(model, data)
         per_wheel = np.bincount(wheel[wheel >= 0], minlength=3)
         for j in range(data.nefc):
             ci = int(data.efc_id[j])

@@ -29,7 +29,7 @@ import math
 import mujoco
 import numpy as np
 
-from wmr_mujoco.robots.omni3.runs import WHEELS, coast_start, hybrid
+from wmr_mujoco.robots.omni3.runs import WHEELS, coast_start, contact_wheels, hybrid
 from wmr_mujoco.sim.stepping import check_healthy
 
 #: |f_t| / (μ N) from which a contact counts as sliding at the Coulomb limit.
@@ -37,17 +37,15 @@ COULOMB = 0.95
 
 
 def _contacts(model: mujoco.MjModel, data: mujoco.MjData, floor: int,
-              wheel_of: dict[int, int], drive: np.ndarray) -> list[list[tuple[float, float]]]:
+              drive: np.ndarray) -> list[list[tuple[float, float]]]:
     """(N, f_t) of every roller contact, per wheel, for the contacts of the current state."""
     out: list[list[tuple[float, float]]] = [[] for _ in WHEELS]
     frame = data.xmat[1].reshape(3, 3)
     force = np.zeros(6)
-    for ci in range(data.ncon):
-        c = data.contact[ci]
-        geom = c.geom2 if c.geom1 == floor else c.geom1
-        wheel = wheel_of.get(int(model.body_parentid[model.geom_bodyid[geom]]), -1)
+    for ci, wheel in enumerate(contact_wheels(model, data)):
         if wheel < 0:
             continue
+        c = data.contact[ci]
         mujoco.mj_contactForce(model, data, ci, force)
         world = c.frame.reshape(3, 3).T @ force[:3]
         if c.geom2 == floor:  # the force on the robot
@@ -74,14 +72,13 @@ def overlap_windows(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
     hy = hybrid(None)
     dt = model.opt.timestep
     floor = model.geom("floor").id
-    wheel_of = {model.body(w).id: i for i, w in enumerate(WHEELS)}
     dofs = [model.jnt_dofadr[model.joint(w).id] for w in WHEELS]
     steps = round(duration / dt)
     pairs: list[list[list[tuple[float, float]]]] = [[] for _ in WHEELS]
     rates = np.zeros((steps, 3))
     for n in range(steps):
         mujoco.mj_forward(model, data)
-        for i, cs in enumerate(_contacts(model, data, floor, wheel_of, hy.drive_dirs)):
+        for i, cs in enumerate(_contacts(model, data, floor, hy.drive_dirs)):
             pairs[i].append(cs)
         rates[n] = data.qvel[dofs]
         mujoco.mj_step(model, data)

@@ -107,33 +107,37 @@ class Run:
     off_floor: np.ndarray
 
 
+def contact_wheels(model: mujoco.MjModel, data: mujoco.MjData,
+                   wheels: Sequence[str] = WHEELS) -> np.ndarray:
+    """The wheel of each current floor contact: (ncon,) indices into ``wheels``.
+
+    A contact belongs to the wheel whose roller (a child body of the wheel) touches the
+    ``floor`` in it; −1 for any other contact.
+    """
+    floor = model.geom("floor").id
+    wheel_of = {int(model.body(w).id): i for i, w in enumerate(wheels)}
+    out = np.full(data.ncon, -1)
+    for ci, c in enumerate(data.contact[:data.ncon]):
+        if floor in (c.geom1, c.geom2):
+            geom = c.geom2 if c.geom1 == floor else c.geom1
+            out[ci] = wheel_of.get(int(model.body_parentid[model.geom_bodyid[geom]]), -1)
+    return out
+
+
 def wheels_off_floor(model: mujoco.MjModel, states: np.ndarray,
                      wheels: Sequence[str] = WHEELS) -> np.ndarray:
-    """(N, len(wheels)) True where no collider below a wheel's body touches the ``floor``.
+    """(N, len(wheels)) True where no roller of a wheel touches the ``floor``.
 
     Each full-physics state (rows of ``STATE_SPEC``) is set and its contacts found
-    (``mj_fwdPosition``); a contact belongs to the wheel whose body is an ancestor of its
-    geom's body.
+    (``mj_fwdPosition``), assigned to wheels by :func:`contact_wheels`.
     """
     data = mujoco.MjData(model)
-    floor = model.geom("floor").id
-    wheel_bodies = [int(model.joint(w).bodyid[0]) for w in wheels]
-
-    def wheel_of(geom: int) -> int:
-        body = int(model.geom_bodyid[geom])
-        while body and body not in wheel_bodies:
-            body = int(model.body_parentid[body])
-        return wheel_bodies.index(body) if body in wheel_bodies else -1
-
     out = np.ones((len(states), len(wheels)), dtype=bool)
     for k, state in enumerate(states):
         mujoco.mj_setState(model, data, state, STATE_SPEC)
         mujoco.mj_fwdPosition(model, data)
-        for c in data.contact[:data.ncon]:
-            if floor in (c.geom1, c.geom2):
-                w = wheel_of(int(c.geom2 if c.geom1 == floor else c.geom1))
-                if w >= 0:
-                    out[k, w] = False
+        touching = contact_wheels(model, data, wheels)
+        out[k, touching[touching >= 0]] = False
     return out
 
 
