@@ -1,64 +1,69 @@
 #!/usr/bin/env bash
-# Install the Debian packages wmr-mujoco needs, only those missing, upgrading nothing:
-# python3-venv (virtual environment) and Mesa's EGL/OSMesa for headless rendering.
+# Offer the Debian packages that only offscreen rendering needs (Mesa's EGL), never
+# failing the set-up: everything but drawing (validation, the API, the tests that draw
+# nothing) works without them.
 #
-# A missing Mesa package is pinned to the version of the Mesa already installed (all of
-# Mesa's packages must carry one version, so an unpinned one would drag the installed ones
-# up to the newest); the install is first simulated (`apt-get -s`), and if it would still
-# upgrade or remove any installed package the script stops and says which, changing nothing.
-set -euo pipefail
+# - Nothing is asked for when an offscreen backend's libraries are there: Mesa's or
+#   NVIDIA's EGL, or else OSMesa. OSMesa is never required where EGL is present.
+# - Nothing is pinned: a package comes in the version the archive serves. The install
+#   is first simulated (`apt-get -s`); if it would upgrade or remove an installed package
+#   the script installs nothing and says so.
+# - Without apt, without root and without password-less sudo, or when apt refuses, the
+#   script prints one line naming what to install and exits 0.
+# The Python environment itself is made by scripts/make-venv.sh.
+set -uo pipefail
 DRI_DIR="${WMR_DRI_DIR:-/usr/lib/x86_64-linux-gnu/dri}"
-# Binary packages built from the mesa source, which share its version.
-MESA_PACKAGES="libegl-mesa0 libgl1-mesa-dri libglapi-mesa libgbm1 libosmesa6 mesa-libgallium"
+PACKAGES="libegl1 libegl-mesa0 libgl1 libgl1-mesa-dri"
+
+note() { echo "note: $*; rendering (wmr render, the clips and pictures) needs it," \
+              "everything else works without it" >&2; }
+
+libraries=$(ldconfig -p 2>/dev/null || true)
+has_lib() { grep -qF -- "$1" <<< "$libraries"; }
+has_dri() { [ -e "$DRI_DIR/swrast_dri.so" ] || [ -e "$DRI_DIR/llvmpipe_dri.so" ]; }
+# A usable offscreen stack: EGL with a vendor (Mesa with its software driver, or
+# NVIDIA's), or OSMesa.
+if has_lib "libEGL.so.1 " && { { has_lib "libEGL_mesa.so.0 " && has_dri; } \
+                               || has_lib "libEGL_nvidia.so.0 "; }; then
+  exit 0
+fi
+has_lib "libOSMesa.so" && exit 0
 
 missing=()
-# The library cache is read once (`ldconfig -p | grep -q` under pipefail fails whenever
-# grep stops reading before ldconfig has written everything).
-libraries=$(ldconfig -p)
-has_lib() { grep -qF -- "$1" <<< "$libraries"; }
-python3 -c "import venv, ensurepip" 2>/dev/null || missing+=(python3-venv)
 has_lib "libEGL.so.1 " || missing+=(libegl1)
 has_lib "libEGL_mesa.so.0 " || missing+=(libegl-mesa0)
 has_lib "libGL.so.1 " || missing+=(libgl1)
-[ -e "$DRI_DIR/swrast_dri.so" ] || [ -e "$DRI_DIR/llvmpipe_dri.so" ] || missing+=(libgl1-mesa-dri)
-has_lib "libOSMesa.so" || missing+=(libosmesa6)
-if [ ${#missing[@]} -eq 0 ]; then
+has_dri || missing+=(libgl1-mesa-dri)
+want="apt-get install ${missing[*]}"
+
+if ! command -v apt-get >/dev/null 2>&1; then
+  note "no offscreen OpenGL found and no apt-get here: install Mesa's EGL ($PACKAGES)"
   exit 0
 fi
-
-# The installed Mesa version, from the first Mesa package installed (empty: none yet).
-mesa_version=""
-for pkg in $MESA_PACKAGES; do
-  status=$(dpkg-query -W -f='${Status} ${Version}' "$pkg" 2>/dev/null || true)
-  if [[ "$status" == "install ok installed "* ]]; then
-    mesa_version="${status#install ok installed }"
-    break
-  fi
-done
-request=()
-for pkg in "${missing[@]}"; do
-  if [ -n "$mesa_version" ] && [[ " $MESA_PACKAGES " == *" $pkg "* ]]; then
-    request+=("$pkg=$mesa_version")
+SUDO=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    SUDO=(sudo -n)
   else
-    request+=("$pkg")
+    note "no offscreen OpenGL found and no root here: ask for '$want'"
+    exit 0
   fi
-done
-
-SUDO=""
-[ "$(id -u)" -eq 0 ] || SUDO="sudo"
-echo "installing system packages: ${request[*]}"
-$SUDO apt-get update -qq
+fi
+echo "installing system packages: ${missing[*]}"
+"${SUDO[@]}" apt-get update -qq >/dev/null 2>&1 || true
 options=(--no-upgrade --no-install-recommends)
-if ! plan=$(apt-get -s install "${options[@]}" "${request[@]}" 2>&1); then
-  echo "error: apt cannot install ${request[*]} without changing installed packages:" >&2
-  echo "$plan" | tail -n 5 >&2
-  exit 1
+if ! plan=$(apt-get -s install "${options[@]}" "${missing[@]}" 2>&1); then
+  note "apt cannot install ${missing[*]} here ($(echo "$plan" | grep -m1 '^E:' || echo "$plan" | tail -n 1))"
+  exit 0
 fi
 # "Inst pkg [installed version] (new version ...)" is an upgrade; "Remv pkg" a removal.
 changed=$(echo "$plan" | awk '/^Inst / && $3 ~ /^\[/ {print $2} /^Remv / {print $2}' | sort -u | tr '\n' ' ')
 if [ -n "$changed" ]; then
-  echo "error: installing ${request[*]} would upgrade or remove installed packages: " \
-       "${changed% }; install them by hand if that is wanted" >&2
-  exit 1
+  note "installing ${missing[*]} would upgrade or remove ${changed% }; not done (run '$want' if that is wanted)"
+  exit 0
 fi
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${options[@]}" "${request[@]}"
+if ! DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get install -y -qq "${options[@]}" \
+     "${missing[@]}" >/dev/null 2>&1; then
+  note "apt-get install ${missing[*]} failed"
+fi
+exit 0
