@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-import os
-
-# Offscreen rendering in tests goes through EGL; MuJoCo reads this when first imported.
-os.environ.setdefault("MUJOCO_GL", "egl")
-
+# isort: off
+# wmr_mujoco chooses the OpenGL backend (wmr_mujoco.gl_env) before MuJoCo reads MUJOCO_GL.
+import wmr_mujoco  # noqa: F401
 import mujoco
+# isort: on
 import numpy as np
 import pytest
 
@@ -38,3 +37,40 @@ def model_differences(a: mujoco.MjModel, b: mujoco.MjModel, rtol: float = 1e-10)
 @pytest.fixture
 def rng() -> np.random.Generator:
     return np.random.default_rng(12345)
+
+
+def _drawing_problem() -> str | None:
+    """Why nothing can be drawn here (None: an offscreen backend renders)."""
+    from wmr_mujoco.render.gl_backend import RenderingUnavailableError, select_backend
+
+    try:
+        select_backend()
+    except RenderingUnavailableError as err:
+        return str(err)
+    return None
+
+
+def pytest_collection_modifyitems(config, items):
+    """Skip the tests that draw (marked ``gl``) where no OpenGL backend exists, saying why."""
+    drawing = [item for item in items if item.get_closest_marker("gl")]
+    if not drawing:
+        return
+    problem = _drawing_problem()
+    config.stash[_GL_PROBLEM] = problem
+    if problem is None:
+        return
+    skip = pytest.mark.skip(reason=f"no OpenGL backend: {problem}")
+    for item in drawing:
+        item.add_marker(skip)
+
+
+_GL_PROBLEM = pytest.StashKey[str | None]()
+
+
+def pytest_report_collectionfinish(config, start_path, items):
+    """One line when the drawing tests are skipped."""
+    problem = config.stash.get(_GL_PROBLEM, None)
+    if problem:
+        n = sum(1 for item in items if item.get_closest_marker("gl"))
+        return f"drawing tests: {n} skipped, no OpenGL backend here ({problem})"
+    return None

@@ -46,6 +46,7 @@ def _interrupt(argv: list[str], cwd: Path, ready: Callable[[], bool], sig: int
         proc.wait()
 
 
+@pytest.mark.gl
 @pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
     # A clip far longer than the test waits: the signal always arrives mid-render. The

@@ -26,6 +26,7 @@ def _run(args, cwd, env, timeout=120):
 
 
 @pytest.mark.wheel
+@pytest.mark.gl
 def test_wheel_installs_and_runs_from_an_unrelated_folder(tmp_path):
     source = tmp_path / "source"
     shutil.copytree(REPO, source, ignore=shutil.ignore_patterns(

@@ -6,19 +6,21 @@ The usual start: ``wmr.simulate(robot, inputs, duration)`` (MuJoCo),
 
 Importing the package does not import MuJoCo: the public names below load lazily, so
 that :mod:`wmr_mujoco.render.gl_backend` can still choose the OpenGL backend (EGL, else
-OSMesa) before MuJoCo reads ``MUJOCO_GL``.
+OSMesa) before MuJoCo reads ``MUJOCO_GL``; :mod:`wmr_mujoco.gl_env` first makes sure that
+a missing backend breaks only drawing, never the import of MuJoCo or dm_control.
 """
 
 from __future__ import annotations
 
 import importlib
-import os
 from typing import Any
 
+from wmr_mujoco import gl_env
+
+#: The OpenGL backend chosen for this process (``MUJOCO_GL``), or why none can load.
+GL: gl_env.GLChoice = gl_env.configure()
 #: ``MUJOCO_GL`` as the user set it before importing this package (None if unset).
-USER_MUJOCO_GL: str | None = os.environ.get("MUJOCO_GL")
-# Offscreen rendering goes through EGL unless the user chose otherwise.
-os.environ.setdefault("MUJOCO_GL", "egl")
+USER_MUJOCO_GL: str | None = GL.requested
 
 __version__ = "0.1.0"
 
@@ -47,6 +49,11 @@ _LAZY = {
 }
 
 __all__ = sorted(_LAZY)
+
+
+def __dir__() -> list[str]:
+    """The public names (loaded lazily) beside the module's own, for ``dir`` and completion."""
+    return sorted({*globals(), *_LAZY})
 
 
 def __getattr__(name: str) -> Any:

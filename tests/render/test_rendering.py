@@ -15,6 +15,8 @@ from wmr_mujoco.render.rendering import (
     write_media,
 )
 
+pytestmark = pytest.mark.gl
+
 XML = """
 <mujoco>
   <worldbody>

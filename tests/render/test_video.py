@@ -6,6 +6,8 @@ import pytest
 
 from wmr_mujoco.render.video import pick_scenario, render_scenario, render_to_file
 
+pytestmark = pytest.mark.gl
+
 
 def _decode(path):
     """Decode with imageio-ffmpeg's reader (mediapy.read_video needs an older ffmpeg)."""

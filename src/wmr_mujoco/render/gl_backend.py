@@ -13,6 +13,7 @@ import subprocess
 import sys
 
 import wmr_mujoco
+from wmr_mujoco.gl_env import DISABLED
 
 #: Backends tried, in order, when the user has not set ``MUJOCO_GL``.
 BACKENDS = ("egl", "osmesa")
@@ -58,6 +59,11 @@ def probe(backend: str, timeout: float = 60.0) -> str | None:
     return lines[-1] if lines else f"exit code {proc.returncode}"
 
 
+def mujoco_imported() -> bool:
+    """Whether MuJoCo is imported in this process (then its backend is fixed)."""
+    return "mujoco" in sys.modules
+
+
 def select_backend() -> str:
     """Make sure offscreen rendering can start; return the backend in use.
 
@@ -66,11 +72,18 @@ def select_backend() -> str:
     that renders.
 
     Raises:
-        RenderingUnavailableError: no backend works; the message says what to install.
+        RenderingUnavailableError: no backend works, or the one the user set cannot load
+            (:mod:`wmr_mujoco.gl_env`); the message says what to install.
     """
+    choice = wmr_mujoco.GL
+    if choice.requested is not None and choice.problem is not None:
+        raise RenderingUnavailableError(choice.problem)
     chosen = wmr_mujoco.USER_MUJOCO_GL
-    if chosen is None and "mujoco" in sys.modules:
+    if chosen is None and mujoco_imported():
         chosen = os.environ.get("MUJOCO_GL", "egl")
+        if chosen in DISABLED:
+            raise RenderingUnavailableError(
+                f"{INSTALL_HINT} ({choice.problem or 'MUJOCO_GL=' + chosen})")
     if chosen is not None:
         return chosen
     errors = []
