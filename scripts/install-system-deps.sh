@@ -18,7 +18,9 @@ PACKAGES="libegl1 libegl-mesa0 libgl1 libgl1-mesa-dri"
 note() { echo "note: $*; rendering (wmr render, the clips and pictures) needs it," \
               "everything else works without it" >&2; }
 
-libraries=$(ldconfig -p 2>/dev/null || true)
+# ldconfig lives in /sbin, off an ordinary user's PATH.
+libraries=$( { command -v ldconfig >/dev/null 2>&1 && ldconfig -p; } 2>/dev/null \
+             || /sbin/ldconfig -p 2>/dev/null || true)
 has_lib() { grep -qF -- "$1" <<< "$libraries"; }
 has_dri() { [ -e "$DRI_DIR/swrast_dri.so" ] || [ -e "$DRI_DIR/llvmpipe_dri.so" ]; }
 # A usable offscreen stack: EGL with a vendor (Mesa with its software driver, or
