@@ -103,3 +103,11 @@ def test_trajectory_names_its_components():
     model = wmr.predict("disc", [0.5, 0.0], 0.5)
     with pytest.raises(KeyError, match="the components are x, y, heading"):
         model["speed"]
+
+
+def test_dir_lists_the_public_names_for_completion():
+    import wmr_mujoco
+
+    shown = dir(wmr_mujoco)
+    assert {"simulate", "predict", "compare", "load", "Trajectory"} <= set(shown)
+    assert "importlib" not in shown and "Any" not in shown

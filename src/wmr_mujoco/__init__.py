@@ -53,7 +53,7 @@ __all__ = sorted(_LAZY)
 
 def __dir__() -> list[str]:
     """The public names (loaded lazily) beside the module's own, for ``dir`` and completion."""
-    return sorted({*globals(), *_LAZY})
+    return sorted({*_LAZY, "GL", "USER_MUJOCO_GL", "__version__"})
 
 
 def __getattr__(name: str) -> Any:
