@@ -202,3 +202,22 @@ def test_a_dimensionless_value_prints_no_unit():
     assert text_table(res).splitlines()[-1].split()[4:8] == ["0.7686", "≤", "1", "pass"]
     assert "| lean ratio | 0.7686 | ≤ 1 |" in markdown_table(res)
     assert "| lean ratio: 0.7686 |" in summary_table(res)
+
+
+def test_no_basis_of_a_target_cites_an_internal_issue_number():
+    """The report's basis column is read by people outside the project: it says what is
+    asked and why ("issue 16" means nothing to them)."""
+    import importlib
+    import pkgutil
+    import re
+
+    import wmr_mujoco.robots as robots
+    from wmr_mujoco.validation.metrics import Target
+
+    labels = {t.label for spec in robots.ROBOTS.values() for t in spec.targets.values()}
+    for info in pkgutil.walk_packages(robots.__path__, "wmr_mujoco.robots."):
+        module = vars(importlib.import_module(info.name))  # module-level targets too
+        labels |= {t.label for t in module.values() if isinstance(t, Target)}
+        labels |= {str(v) for k, v in module.items() if k == "SOURCE"}
+    assert len(labels) > 20
+    assert not [x for x in labels if re.search(r"\bissues? \d", x)]
