@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
+from dm_control import mjcf
 
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
@@ -300,12 +301,41 @@ def compare(robot: str, inputs: Sequence[Input], duration: float,
     return Comparison(_sim_trajectory(prep, states), _model_trajectory(prep), rows)
 
 
+def attach(arena: mjcf.RootElement, robot: str, pos: Sequence[float] = (0.0, 0.0, 0.0),
+           quat: Sequence[float] | None = None, params: RobotParams | None = None,
+           floor: str | None = None) -> mjcf.Element:
+    """Attach a registered robot to a dm_control ``mjcf`` arena; return the frame.
+
+    ``arena.attach(mjcf.from_path("models/omni3/omni3.xml"))`` fails on the robot's free
+    joint and drops the contact pairs its scene adds; this loads the robot file (built
+    from ``params`` if given), moves the free joint to the frame and adds the pairs
+    against the arena's floor (:func:`~wmr_mujoco.models.attach.attach_robot`). Names
+    inside the arena are prefixed with the robot's (``"omni3/wheel1"``).
+
+    Raises:
+        ValueError: unknown robot, a foreign model file, or the arena's floor not found.
+    """
+    from wmr_mujoco.models.attach import attach_robot
+
+    spec = get_spec(robot)
+    if spec.build is None or spec.params_type is None:
+        raise ValueError(f"robot {spec.name!r} is a model file without a robot-only file; "
+                         "attach it with arena.attach(mjcf.from_path(...)) yourself")
+    chosen = params if params is not None else spec.params_type()
+    if params is None and spec.folder is not None:
+        root = mjcf.from_path(str(spec.robot_path))
+    else:
+        root = spec.build(chosen)
+    return attach_robot(arena, root, pos, quat, spec.scene_extras, chosen, floor)
+
+
 __all__ = [
     "MAX_MEMORY",
     "Comparison",
     "Input",
     "InputClippedWarning",
     "Trajectory",
+    "attach",
     "compare",
     "predict",
     "simulate",
