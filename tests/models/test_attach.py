@@ -82,3 +82,24 @@ def test_a_position_and_a_named_floor():
     mujoco.mj_forward(model, data)
     np.testing.assert_allclose(data.site_xpos[model.site("mecanum4/base").id][:2], (1, 2),
                                atol=1e-9)
+
+
+def test_the_composition_docs_example_runs(monkeypatch):
+    """docs/composition.md's example, executed as printed: the mecanum robot compiles in
+    the arena at its position, with its wheel actuator found by its prefixed name."""
+    import re
+    from pathlib import Path
+
+    import wmr_mujoco
+
+    doc = Path(__file__).resolve().parents[2] / "docs" / "composition.md"
+    block = re.findall(r"```python\n(.*?)```", doc.read_text(), flags=re.DOTALL)[0]
+    # ``wmr_mujoco.attach`` is the lazy export of ``api.attach`` (the package's __init__).
+    monkeypatch.setattr(wmr_mujoco, "attach", attach, raising=False)
+    scope: dict[str, object] = {}
+    exec(compile(block, str(doc), "exec"), scope)
+    model, data = scope["model"], scope["data"]
+    assert data.ctrl[model.actuator("mecanum4/wheel_fl").id] == 10.0
+    mujoco.mj_forward(model, data)
+    np.testing.assert_allclose(data.site_xpos[model.site("mecanum4/base").id][:2], (1, 0),
+                               atol=1e-9)
