@@ -64,5 +64,8 @@ def match_name(value: object, names: Sequence[str], what: str, missing: str = ""
         raise ValueError(f"{what} {value!r} is ambiguous: it begins "
                          f"{', '.join(map(repr, starts))}; give more of the name")
     near = difflib.get_close_matches(typed, list(loose), n=3, cutoff=0.6)
-    hint = f"did you mean {' or '.join(repr(loose[k]) for k in near)}? " if near else ""
+    shown = [repr(loose[k]) for k in near]
+    if len(shown) > 1:
+        shown = [", ".join(shown[:-1]), shown[-1]]
+    hint = f"did you mean {' or '.join(shown)}? " if shown else ""
     raise ValueError(f"{missing}; {hint}{valid}")

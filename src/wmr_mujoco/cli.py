@@ -33,8 +33,12 @@ EXIT_BROKEN_PIPE = 141
 
 
 def looks_like_file(name: str) -> bool:
-    """Whether a command-line name means a model file: an ``.xml`` (any case) or a path."""
-    return Path(name).suffix.lower() == ".xml" or os.sep in name or Path(name).exists()
+    """Whether a command-line name means a model file rather than a robot.
+
+    An ``.xml`` name (any case), a path with a folder in it, or an existing file; a
+    folder named like a robot is not one.
+    """
+    return Path(name).suffix.lower() == ".xml" or os.sep in name or Path(name).is_file()
 
 
 def _robots_only(command: str, names: Sequence[str], why: str) -> None:

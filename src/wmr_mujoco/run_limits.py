@@ -132,5 +132,5 @@ def warn_clipped(prep: Prepared) -> None:
         robot = prep.scenario.robot
         warnings.warn(f"{robot}: inputs beyond the actuators' limits: {'; '.join(lines)}. "
                       "MuJoCo clips these controls and the analytic model does not, so the "
-                      f"two part (the limits: `wmr info {robot}`)",
+                      f"physics falls behind the model (the limits: `wmr info {robot}`)",
                       InputClippedWarning, stacklevel=4)
