@@ -206,3 +206,10 @@ def test_a_full_disk_is_one_line_and_exit_5(tmp_path, monkeypatch, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"wmr: I/O error: No space left on device: {tmp_path / 'r'}"
                    "/validation.json"]
+
+
+def test_a_folder_named_like_a_robot_does_not_make_it_a_file(tmp_path, monkeypatch, capsys):
+    (tmp_path / "disc").mkdir()
+    monkeypatch.chdir(tmp_path)
+    assert main(["info", "disc"]) == 0
+    assert capsys.readouterr().out.startswith("disc: ")
