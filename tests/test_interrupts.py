@@ -118,3 +118,14 @@ def test_a_reader_that_goes_away_ends_the_output_quietly(tmp_path):
     finally:
         os.close(write)
     assert (proc.returncode, proc.stderr) == (141, "")
+
+
+def test_validate_interrupted_from_a_terminal_leaves_no_file(tmp_path):
+    """Ctrl-C to the whole process group: the worker processes get it too."""
+    out = tmp_path / "report"
+    returncode, err = _interrupt(
+        ["validate", "whipple", "disc_free", "--out", str(out), "--quiet"], tmp_path,
+        lambda: bool(list(out.glob(".plots-*/*"))), signal.SIGINT, group=True)
+    assert returncode == 130, err
+    assert err.strip().splitlines()[-1] == "wmr validate: interrupted; nothing written"
+    assert list(tmp_path.iterdir()) == []
