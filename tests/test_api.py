@@ -194,3 +194,11 @@ def test_a_numpy_array_of_constants_is_an_input():
 
 def test_a_robot_name_in_any_case_is_the_robot():
     assert wmr.predict("OMNI3", [0.2, 0.0, 0.0], 0.1).state_names == ("x", "y", "heading")
+
+
+def test_a_settle_longer_than_the_cap_allows_is_refused_first(monkeypatch):
+    _never_stepped(monkeypatch)
+    monkeypatch.delenv("WMR_MAX_MEMORY", raising=False)
+    with pytest.raises(ValueError, match=r"settle = 1e\+09 s is longer than the longest run "
+                                         r"the memory cap allows"):
+        wmr.predict("disc", [0.1, 0.0], 1.0, settle=1e9)

@@ -67,6 +67,9 @@ def check_steps(s: Scenario, model: mujoco.MjModel, adapter: Adapter,
                  max_memory: float | None) -> None:
     """Refuse a run shorter than a step or whose trajectory would not fit the cap.
 
+    The settle keeps no trajectory, but may not step longer than the longest run the cap
+    allows (a settle of 1e9 s would step for days).
+
     Per step a run keeps the physics state twice (the rollout's output and its copy),
     the input, the controls and the analytic and measured states (8 bytes each), plus
     about 400 bytes of Python objects of the schedule.
@@ -92,6 +95,11 @@ def check_steps(s: Scenario, model: mujoco.MjModel, adapter: Adapter,
             f"{_size(cap)} (at most {cap / per_step * dt:.3g} s of {s.robot}); shorten the "
             "run, or raise the cap with max_memory=BYTES or the environment variable "
             "WMR_MAX_MEMORY (e.g. WMR_MAX_MEMORY=8G)")
+    longest = cap / per_step * dt
+    if s.settle > longest:  # kept nothing, but would step as long as that run (hours)
+        raise ValueError(f"settle = {s.settle:g} s is longer than the longest run the memory "
+                         f"cap allows ({longest:.3g} s of {s.robot}); settle for less, or "
+                         "raise the cap (max_memory=BYTES or WMR_MAX_MEMORY)")
 
 
 def check_frame(s: Scenario, adapter: Adapter) -> None:
