@@ -85,6 +85,7 @@ def test_interrupted_validate_leaves_no_file(tmp_path, sig, code):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.gl
 @pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_render_interrupted_from_a_terminal_leaves_no_file(tmp_path, sig, code):
     """A terminal's Ctrl-C goes to the whole process group: ffmpeg dies of it too, and
