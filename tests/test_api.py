@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import wmr_mujoco as wmr
+import wmr_mujoco.api
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 
@@ -111,3 +112,99 @@ def test_dir_lists_the_public_names_for_completion():
     shown = dir(wmr_mujoco)
     assert {"simulate", "predict", "compare", "load", "Trajectory"} <= set(shown)
     assert "importlib" not in shown and "Any" not in shown
+def _never_stepped(monkeypatch):
+    import mujoco
+
+    def stepped(*args):
+        raise AssertionError("simulated before the arguments were checked")
+
+    monkeypatch.setattr(mujoco, "mj_step", stepped)
+
+
+def test_a_run_too_long_for_memory_is_refused_first_naming_the_cap(monkeypatch):
+    """``simulate("omni3", u, 1e9)``: 1e12 steps of 1 ms, far over any memory; refused
+    before anything is stepped, with the cap and how to raise it."""
+    _never_stepped(monkeypatch)
+    monkeypatch.delenv("WMR_MAX_MEMORY", raising=False)
+    for call in (wmr.simulate, wmr.predict, wmr.compare):
+        with pytest.raises(ValueError, match=r"duration = 1e\+09 s is 1e\+12 steps of "
+                           r"0.001 s: .* over the memory cap of 2 GiB .* max_memory=BYTES "
+                           r"or the environment variable WMR_MAX_MEMORY"):
+            call("omni3", [0.2, 0, 0], 1e9)
+
+
+def test_the_memory_cap_is_raised_or_lowered_by_argument_or_environment(monkeypatch):
+    # 0.1 s of disc is 50 steps of 2 ms; each keeps at least its 12-number physics state
+    # twice (192 bytes): 1 KiB is far too little, 10 MiB is plenty.
+    with pytest.raises(ValueError, match=r"over the memory cap of 1000 B"):
+        wmr.predict("disc", [0.1, 0.0], 0.1, max_memory=1000)
+    monkeypatch.setenv("WMR_MAX_MEMORY", "1K")
+    with pytest.raises(ValueError, match=r"over the memory cap of 1 KiB"):
+        wmr.predict("disc", [0.1, 0.0], 0.1)
+    assert len(wmr.predict("disc", [0.1, 0.0], 0.1, max_memory=10 * 2**20).time) == 51
+    monkeypatch.setenv("WMR_MAX_MEMORY", "lots")
+    with pytest.raises(ValueError, match=r"WMR_MAX_MEMORY = 'lots'; give a number of bytes"):
+        wmr.predict("disc", [0.1, 0.0], 0.1)
+
+
+def test_a_duration_under_one_timestep_is_named(monkeypatch):
+    _never_stepped(monkeypatch)
+    with pytest.raises(ValueError, match=r"duration = 1e-09 s is shorter than one timestep "
+                                         r"of omni3 \(0.001 s\); give at least 0.001 s"):
+        wmr.compare("omni3", [0.2, 0, 0], 1e-9)
+
+
+def test_world_frame_for_a_robot_without_world_rates_is_an_error(monkeypatch):
+    _never_stepped(monkeypatch)
+    with pytest.raises(ValueError, match=r"world_frame=True: diffdrive's kinematic inputs are "
+                                         r"its own rates, never world rates; robots whose "
+                                         r"inputs can be world rates: omni3"):
+        wmr.simulate("diffdrive", [0.2, 0.0], 1.0, world_frame=True)
+
+
+def test_inputs_beyond_the_actuators_limits_warn_once_naming_them():
+    """u = 5 m/s along x: omni3's wheels sit at 0°, 120° and 240° around the centre, each
+    rolling tangentially, so wheels 2 and 3 turn at |sin 120°| u / R = 0.866 · 5 / 0.05 =
+    86.6 rad/s; their servo's ctrlrange is ±60 rad/s (``wmr info omni3``), wheel 1 at 0."""
+    with pytest.warns(wmr.api.InputClippedWarning) as caught:
+        wmr.simulate("omni3", [5.0, 0.0, 0.0], 0.01, settle=0.0)
+    assert len(caught) == 1
+    text = str(caught[0].message)
+    assert "actuator 'wheel2' asked for -86.6 (inputs (5, 0, 0) at t = 0 s), beyond its " \
+           "ctrlrange [-60, 60]" in text
+    assert "'wheel3' asked for 86.6" in text and "'wheel1'" not in text
+
+
+def test_inputs_within_the_limits_do_not_warn(recwarn):
+    wmr.simulate("omni3", [0.2, 0.0, 0.0], 0.01, settle=0.0)
+    assert not [w for w in recwarn if issubclass(w.category, wmr.api.InputClippedWarning)]
+
+
+def test_an_input_function_that_raises_is_named_with_its_channel_and_time(monkeypatch):
+    with pytest.raises(ValueError, match=r"inputs\[1\] raised ZeroDivisionError: float "
+                                         r"division by zero at t = 0.2 s"):
+        wmr.predict("omni3", [0.2, lambda t: 1.0 / (t - 0.2), 0.0], 0.5)
+    _never_stepped(monkeypatch)  # one that fails at once fails before any work
+    with pytest.raises(ValueError, match=r"inputs\[2\]\(0\) returned 'x'; an input function "
+                                         r"must return a finite real number"):
+        wmr.simulate("omni3", [0.2, 0.0, lambda t: "x"], 0.5)
+
+
+def test_a_numpy_array_of_constants_is_an_input():
+    np.testing.assert_array_equal(
+        wmr.predict("omni3", np.array([0.2, 0.0, 0.1]), 0.2).inputs,
+        wmr.predict("omni3", [0.2, 0.0, 0.1], 0.2).inputs)
+    assert wmr.predict("omni3", [np.float32(0.2), np.int64(0), 0.1], 0.2).inputs[0, 0] == (
+        pytest.approx(0.2))
+
+
+def test_a_robot_name_in_any_case_is_the_robot():
+    assert wmr.predict("OMNI3", [0.2, 0.0, 0.0], 0.1).state_names == ("x", "y", "heading")
+
+
+def test_a_settle_longer_than_the_cap_allows_is_refused_first(monkeypatch):
+    _never_stepped(monkeypatch)
+    monkeypatch.delenv("WMR_MAX_MEMORY", raising=False)
+    with pytest.raises(ValueError, match=r"settle = 1e\+09 s is longer than the longest run "
+                                         r"the memory cap allows"):
+        wmr.predict("disc", [0.1, 0.0], 1.0, settle=1e9)

@@ -21,9 +21,11 @@ def _default_sigint() -> None:
     signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
-def _interrupt(argv: list[str], cwd: Path, ready: Callable[[], bool], sig: int
-               ) -> tuple[int, str]:
+def _interrupt(argv: list[str], cwd: Path, ready: Callable[[], bool], sig: int,
+               group: bool = False) -> tuple[int, str]:
     """Start ``wmr argv``, wait (≤ 60 s) until ``ready()``, send ``sig``; exit code, stderr.
+
+    ``group``: to the whole process group (``wmr`` and its helpers), as a terminal does.
 
     The child runs in its own session, which is killed whatever happens, so that a failed
     test leaves no process behind (a render of 600 s would otherwise run on).
@@ -37,7 +39,10 @@ def _interrupt(argv: list[str], cwd: Path, ready: Callable[[], bool], sig: int
         while not ready() and time.monotonic() < deadline:
             assert proc.poll() is None, proc.communicate()
             time.sleep(0.05)
-        proc.send_signal(sig)
+        if group:
+            os.killpg(proc.pid, sig)
+        else:
+            proc.send_signal(sig)
         _, err = proc.communicate(timeout=30)
         return proc.returncode, err
     finally:
@@ -78,4 +83,51 @@ def test_interrupted_validate_leaves_no_file(tmp_path, sig, code):
     assert returncode == code, err
     assert err.strip().splitlines()[-1] == (
         f"wmr validate: {'interrupted' if code == 130 else 'terminated'}; nothing written")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.gl
+@pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_render_interrupted_from_a_terminal_leaves_no_file(tmp_path, sig, code):
+    """A terminal's Ctrl-C goes to the whole process group: ffmpeg dies of it too, and
+    its failure (mediapy's RuntimeError) is the interrupt, not an error of its own."""
+    def ready() -> bool:
+        if list(tmp_path.glob(".clip.*.mp4")):
+            time.sleep(0.5)  # frames are flowing into ffmpeg
+            return True
+        return False
+
+    returncode, err = _interrupt(
+        ["render", "disc", "--out", str(tmp_path / "clip.mp4"), "--duration", "600",
+         "--hold", "--fps", "10", "--width", "64", "--height", "48", "--quiet"],
+        tmp_path, ready, sig, group=True)
+    assert returncode == code, err
+    assert err.strip().splitlines() == [
+        f"wmr render: {'interrupted' if code == 130 else 'terminated'}; nothing written"]
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_reader_that_goes_away_ends_the_output_quietly(tmp_path):
+    """``wmr info omni3 | head -1``: the pipe closes before wmr writes; exit 141, no
+    traceback (128 + SIGPIPE, what a shell reports for ``cat`` in the same place)."""
+    env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
+    read, write = os.pipe()
+    os.close(read)  # the reader is gone before wmr has imported anything
+    try:
+        proc = subprocess.run([sys.executable, "-m", "wmr_mujoco.cli", "info", "omni3"],
+                              stdout=write, stderr=subprocess.PIPE, text=True, env=env,
+                              cwd=tmp_path, timeout=120)
+    finally:
+        os.close(write)
+    assert (proc.returncode, proc.stderr) == (141, "")
+
+
+def test_validate_interrupted_from_a_terminal_leaves_no_file(tmp_path):
+    """Ctrl-C to the whole process group: the worker processes get it too."""
+    out = tmp_path / "report"
+    returncode, err = _interrupt(
+        ["validate", "whipple", "disc_free", "--out", str(out), "--quiet"], tmp_path,
+        lambda: bool(list(out.glob(".plots-*/*"))), signal.SIGINT, group=True)
+    assert returncode == 130, err
+    assert err.strip().splitlines()[-1] == "wmr validate: interrupted; nothing written"
     assert list(tmp_path.iterdir()) == []

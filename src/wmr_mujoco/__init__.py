@@ -37,6 +37,8 @@ _LAZY = {
     "simulate": "wmr_mujoco.api",
     "predict": "wmr_mujoco.api",
     "compare": "wmr_mujoco.api",
+    "attach": "wmr_mujoco.api",
+    "InputClippedWarning": "wmr_mujoco.api",
     "Trajectory": "wmr_mujoco.api",
     "Comparison": "wmr_mujoco.api",
     "base_pose": "wmr_mujoco.validation.adapters",

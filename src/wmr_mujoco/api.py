@@ -13,27 +13,43 @@ there is one engine, one adapter per robot and kind, one set of metrics. Inputs 
 lecture's, per robot and kind (``wmr scenarios ROBOT`` and ``docs/analytical.md``): for
 omni3 kinematic inputs, the body twist ``(u, v, r)`` in m/s, m/s, rad/s; with
 ``world_frame=True`` the world rates ``(Ẋ, Ẏ, ψ̇)``.
+
+Every argument is checked before anything is simulated: a run whose trajectory would
+not fit :data:`~wmr_mujoco.run_limits.MAX_MEMORY` (or ``max_memory``, or ``WMR_MAX_MEMORY``) is
+refused, and inputs that ask an actuator for more than its ``ctrlrange`` are simulated
+with an :class:`~wmr_mujoco.run_limits.InputClippedWarning` (MuJoCo clips the control,
+the analytic model does not); see :mod:`wmr_mujoco.run_limits`.
 """
 
 from __future__ import annotations
 
+import numbers
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
+from dm_control import mjcf
 
+from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots import get_spec
+from wmr_mujoco.run_limits import (
+    MAX_MEMORY,
+    InputClippedWarning,
+    check_frame,
+    check_steps,
+    warn_clipped,
+)
 from wmr_mujoco.sim.engine import STATE_SPEC, Engine
 from wmr_mujoco.sim.engine import simulate as run_engine
 from wmr_mujoco.validation.metrics import Row, Trace
-from wmr_mujoco.validation.runner import Prepared, measure, prepare
+from wmr_mujoco.validation.runner import Prepared, check_runnable, make_adapter, measure, prepare
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
 
 #: An input channel: a constant, or a function of the time after the settle (s).
 Input = float | Callable[[float], float]
-
 
 @dataclass(frozen=True)
 class Trajectory:
@@ -123,17 +139,52 @@ def _seconds(name: str, value: object, zero_ok: bool) -> float:
     return float(value)
 
 
+@dataclass(frozen=True)
+class _Channel:
+    """A user's input function, its failures named by channel and time."""
+
+    index: int
+    function: Callable[[float], float]
+
+    def __call__(self, t: float) -> float:
+        """``function(t)`` as a float.
+
+        Raises:
+            ValueError: the function raised, or returned no finite real number.
+        """
+        try:
+            value = self.function(t)
+        except Exception as err:
+            raise ValueError(f"inputs[{self.index}] raised {type(err).__name__}: {err} at "
+                             f"t = {t:g} s") from err
+        if not _is_number(value):
+            raise ValueError(f"inputs[{self.index}]({t:g}) returned {value!r}; an input "
+                             "function must return a finite real number")
+        return float(value)
+
+
+def _is_number(value: object) -> bool:
+    """A finite real number (a NumPy scalar or 0-d array too), not a bool."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value.item()
+    return (isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+            and bool(np.isfinite(value)))
+
+
 def _scenario(robot: str, inputs: Sequence[Input], duration: float, kind: ScenarioKind | str,
               settle: float, world_frame: bool) -> Scenario:
+    if isinstance(inputs, np.ndarray) and inputs.ndim == 1:
+        inputs = list(inputs)
     if isinstance(inputs, (str, bytes)) or not isinstance(inputs, Sequence):
         raise ValueError(f"inputs = {inputs!r}; give one number or function of time per "
-                         "input channel")
+                         "input channel (a list, a tuple or a 1-D NumPy array)")
     signals = []
     for i, u in enumerate(inputs):
-        if isinstance(u, (int, float)) and not isinstance(u, bool) and np.isfinite(u):
-            signals.append(const(float(u)))
+        if _is_number(u):
+            signals.append(const(float(u)))  # type: ignore[arg-type]
         elif callable(u):
-            signals.append(u)
+            signals.append(_Channel(i, u))
+            signals[-1](0.0)  # a function that fails fails now, before any work
         else:
             raise ValueError(f"inputs[{i}] = {u!r}; give a finite number or a function of "
                              "time (s) returning one")
@@ -143,8 +194,18 @@ def _scenario(robot: str, inputs: Sequence[Input], duration: float, kind: Scenar
 
 
 def _prepare(robot: str, inputs: Sequence[Input], duration: float, params: RobotParams | None,
-             kind: ScenarioKind | str, settle: float, world_frame: bool) -> Prepared:
-    return prepare(_scenario(robot, inputs, duration, kind, settle, world_frame), params)
+             kind: ScenarioKind | str, settle: float, world_frame: bool,
+             max_memory: float | None, physics: bool = True) -> Prepared:
+    """Check everything, then load, settle and schedule (warning of clipped inputs)."""
+    s = _scenario(get_spec(robot).name, inputs, duration, kind, settle, world_frame)
+    check_runnable(s)
+    model = load(s.robot, params)
+    check_frame(s, make_adapter(s, model, params))
+    check_steps(s, model, make_adapter(s, model, params), max_memory)
+    prep = prepare(s, params, model=model)
+    if physics:
+        warn_clipped(prep)
+    return prep
 
 
 def _model_trajectory(prep: Prepared) -> Trajectory:
@@ -169,7 +230,8 @@ def _sim_trajectory(prep: Prepared, states: np.ndarray) -> Trajectory:
 
 def simulate(robot: str, inputs: Sequence[Input], duration: float,
              params: RobotParams | None = None, *, kind: ScenarioKind | str = "kinematic",
-             settle: float = 0.5, world_frame: bool = False) -> Trajectory:
+             settle: float = 0.5, world_frame: bool = False,
+             max_memory: float | None = None) -> Trajectory:
     """Drive ``robot`` in MuJoCo with ``inputs`` for ``duration`` seconds.
 
     The robot first settles at rest for ``settle`` seconds; then at every step the input
@@ -183,22 +245,31 @@ def simulate(robot: str, inputs: Sequence[Input], duration: float,
         kind: ``"kinematic"`` (rates) or ``"dynamic"`` (torques).
         settle: seconds at rest first.
         world_frame: the inputs are world rates (robots whose adapter takes them).
+        max_memory: the largest trajectory allowed, bytes (None: ``WMR_MAX_MEMORY`` if
+            set, else :data:`~wmr_mujoco.run_limits.MAX_MEMORY`).
 
     Returns:
         The physics' trajectory at every step.
 
     Raises:
-        ValueError: unknown robot or kind, bad inputs, duration or params.
+        ValueError: unknown robot or kind; bad inputs (an input function that raises is
+            named with its channel and time), params, or duration (shorter than one
+            timestep, or a trajectory over the memory cap); ``world_frame`` for a robot
+            whose inputs are never world rates.
         SimulationDivergedError: the run diverged.
+
+    Warns:
+        InputClippedWarning: an input asks an actuator for more than its ``ctrlrange``.
     """
-    prep = _prepare(robot, inputs, duration, params, kind, settle, world_frame)
+    prep = _prepare(robot, inputs, duration, params, kind, settle, world_frame, max_memory)
     states = run_engine(prep.model, prep.data, prep.controls, Engine.ROLLOUT)
     return _sim_trajectory(prep, states)
 
 
 def predict(robot: str, inputs: Sequence[Input], duration: float,
             params: RobotParams | None = None, *, kind: ScenarioKind | str = "kinematic",
-            settle: float = 0.5, world_frame: bool = False) -> Trajectory:
+            settle: float = 0.5, world_frame: bool = False,
+            max_memory: float | None = None) -> Trajectory:
     """The analytic model's trajectory for the same arguments as :func:`simulate`.
 
     It starts from the state the physics settles into (read by the robot's adapter) and
@@ -208,19 +279,64 @@ def predict(robot: str, inputs: Sequence[Input], duration: float,
         ValueError: as :func:`simulate`.
     """
     return _model_trajectory(_prepare(robot, inputs, duration, params, kind, settle,
-                                      world_frame))
+                                      world_frame, max_memory, physics=False))
 
 
 def compare(robot: str, inputs: Sequence[Input], duration: float,
             params: RobotParams | None = None, *, kind: ScenarioKind | str = "kinematic",
-            settle: float = 0.5, world_frame: bool = False) -> Comparison:
+            settle: float = 0.5, world_frame: bool = False,
+            max_memory: float | None = None) -> Comparison:
     """:func:`simulate` and :func:`predict` in one run, judged as ``wmr validate`` judges.
 
     Raises:
         ValueError: as :func:`simulate`.
         SimulationDivergedError: the run diverged.
+
+    Warns:
+        InputClippedWarning: as :func:`simulate`.
     """
-    prep = _prepare(robot, inputs, duration, params, kind, settle, world_frame)
+    prep = _prepare(robot, inputs, duration, params, kind, settle, world_frame, max_memory)
     states = run_engine(prep.model, prep.data, prep.controls, Engine.ROLLOUT)
     rows = measure(prep, states, Trace())
     return Comparison(_sim_trajectory(prep, states), _model_trajectory(prep), rows)
+
+
+def attach(arena: mjcf.RootElement, robot: str, pos: Sequence[float] = (0.0, 0.0, 0.0),
+           quat: Sequence[float] | None = None, params: RobotParams | None = None,
+           floor: str | None = None) -> mjcf.Element:
+    """Attach a registered robot to a dm_control ``mjcf`` arena; return the frame.
+
+    ``arena.attach(mjcf.from_path("models/omni3/omni3.xml"))`` fails on the robot's free
+    joint and drops the contact pairs its scene adds; this loads the robot file (built
+    from ``params`` if given), moves the free joint to the frame and adds the pairs
+    against the arena's floor (:func:`~wmr_mujoco.models.attach.attach_robot`). Names
+    inside the arena are prefixed with the robot's (``"omni3/wheel1"``).
+
+    Raises:
+        ValueError: unknown robot, a foreign model file, or the arena's floor not found.
+    """
+    from wmr_mujoco.models.attach import attach_robot
+
+    spec = get_spec(robot)
+    if spec.build is None or spec.params_type is None:
+        raise ValueError(f"robot {spec.name!r} is a model file without a robot-only file; "
+                         "attach it with arena.attach(mjcf.from_path(...)) yourself")
+    chosen = params if params is not None else spec.params_type()
+    if params is None and spec.folder is not None:
+        root = mjcf.from_path(str(spec.robot_path))
+    else:
+        root = spec.build(chosen)
+    return attach_robot(arena, root, pos, quat, spec.scene_extras, chosen, floor)
+
+
+__all__ = [
+    "MAX_MEMORY",
+    "Comparison",
+    "Input",
+    "InputClippedWarning",
+    "Trajectory",
+    "attach",
+    "compare",
+    "predict",
+    "simulate",
+]

@@ -4,9 +4,12 @@ MuJoCo is imported only inside the commands, after :func:`gl_backend.select_back
 for the commands that render, so that EGL can fall back to OSMesa.
 
 Exit codes: 0 done; 1 a validation target missed or a simulation diverged; 2 bad input
-(checked before any work starts); 3 no OpenGL; 130 interrupted (Ctrl-C); 143 terminated
-(SIGTERM). An interrupted command prints one line and leaves no file behind (every
-output is written to a temporary file and renamed when complete).
+(checked before any work starts); 3 no OpenGL; 5 an input/output error (disk full, a
+folder that is not writable, the video encoder failing); 130 interrupted (Ctrl-C); 141
+the reader of the output went away (``wmr info omni3 | head -1``: the rest of the output
+is dropped quietly, as by ``cat``: 128 + SIGPIPE); 143 terminated (SIGTERM). An
+interrupted or failed command prints one line and leaves no file behind (every output is
+written to a temporary file and renamed when complete).
 
 Output locations, the same rule for every command: ``wmr`` writes into a folder that
 exists; ``wmr validate --out DIR`` creates ``DIR`` itself (not its parents), ``wmr
@@ -24,6 +27,30 @@ from pathlib import Path
 
 #: Commands that need an OpenGL context.
 RENDERING_COMMANDS = ("render", "bench")
+#: Exit codes (see the module docstring).
+EXIT_IO_ERROR = 5
+EXIT_BROKEN_PIPE = 141
+
+
+def looks_like_file(name: str) -> bool:
+    """Whether a command-line name means a model file rather than a robot.
+
+    An ``.xml`` name (any case), a path with a folder in it, or an existing file; a
+    folder named like a robot is not one.
+    """
+    return Path(name).suffix.lower() == ".xml" or os.sep in name or Path(name).is_file()
+
+
+def _robots_only(command: str, names: Sequence[str], why: str) -> None:
+    """Refuse model files where a command takes registered robots only.
+
+    Raises:
+        ValueError: one of ``names`` is a model file; the message says why and what to use.
+    """
+    for name in names:
+        if name and looks_like_file(name):
+            raise ValueError(f"wmr {command} takes robot names (see `wmr list`), not a model "
+                             f"file ({name}): {why}; `wmr info {name}` describes the file")
 
 
 def _cmd_list(_: argparse.Namespace) -> int:
@@ -54,12 +81,15 @@ def _cmd_scenarios(args: argparse.Namespace) -> int:
 def _cmd_info(args: argparse.Namespace) -> int:
     from wmr_mujoco.info import describe, describe_file
 
-    path = Path(args.robot)
-    print(describe_file(path) if path.suffix == ".xml" else describe(args.robot))
+    print(describe_file(Path(args.robot)) if looks_like_file(args.robot)
+          else describe(args.robot))
     return 0
 
 
-def _cmd_demo(_: argparse.Namespace) -> int:
+def _cmd_demo(args: argparse.Namespace) -> int:
+    if not args.quick:  # the main job, as `make demo`: the full validation and its report
+        return _cmd_validate(argparse.Namespace(robots=[], scenario=None, out=args.out,
+                                                quiet=args.quiet, all_metrics=False))
     from wmr_mujoco.demo import run_demo
 
     print(run_demo())
@@ -67,6 +97,7 @@ def _cmd_demo(_: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
+    from wmr_mujoco.choices import match_name
     from wmr_mujoco.progress import bar, shown
     from wmr_mujoco.validation.pool import ValidationPool
     from wmr_mujoco.validation.report import (
@@ -78,16 +109,16 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     from wmr_mujoco.validation.runner import run_all
     from wmr_mujoco.validation.scenarios import scenarios_for
 
+    _robots_only("validate", args.robots, "a model file has no analytic model or scenarios "
+                 "to validate against")
     check_report_folder(args.out)
     scenarios = scenarios_for(args.robots or None)
     if args.scenario:
-        names = [s.name for s in scenarios]
-        unknown = [n for n in args.scenario if n not in names]
-        if unknown:
-            where = ", ".join(args.robots) or "any robot"
-            raise ValueError(f"no scenario {unknown[0]!r} for {where}; valid: "
-                             f"{', '.join(repr(n) for n in dict.fromkeys(names))}")
-        scenarios = [s for s in scenarios if s.name in args.scenario]
+        names = list(dict.fromkeys(s.name for s in scenarios))
+        where = ", ".join(args.robots) or "any robot"
+        chosen = {match_name(n, names, "scenario", f"no scenario {n!r} for {where}",
+                             f"valid: {', '.join(map(repr, names))}") for n in args.scenario}
+        scenarios = [s for s in scenarios if s.name in chosen]
     progress_bar = bar(len(scenarios), "wmr validate", unit="scenario")
 
     def progress(msg: str) -> None:
@@ -120,6 +151,8 @@ def _cmd_render(args: argparse.Namespace) -> int:
     from wmr_mujoco.render.video import render_clips, render_to_file
 
     backend = os.environ.get("MUJOCO_GL")
+    _robots_only("render", args.robots, "a model file has no scenarios to film (`python -m "
+                 "mujoco.viewer --mjcf FILE` opens it in MuJoCo's viewer)")
     if args.all:
         clip_options = {"--scenario": args.scenario, "--duration": args.duration,
                         "--hold": args.hold or None}
@@ -161,19 +194,29 @@ def _cmd_bench(args: argparse.Namespace) -> int:
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``wmr``."""
+    from wmr_mujoco import __version__
+
     parser = argparse.ArgumentParser(
         prog="wmr", description="Wheeled mobile robots in MuJoCo beside their textbook models.")
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     sub.add_parser("list", help="list the robots").set_defaults(func=_cmd_list)
     scen = sub.add_parser("scenarios", help="list the validation scenarios, one line each")
     scen.add_argument("robot", nargs="?", help="a robot name (default: every robot)")
     scen.set_defaults(func=_cmd_scenarios)
     info = sub.add_parser("info", help="parameters, joints, actuators, mass, DoF, timestep")
-    info.add_argument("robot", help="a robot name (see `wmr list`) or an MJCF scene file "
-                                    "(.xml, with its floor)")
+    info.add_argument("robot", help="a robot name (see `wmr list`; any case, a unique "
+                      "prefix) or an MJCF scene file (.xml in any case, or any path)")
     info.set_defaults(func=_cmd_info)
-    sub.add_parser("demo", help="simulate a short manoeuvre of each robot").set_defaults(
-        func=_cmd_demo)
+    demo = sub.add_parser("demo", help="the main job, as `make demo`: every scenario "
+                          "validated, its table printed, its report written (--quick: one "
+                          "scenario per robot, summarised)")
+    demo.add_argument("--quick", action="store_true",
+                      help="one short scenario per robot, summarised; nothing written")
+    demo.add_argument("--out", type=Path, default=Path("reports"),
+                      help="report folder, as `wmr validate --out` (default: reports)")
+    demo.add_argument("-q", "--quiet", action="store_true", help="no progress output")
+    demo.set_defaults(func=_cmd_demo)
     val = sub.add_parser("validate", help="compare MuJoCo with the analytic models; "
                          "exit 1 if a target is missed")
     val.add_argument("robots", nargs="*", help="robots to validate (default: all)")
@@ -240,15 +283,43 @@ def main(argv: Sequence[str] | None = None) -> int:
     configure(getattr(args, "quiet", False))
     previous = signal.signal(signal.SIGTERM, _raise_terminated)
     try:
-        return _run(args)
+        code = _run(args)
+        sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
+        return code
     except KeyboardInterrupt:
         print(f"wmr {args.command}: interrupted; nothing written", file=sys.stderr)
         return 130
     except Terminated:
         print(f"wmr {args.command}: terminated; nothing written", file=sys.stderr)
         return 143
+    except BrokenPipeError:
+        # The reader went away (``| head``): drop the rest of the output quietly; stdout
+        # points at /dev/null so that the interpreter's last flush does not fail again.
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+        return EXIT_BROKEN_PIPE
     finally:
         signal.signal(signal.SIGTERM, previous)
+
+
+def _interrupt_behind(err: BaseException) -> BaseException | None:
+    """The interrupt (Ctrl-C, SIGTERM) that ``err`` was raised while handling, if any.
+
+    A terminal's Ctrl-C reaches the whole process group: a helper process (ffmpeg) dies
+    of it too, and the error of its death replaces the interrupt while the stack unwinds.
+    """
+    seen: set[int] = set()
+    todo: list[BaseException | None] = [err.__cause__, err.__context__]
+    while todo:
+        e = todo.pop()
+        if e is None or id(e) in seen:
+            continue
+        seen.add(id(e))
+        if isinstance(e, (KeyboardInterrupt, Terminated)):
+            return e
+        todo += [e.__cause__, e.__context__]
+    return None
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -258,20 +329,35 @@ def _run(args: argparse.Namespace) -> int:
 
             select_backend()
         return args.func(args)
-    except (ValueError, FileNotFoundError) as err:
+    except BrokenPipeError:
+        raise
+    except Exception as err:
+        interrupt = _interrupt_behind(err)
+        if interrupt is not None:
+            raise interrupt from None
+        return _report_error(err)
+
+
+def _report_error(err: Exception) -> int:
+    """One line on stderr for an expected failure and its exit code; raise the others."""
+    from wmr_mujoco.render.gl_backend import RenderingUnavailableError
+    from wmr_mujoco.sim.stepping import SimulationDivergedError
+
+    if isinstance(err, (ValueError, FileNotFoundError)):
         print(f"wmr: error: {err}", file=sys.stderr)
         return 2
-    except Exception as err:
-        from wmr_mujoco.render.gl_backend import RenderingUnavailableError
-        from wmr_mujoco.sim.stepping import SimulationDivergedError
-
-        if isinstance(err, SimulationDivergedError):
-            print(f"wmr: simulation diverged: {err}", file=sys.stderr)
-            return 1
-        if isinstance(err, RenderingUnavailableError):
-            print(f"wmr: rendering unavailable: {err}", file=sys.stderr)
-            return 3
-        raise
+    if isinstance(err, SimulationDivergedError):
+        print(f"wmr: simulation diverged: {err}", file=sys.stderr)
+        return 1
+    if isinstance(err, RenderingUnavailableError):
+        print(f"wmr: rendering unavailable: {err}", file=sys.stderr)
+        return 3
+    if isinstance(err, OSError):
+        where = f": {err.filename}" if err.filename else ""
+        print(f"wmr: I/O error: {err.strerror or err}{where}",
+              file=sys.stderr)
+        return EXIT_IO_ERROR
+    raise err
 
 
 if __name__ == "__main__":

@@ -63,7 +63,8 @@ def describe_file(path: Path) -> str:
     """``wmr info FILE.xml``: a foreign scene file described as a robot without builder.
 
     Raises:
-        ValueError: ``path`` is not an existing file.
+        ValueError: ``path`` is not an existing file, or MuJoCo cannot read it (the
+            message names the file, then MuJoCo's reason).
     """
     if not path.is_file():
         raise ValueError(f"MJCF file {str(path)!r} not found; give a robot name or an "
@@ -74,7 +75,11 @@ def describe_file(path: Path) -> str:
     spec = RobotSpec(name=name, description=f"model file {path.name}", params_type=None,
                      build=None, scene=path.resolve())
     with registered(spec):
-        return describe(spec.name)
+        try:
+            return describe(spec.name)
+        except ValueError as err:  # MuJoCo's parser names the line, not the file
+            reason = " ".join(str(err).split())
+            raise ValueError(f"{path}: MuJoCo cannot read this file: {reason}") from None
 
 
 def describe(robot: str) -> str:

@@ -148,3 +148,65 @@ def test_command_line_classifies_files(tmp_path, capsys):
     assert "class (2,0)" in capsys.readouterr().out
     assert classify.main([str(bad)]) == 1
     assert "no floor" in capsys.readouterr().out
+
+
+#: A humanoid-like body: a torso on a free joint, two legs on horizontal hip hinges (a
+#: capsule along the leg, across the hinge), two arms on a shoulder pair of hinges; it
+#: stands on its leg capsules' ends. Every joint below the torso is a limb's, none a
+#: wheel's: no collider is round about the hinge it turns on.
+HUMANOID = f"""<mujoco><worldbody>{FLOOR}
+  <body name="torso" pos="0 0 1.0"><freejoint/>
+    <geom type="capsule" fromto="0 0 0 0 0 0.5" size="0.12"/>
+    <body name="leg_l" pos="0 0.1 0"><joint name="hip_l" axis="0 1 0" damping="5"/>
+      <geom type="capsule" fromto="0 0 0 0 0 -0.95" size="0.05"/></body>
+    <body name="leg_r" pos="0 -0.1 0"><joint name="hip_r" axis="0 1 0" damping="5"/>
+      <geom type="capsule" fromto="0 0 0 0 0 -0.95" size="0.05"/></body>
+    <body name="arm_l" pos="0 0.2 0.45"><joint name="shoulder1_l" axis="0 1 0"/>
+      <joint name="shoulder2_l" axis="1 0 0"/>
+      <geom type="capsule" fromto="0 0 0 0 0 -0.5" size="0.04"/></body>
+    <body name="arm_r" pos="0 -0.2 0.45"><joint name="shoulder1_r" axis="0 1 0"/>
+      <joint name="shoulder2_r" axis="1 0 0"/>
+      <geom type="capsule" fromto="0 0 0 0 0 -0.5" size="0.04"/></body>
+  </body></worldbody></mujoco>"""
+
+#: A robot arm on a mobile base that rests on the floor on its box: two links on
+#: horizontal hinges, the forearm lying on the floor (a capsule along the link, across
+#: its hinge): no wheels.
+ARM = f"""<mujoco><worldbody>{FLOOR}
+  <body name="base" pos="0 0 0.05"><freejoint/><geom type="box" size="0.1 0.1 0.05"/>
+    <body name="upper" pos="0.1 0 0.05"><joint name="shoulder" axis="0 1 0" damping="1"/>
+      <geom type="capsule" fromto="0 0 0 0.3 0 0" size="0.03"/>
+      <body name="fore" pos="0.3 0 0"><joint name="elbow" axis="0 1 0" damping="1"/>
+        <geom type="capsule" fromto="0 0 0 0.3 0 -0.06" size="0.03"/></body>
+    </body></body></worldbody></mujoco>"""
+
+
+@pytest.mark.parametrize("xml", [HUMANOID, ARM], ids=["humanoid", "robot arm"])
+def test_a_limb_on_a_horizontal_hinge_is_no_wheel(xml):
+    model = mujoco.MjModel.from_xml_string(xml)
+    with pytest.raises(ValueError, match=r"^no wheels: .*body '\w+' turns on '\w+' but no "
+                                         r"collider of it is round about that axis"):
+        classify.classify(model)
+
+
+def test_wmr_info_names_no_joint_of_a_humanoid_a_wheel(tmp_path):
+    from wmr_mujoco.info import describe_file
+
+    path = tmp_path / "humanoid.xml"
+    path.write_text(HUMANOID)
+    line = next(x for x in describe_file(path).splitlines() if x.startswith("Campion"))
+    assert line.startswith("Campion class: none (no wheels")
+    assert "wheel '" not in line
+
+
+def test_a_round_collider_off_its_hinge_is_no_wheel():
+    """The castor robot with its left wheel's disc 2 cm off the hinge axis (a cam, not a
+    wheel): the two others still make a class, the cam is named in a note."""
+    cam = _castor_xml(0.03).replace(
+        f'<joint name="left" axis="0 1 0"/>{WHEEL}',
+        '<joint name="left" axis="0 1 0"/><inertial pos="0 0 0" mass="0.2" '
+        'diaginertia="1e-4 2e-4 1e-4"/><geom type="ellipsoid" pos="0.02 0 0" '
+        'size="0.05 0.01 0.05"/>')
+    wheels, notes = classify.find_wheels(mujoco.MjModel.from_xml_string(cam))
+    assert sorted(w.name for w in wheels) == ["castor", "right"]
+    assert any("turns on 'left' but no collider of it is round" in n for n in notes)

@@ -221,3 +221,28 @@ def test_render_arguments_are_checked_first(tmp_path, capsys, argv, message):
     assert main(["render", *argv, "--out", str(tmp_path)]) == 2
     assert message in capsys.readouterr().err
     assert not any(tmp_path.iterdir())
+
+
+def test_an_encoder_failing_on_a_full_disk_is_one_line_and_exit_5(tmp_path, monkeypatch,
+                                                                   capsys):
+    """ffmpeg's failure (mediapy's ``RuntimeError: Error writing ...``, its stderr last)
+    is an I/O error of the output file: exit 5, one line, no file left."""
+    import contextlib
+
+    from wmr_mujoco.cli import main
+    from wmr_mujoco.render import rendering
+
+    @contextlib.contextmanager
+    def full_disk(path, width, height, fps):
+        def write(frame):
+            raise RuntimeError(f"Error writing '{path}': [out#0/mp4] Error submitting a "
+                               "packet\nav_interleaved_write_frame(): No space left on device")
+        yield write
+
+    monkeypatch.setattr(rendering, "video_writer", full_disk)
+    out = tmp_path / "clip.mp4"
+    assert main(["render", "disc", "--out", str(out), "--duration", "0.2", "-q"]) == 5
+    assert capsys.readouterr().err.strip().splitlines() == [
+        "wmr: I/O error: the video encoder (ffmpeg) failed: av_interleaved_write_frame(): "
+        f"No space left on device: {out}"]
+    assert list(tmp_path.iterdir()) == []

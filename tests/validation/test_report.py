@@ -167,3 +167,57 @@ def test_report_folder_is_checked_before_any_work(tmp_path, make, match):
     with pytest.raises(ValueError, match=match):
         check_report_folder(make(tmp_path))
     assert check_report_folder(tmp_path / "new") == tmp_path / "new"
+
+
+def test_a_grouped_scenario_headlines_its_worst_member():
+    """mecanum4's ``8 translations (step)``: the rows are per member; the summary shows
+    the member nearest its target (45° here), never simply the first (0°)."""
+    from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
+    from wmr_mujoco.validation.report import summary_table
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    s = Scenario("mecanum4", "8 translations (step)", (const(0.0),), duration=0.1)
+    req = Target.requirement(1.0, "r")
+    rows = [Row.of("mecanum4", s.name, Metric(f"translate {a}°: worst position error", v,
+                                              "% of path", req))
+            for a, v in ((0, 0.08457), (45, 0.7476), (90, 0.1))]
+    rows.append(Row.of("mecanum4", s.name, Metric("translate 45°: worst heading error", 0.9,
+                                                  "deg", Target.requirement(1.0, "r"))))
+    line = summary_table([ScenarioResult(s, rows, Trace())]).splitlines()[-1]
+    assert "| translate 45°: worst position error: 0.7476 % of path |" in line
+    assert "| 0.7476 % |" in line  # the worst-position column: the same worst member
+    assert "| 0.9° |" in line      # the worst-heading column: its one member
+
+
+def test_a_dimensionless_value_prints_no_unit():
+    """``0.7686 1 ... ≤ 1 1`` read as two numbers; a ratio shows bare."""
+    from wmr_mujoco.validation.metrics import Metric, Row, Target, Trace
+    from wmr_mujoco.validation.report import markdown_table, summary_table
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    s = Scenario("whipple", "w", (const(0.0),), duration=0.1)
+    row = Row.of("whipple", "w", Metric("lean ratio", 0.7686, "1",
+                                        Target.requirement(1.0, "decays")))
+    res = [ScenarioResult(s, [row], Trace())]
+    assert text_table(res).splitlines()[-1].split()[4:8] == ["0.7686", "≤", "1", "pass"]
+    assert "| lean ratio | 0.7686 | ≤ 1 |" in markdown_table(res)
+    assert "| lean ratio: 0.7686 |" in summary_table(res)
+
+
+def test_no_basis_of_a_target_cites_an_internal_issue_number():
+    """The report's basis column is read by people outside the project: it says what is
+    asked and why ("issue 16" means nothing to them)."""
+    import importlib
+    import pkgutil
+    import re
+
+    import wmr_mujoco.robots as robots
+    from wmr_mujoco.validation.metrics import Target
+
+    labels = {t.label for spec in robots.ROBOTS.values() for t in spec.targets.values()}
+    for info in pkgutil.walk_packages(robots.__path__, "wmr_mujoco.robots."):
+        module = vars(importlib.import_module(info.name))  # module-level targets too
+        labels |= {t.label for t in module.values() if isinstance(t, Target)}
+        labels |= {str(v) for k, v in module.items() if k == "SOURCE"}
+    assert len(labels) > 20
+    assert not [x for x in labels if re.search(r"\bissues? \d", x)]

@@ -19,7 +19,13 @@ How wheels are found (heuristics):
        (hub H, roller hinge at any orientation, since it turns with the hub), roller
        angle γ = angle of the roller axis to the wheel plane, signed against the
        rolling direction; ``[ball]`` ball wheel (sphere on a ball joint).
-    4. Wheels are grouped by their spin joint (the hub for Swedish wheels); a wheel none
+    4. A wheel rolls: a body of such a chain is a wheel (or a roller) only if one of its
+       colliders is *round* about the joint it spins on (:func:`round_about`: a sphere,
+       or a cylinder, capsule or ellipsoid of revolution whose symmetry axis is that
+       joint's axis, centred on the axis; a ball wheel's sphere centred on the ball
+       joint). A limb on a horizontal hinge (a humanoid's leg, an arm's link lying on
+       the floor) is not round about it and is no wheel (a note names it if it touches).
+    5. Wheels are grouped by their spin joint (the hub for Swedish wheels); a wheel none
        of whose colliders touches the floor after settling is an error.
 """
 
@@ -41,6 +47,41 @@ VERTICAL_COS = np.cos(np.radians(10.0))
 #: Horizontal distance between steering axis and wheel centre below which the wheel is
 #: centred, m.
 CENTRED_TOL = 2e-3
+#: A round collider's centre lies within this fraction of its bounding radius of the
+#: joint axis, and its symmetry axis within ROUND_ANGLE of the joint's.
+ROUND_TOL = 0.02
+ROUND_ANGLE = np.radians(2.0)
+
+
+def round_about(model: mujoco.MjModel, data: mujoco.MjData, g: int, j: int) -> bool:
+    """Whether geom ``g`` is a body of revolution about joint ``j``'s axis (it can roll).
+
+    A hinge: a sphere, or a cylinder, capsule or ellipsoid with two equal radii whose
+    symmetry axis is parallel to the hinge (within ``ROUND_ANGLE``), in each case
+    centred on the hinge's axis line (within ``ROUND_TOL`` of the geom's bounding
+    radius). A ball joint: a sphere centred on the joint. Boxes, meshes and planes are
+    never round here.
+    """
+    kind = model.geom_type[g]
+    centre, anchor, axis = data.geom_xpos[g], data.xanchor[j], data.xaxis[j]
+    d = centre - anchor
+    tol = ROUND_TOL * float(model.geom_rbound[g]) + 1e-9
+    if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_BALL:
+        return kind == mujoco.mjtGeom.mjGEOM_SPHERE and float(np.linalg.norm(d)) <= tol
+    if float(np.linalg.norm(d - (d @ axis) * axis)) > tol:
+        return False
+    if kind == mujoco.mjtGeom.mjGEOM_SPHERE:
+        return True
+    frame = data.geom_xmat[g].reshape(3, 3)
+    if kind in (mujoco.mjtGeom.mjGEOM_CYLINDER, mujoco.mjtGeom.mjGEOM_CAPSULE):
+        symmetric = [2]
+    elif kind == mujoco.mjtGeom.mjGEOM_ELLIPSOID:
+        size = model.geom_size[g]
+        symmetric = [k for k in range(3)
+                     if np.isclose(*np.delete(size, k), rtol=1e-6)]  # the other two equal
+    else:
+        return False
+    return any(abs(frame[:, k] @ axis) >= np.cos(ROUND_ANGLE) for k in symmetric)
 
 
 def _name(model: mujoco.MjModel, objtype: mujoco.mjtObj, i: int) -> str:
@@ -181,14 +222,23 @@ def find_wheels(model: mujoco.MjModel) -> tuple[tuple[Wheel, ...], tuple[str, ..
             key, kind = links[0].joint, "swedish"
         else:
             key, kind = links[-1].joint, "unsupported:" + "-".join(kinds)
+        spin = links[-1].joint  # what the collider rolls on: wheel, roller or ball joint
+        if not kind.startswith("unsupported") and not any(
+                round_about(model, data, g, spin) for g in geoms):
+            if b in touching:
+                notes.append(f"body {_name(model, mujoco.mjtObj.mjOBJ_BODY, b)!r} turns on "
+                             f"{_name(model, mujoco.mjtObj.mjOBJ_JOINT, spin)!r} but no "
+                             "collider of it is round about that axis: not a wheel")
+            continue
         g = groups.setdefault(key, {"kind": kind, "links": links, "bodies": [],
                                     "touch": False})
         g["bodies"].append(b)
         g["touch"] |= b in touching
     if not groups:
-        raise ValueError(f"no wheels: no jointed collider below the chassis "
-                         f"{_name(model, mujoco.mjtObj.mjOBJ_BODY, chassis)!r} (what touches "
-                         f"the floor is the chassis itself)")
+        why = "; ".join(notes) or ("what touches the floor is the chassis itself")
+        raise ValueError(f"no wheels: no collider below the chassis "
+                         f"{_name(model, mujoco.mjtObj.mjOBJ_BODY, chassis)!r} is round about "
+                         f"a joint it turns on ({why})")
     wheels = []
     for key, g in groups.items():
         name = _name(model, mujoco.mjtObj.mjOBJ_JOINT, key)

@@ -11,6 +11,7 @@ Call :func:`wmr_mujoco.render.gl_backend.select_backend` before MuJoCo is first 
 from __future__ import annotations
 
 import dataclasses
+import errno
 from collections.abc import Callable
 from pathlib import Path
 
@@ -187,6 +188,7 @@ def render_to_file(robot: str, out: Path, scenario: str | None = None, width: in
     Raises:
         ValueError: bad output path, size, fps, scenario, duration or camera.
         SimulationDivergedError: the run diverged.
+        OSError: the file could not be written (a full disk; the encoder failing).
     """
     out = rendering.check_output_path(Path(out), rendering.VIDEO_SUFFIXES
                                       + rendering.IMAGE_SUFFIXES)
@@ -202,9 +204,26 @@ def render_to_file(robot: str, out: Path, scenario: str | None = None, width: in
 
         film_scenario(clip, keep_last, width, height, fps, camera)
         return rendering.write_media(out, last[-1])
-    with rendering.video_writer(out, width, height, fps) as write:
-        film_scenario(clip, write, width, height, fps, camera)
+    try:
+        with rendering.video_writer(out, width, height, fps) as write:
+            film_scenario(clip, write, width, height, fps, camera)
+    except RuntimeError as err:
+        raise _encoder_error(err, out) from err
     return out
+
+
+def _encoder_error(err: RuntimeError, out: Path) -> Exception:
+    """The video encoder's failure (mediapy's ``Error writing ...``) as an ``OSError``.
+
+    ffmpeg fails on a full disk or a file system gone away; its last line says why.
+    Another ``RuntimeError`` comes back unchanged.
+    """
+    text = str(err)
+    if not text.startswith("Error writing"):
+        return err
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    reason = lines[-1] if len(lines) > 1 else "ffmpeg failed"
+    return OSError(errno.EIO, f"the video encoder (ffmpeg) failed: {reason}", str(out))
 
 
 def _trails(sim: list[np.ndarray], model: np.ndarray | None, lift: float

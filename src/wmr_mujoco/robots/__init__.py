@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 
+from wmr_mujoco.choices import match_name
 from wmr_mujoco.robots import (
     bicycle,
     diffdrive,
@@ -45,18 +46,17 @@ ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
 
 
 def get_spec(robot: str) -> RobotSpec:
-    """Look a robot up by name.
+    """Look a robot up by name, typed loosely (:func:`~wmr_mujoco.choices.match_name`).
+
+    Any case, or a unique prefix: ``"OMNI3"`` and ``"mec"`` are robots.
 
     Raises:
-        ValueError: the name is not registered; the message lists the valid names.
-
+        ValueError: the name matches no robot (the message suggests the nearest and lists
+            the valid names) or several.
     """
-    try:
+    if isinstance(robot, str) and robot in ROBOTS:
         return ROBOTS[robot]
-    except (KeyError, TypeError):
-        raise ValueError(
-            f"unknown robot {robot!r}; valid robots are: {', '.join(ROBOTS)}"
-        ) from None
+    return ROBOTS[match_name(robot, list(ROBOTS), "robot")]
 
 
 def register(spec: RobotSpec) -> None:

@@ -10,6 +10,7 @@ from typing import Generic, TypeVar
 
 from dm_control import mjcf
 
+from wmr_mujoco.choices import match_name
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.validation.adapters import AdapterFactory
@@ -181,13 +182,13 @@ class RobotSpec(Generic[P]):
         return self.judges.get(kind, DEFAULT_JUDGES.get(kind))
 
     def scenario(self, name: str) -> Scenario:
-        """One of its scenarios by name.
+        """One of its scenarios by name, typed loosely (any case, ``°`` optional, a prefix).
 
         Raises:
-            ValueError: no such scenario; the message lists the valid ones.
+            ValueError: no such scenario (the message suggests the nearest and lists the
+                valid ones), or a prefix of several.
         """
-        for s in self.scenarios:
-            if s.name == name:
-                return s
-        raise ValueError(f"no scenario {name!r} for {self.name!r}; valid scenarios: "
-                         f"{', '.join(repr(s.name) for s in self.scenarios)}")
+        names = [s.name for s in self.scenarios]
+        found = match_name(name, names, "scenario", f"no scenario {name!r} for {self.name!r}",
+                           f"valid scenarios: {', '.join(map(repr, names)) or 'none'}")
+        return self.scenarios[names.index(found)]

@@ -50,12 +50,13 @@ DEFINITIONS = f"""\
   between the simulated and the analytic reference point, in % of the analytic path
   length of the whole run (and in metres). Judged against the robot's target.
 - *RMS position error*: root mean square of that distance over the run, m. *Final
-  position error*: at the last instant (the figure judged before issue 12), m and %.
+  position error*: at the last instant, m and % (reported beside the worst).
 - *Worst heading error*: the largest heading difference over the run, wrapped into
   (−180°, 180°]; *final heading error* at the last instant.
 - A run that turns in place (path under 1 mm) is judged on its centre's worst drift, m.
 - Samples: every {RECORD_EVERY}th simulation step and the last one.
-- Each target is a **requirement** (asked for; the issue is named) or a **derived bound**
+- Each target is a **requirement** (an accuracy asked of the model; its basis says what
+  it bounds and why) or a **derived bound**
   (it follows from the physics; its derivation is given); a metric without a target is
   reported, not judged.
 - An **open** target is a requirement that no model meets yet: its row shows the

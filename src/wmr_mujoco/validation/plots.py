@@ -22,6 +22,29 @@ if TYPE_CHECKING:
 
     from wmr_mujoco.validation.metrics import Series, Trace
 
+#: A path whose shorter extent is under this fraction of its longer one is drawn on axes
+#: of unequal scale: at equal scale a lane change of 0.4 m over 16 m is a flat line.
+EQUAL_SCALE_MIN = 0.1
+#: Width of one panel and height of a figure, inches.
+PANEL_WIDTH, FIGURE_HEIGHT = 4.33, 3.8
+#: Margins of a figure, inches (room for the axis labels and the title).
+LEFT, RIGHT, BOTTOM, TOP = 0.85, 0.13, 0.53, 0.65
+
+
+def _equal_scale(points: Sequence[np.ndarray]) -> bool:
+    """Whether planar ``(N, 2)`` paths look right at equal scale (see EQUAL_SCALE_MIN)."""
+    xy = np.concatenate([np.asarray(p)[:, :2] for p in points])
+    extent = np.ptp(xy, axis=0)
+    return bool(extent.min() >= EQUAL_SCALE_MIN * extent.max())
+
+
+def _panels(trace: Trace, tr: dict[str, np.ndarray]) -> int:
+    """How many panels a scenario's figure fills (never an empty one)."""
+    if trace.series:
+        return min(3, len({(s.xlabel, s.ylabel) for s in trace.series}))
+    slip = tr["slip"].ndim == 2 and tr["slip"].shape[1] > 0
+    return 3 if trace.is_pose or len(trace.state_names) > 3 or slip else 2
+
 
 def _plot_states(axes: Sequence[Axes], tr: dict[str, np.ndarray], trace: Trace) -> None:
     """Panels of a kinematic or dynamic run, chosen by the adapter's state."""
@@ -31,7 +54,10 @@ def _plot_states(axes: Sequence[Axes], tr: dict[str, np.ndarray], trace: Trace) 
         axes[0].plot(sim[:, 0], sim[:, 1], label="MuJoCo")
         axes[0].plot(ana[:, 0], ana[:, 1], "--", label="analytic")
         axes[0].set(xlabel="x [m]", ylabel="y [m]", title="trajectory")
-        axes[0].set_aspect("equal", adjustable="datalim")
+        if _equal_scale([sim, ana]):
+            axes[0].set_aspect("equal", adjustable="datalim")
+        else:  # a long, narrow path: each axis scaled to its own extent
+            axes[0].set_title("trajectory (x and y not to scale)")
         axes[1].plot(t, 1000 * np.linalg.norm(sim[:, :2] - ana[:, :2], axis=1))
         axes[1].set(xlabel="t [s]", ylabel="position error [mm]", title="error over time")
         rest = range(3, len(names))
@@ -45,6 +71,8 @@ def _plot_states(axes: Sequence[Axes], tr: dict[str, np.ndarray], trace: Trace) 
                                                                    strict=True)))
         rest = range(len(names), len(names))
     axes[0].legend()
+    if len(axes) < 3:
+        return
     if len(rest):
         for i in rest:
             axes[2].plot(t, sim[:, i], label=f"{names[i]} [{units[i]}] MuJoCo")
@@ -110,6 +138,33 @@ def plot_series(series: Sequence[Series], path: Path, title: str = "") -> Path:
     return path
 
 
+def trace_figure(trace: Trace, title: str) -> Figure:
+    """The figure of :func:`plot_trace`: as many panels as there are curves to show.
+
+    Panels of one fixed size, figures as wide as their panels (no blank panel):
+    fixed margins in inches, a third of the figure's cost less than laying it out with
+    ``tight_layout`` (the report draws about a hundred).
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    tr = trace.arrays()
+    n = _panels(trace, tr)
+    width = n * PANEL_WIDTH
+    fig, axes = plt.subplots(1, n, figsize=(width, FIGURE_HEIGHT), squeeze=False)
+    if trace.series:
+        _plot_series(axes[0], trace.series)
+    else:
+        _plot_states(axes[0], tr, trace)
+    fig.suptitle(title)
+    fig.subplots_adjust(left=LEFT / width, right=1 - RIGHT / width,
+                        bottom=BOTTOM / FIGURE_HEIGHT, top=1 - TOP / FIGURE_HEIGHT,
+                        wspace=0.3)
+    return fig
+
+
 def plot_trace(trace: Trace, title: str, path: Path) -> Path | None:
     """A scenario's figure: trajectory (physics over analytic), error, slip or states.
 
@@ -124,15 +179,7 @@ def plot_trace(trace: Trace, title: str, path: Path) -> Path | None:
     tr = trace.arrays()
     if tr["time"].size < 2 and not trace.series:
         return None
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
-    if trace.series:
-        _plot_series(axes, trace.series)
-    else:
-        _plot_states(axes, tr, trace)
-    fig.suptitle(title)
-    # Three panels of one fixed size: fixed margins, a third of the figure's cost less
-    # than laying it out with ``tight_layout`` (the report draws about a hundred).
-    fig.subplots_adjust(left=0.065, right=0.99, bottom=0.14, top=0.86, wspace=0.3)
+    fig = trace_figure(trace, title)
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=80)
     plt.close(fig)

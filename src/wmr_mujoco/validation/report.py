@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from wmr_mujoco.atomic import write_text_atomic
-from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace, row_value
+from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace
 from wmr_mujoco.validation.plots import plot_trace
 from wmr_mujoco.validation.runner import ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
@@ -53,6 +53,20 @@ def _fmt(value: float) -> str:
     return f"{value:.3e}"
 
 
+#: Units of dimensionless values: printed as no unit at all.
+DIMENSIONLESS = ("", "1", "-")
+
+
+def _value(value: float, unit: str) -> str:
+    """A value with its unit; a dimensionless one (unit ``1``) bare."""
+    return _fmt(value) if unit in DIMENSIONLESS else f"{_fmt(value)} {unit}"
+
+
+def _bound(target: float | None, unit: str) -> str:
+    """``≤ target unit`` (empty without a target)."""
+    return "" if target is None else f"≤ {_value(target, unit)}"
+
+
 def _verdict(row: Row) -> str:
     return row.verdict
 
@@ -74,8 +88,7 @@ def text_table(results: Sequence[ScenarioResult], judged_only: bool = False) -> 
     rows = [r for res in results for r in res.rows
             if not judged_only or r.passed is not None or r.open]
     header = ("robot", "scenario", "metric", "value", "target", "pass")
-    body = [(r.robot, r.scenario, r.metric, f"{_fmt(r.value)} {r.unit}".strip(),
-             "" if r.target is None else f"≤ {_fmt(r.target)} {r.unit}".strip(),
+    body = [(r.robot, r.scenario, r.metric, _value(r.value, r.unit), _bound(r.target, r.unit),
              _verdict(r) + (f" ({r.note})" if r.note and (r.passed is False or r.open)
                             else ""))
             for r in rows]
@@ -96,9 +109,9 @@ def markdown_table(results: Sequence[ScenarioResult]) -> str:
              "|---|---|---|---|---|---|---|---|"]
     for res in results:
         for r in res.rows:
-            target = "" if r.target is None else f"≤ {_fmt(r.target)} {r.unit}"
             lines.append(f"| {r.robot} | {res.scenario.name} | {_cell_text(r.metric)} | "
-                         f"{_fmt(r.value)} {r.unit} | {target} | {_cell_text(r.basis)} | "
+                         f"{_value(r.value, r.unit)} | {_bound(r.target, r.unit)} | "
+                         f"{_cell_text(r.basis)} | "
                          f"{_verdict(r)} | {_cell_text(r.note)} |")
     return "\n".join(lines)
 
@@ -107,32 +120,68 @@ def _cell(value: float | None, suffix: str = "") -> str:
     return "" if value is None else f"{_fmt(value)}{suffix}"
 
 
+def _base_name(metric: str) -> str:
+    """A metric's name without a group member's ``"member: "`` prefix."""
+    return metric.rsplit(": ", 1)[-1]
+
+
+def headline(rows: Sequence[Row]) -> Row | None:
+    """The row a scenario's summary shows: its first judged metric, at its worst.
+
+    A grouped scenario judges the same metric once per member (``"translate 45°: worst
+    position error"``); the headline is the member nearest its target (the largest
+    ``|value| / target``; a non-finite value counts as the worst), so that a group never
+    shows a good member while another is far worse. None: no rows.
+    """
+    judged = [r for r in rows if r.target is not None and not r.open]
+    if not judged:
+        return rows[0] if rows else None
+    first = judged[0]
+    same = [r for r in judged if _base_name(r.metric) == _base_name(first.metric)
+            and r.unit == first.unit]
+
+    def ratio(r: Row) -> float:
+        return abs(r.value) / r.target if math.isfinite(r.value) and r.target else math.inf
+
+    return max(same, key=ratio)
+
+
+def _worst(rows: Sequence[Row], metric: str, unit: str) -> float | None:
+    """The metric's value, or the largest over a group's members; None: not measured."""
+    values = [abs(r.value) for r in rows
+              if r.unit == unit and _base_name(r.metric) == metric]
+    if not values:
+        return None
+    return max(values, key=lambda v: v if math.isfinite(v) else math.inf)
+
+
 def summary_table(results: Sequence[ScenarioResult]) -> str:
     """One row per scenario: headline judged metric, worst/RMS/final errors, slip, verdict.
 
     The pose columns are over the whole run (see :mod:`wmr_mujoco.validation.metrics`):
-    worst and final position error in % of path, RMS in mm, worst and final heading error.
+    worst and final position error in % of path, RMS in mm, worst and final heading error;
+    a grouped scenario shows its worst member in each (:func:`headline`).
     """
     lines = ["| robot | scenario | headline (judged) | worst position error | RMS position "
              "error | final position error | worst heading error | final heading error | "
              "worst lateral slip RMS | pass |", "|---|---|---|---|---|---|---|---|---|---|"]
     for res in results:
-        judged = [r for r in res.rows if r.target is not None and not r.open]
-        head = judged[0] if judged else (res.rows[0] if res.rows else None)
+        head = headline(res.rows)
         n_open = sum(r.open for r in res.rows)
-        headline = f"{head.metric}: {_fmt(head.value)} {head.unit}" if head else ""
-        rms_m = row_value(res.rows, "RMS position error", "m")
-        slips = [r.value for r in res.rows if r.metric.startswith("lateral slip RMS")]
+        shown = f"{head.metric}: {_value(head.value, head.unit)}" if head else ""
+        rms_m = _worst(res.rows, "RMS position error", "m")
+        slips = [r.value for r in res.rows
+                 if _base_name(r.metric).startswith("lateral slip RMS")]
         slip = f"{1000 * max(slips):.3f} mm/s" if slips else ""
         verdict = "pass" if res.passed else f"FAIL{': ' + res.error if res.error else ''}"
         if n_open:  # open targets never decide the verdict; say that they are there
             verdict += f" ({n_open} open)"
-        cells = [_cell(row_value(res.rows, "worst position error", "% of path"), " %"),
+        cells = [_cell(_worst(res.rows, "worst position error", "% of path"), " %"),
                  _cell(None if rms_m is None else 1000 * rms_m, " mm"),
-                 _cell(row_value(res.rows, "final position error", "% of path"), " %"),
-                 _cell(row_value(res.rows, "worst heading error", "deg"), "°"),
-                 _cell(row_value(res.rows, "final heading error", "deg"), "°"), slip]
-        lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {_cell_text(headline)} | "
+                 _cell(_worst(res.rows, "final position error", "% of path"), " %"),
+                 _cell(_worst(res.rows, "worst heading error", "deg"), "°"),
+                 _cell(_worst(res.rows, "final heading error", "deg"), "°"), slip]
+        lines.append(f"| {res.scenario.robot} | {res.scenario.name} | {_cell_text(shown)} | "
                      f"{' | '.join(cells)} | {verdict} |")
     return "\n".join(lines)
 
@@ -149,7 +198,7 @@ def open_table(results: Sequence[ScenarioResult]) -> str:
              "|---|---|---|---|---|---|---|"]
     for res, r in rows:
         lines.append(f"| {r.robot} | {res.scenario.name} | {_cell_text(r.metric)} | "
-                     f"{_fmt(r.value)} {r.unit} | ≤ {_fmt(r.target or math.nan)} {r.unit} | "
+                     f"{_value(r.value, r.unit)} | {_bound(r.target or math.nan, r.unit)} | "
                      f"{r.verdict} | {_cell_text(r.basis)} |")
     return "\n".join(lines)
 

@@ -96,7 +96,7 @@ _SPIN_ARC = wheel_arc(SPIN, DiffDriveParams().track)
 TARGETS: Mapping[str, Target] = {
     **req.vehicle_targets(0.5),
     mt.CENTRE_DRIFT_M: Target.requirement(
-        0.005 * _SPIN_ARC, f"issue 15: 0.5 % of path; turning in place the path is the "
+        0.005 * _SPIN_ARC, f"{req.SOURCE}: 0.5 % of path; turning in place the path is the "
                            f"arc each wheel rolls, (b/2)∫|ω|dt = {_SPIN_ARC:.3f} m"),
 }
 

@@ -31,7 +31,7 @@ from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric, Series, Target, rms
 from wmr_mujoco.validation.scenarios import MeasurementResult
 
-SOURCE = "issue 13: sliding wheel within 2 %"
+SOURCE = "accuracy asked of the sliding-wheel model (Coulomb friction): within 2 %"
 #: Slip speed ``(R + d) θ̇ − ẋ`` below which the wheel has gripped again, m/s.
 REGRIP_SLIP = 1e-3
 #: Seconds the wheel rests on the floor before the torque starts.

@@ -27,7 +27,7 @@ from wmr_mujoco.robots.disc_free.state import FreeRun, disc_from_model
 from wmr_mujoco.validation.metrics import Metric, Series, Target, worst_and_rms
 from wmr_mujoco.validation.scenarios import MeasurementResult
 
-SOURCE = "issue 13"
+SOURCE = "accuracy asked against the classic rolling-disc solutions"
 #: Stability sweep: speeds as multiples of v_c, and the lean-rate kick, rad/s.
 SWEEP_RATIOS = (0.8, 0.9, 0.95, 1.05, 1.1, 1.2)
 SWEEP_KICK = 0.02

@@ -37,7 +37,7 @@ from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
 
 NAME = "mecanum4"
-SOURCE = "issue 15"
+SOURCE = req.SOURCE
 #: Seconds of a translation run. Every error of a translation is a rate (a constant %
 #: of path) or a fixed lag (a larger % the shorter the run), so a shorter run is the
 #: harder test; turning runs last :data:`TURN_DURATION`, since a heading error grows
@@ -52,10 +52,11 @@ TORQUE_DURATION = 2.0
 TARGETS: Mapping[str, Target] = {
     mt.POSITION_PCT: req.position_pct(1.0, SOURCE),
     mt.HEADING_DEG: req.heading_deg(1.0, SOURCE),
-    ROLLER_RATE_PCT: Target.requirement(5.0, "issue 3 (omni3's roller requirement, "
-                                             "applied to these rollers): spin rates within "
+    ROLLER_RATE_PCT: Target.requirement(5.0, "accuracy asked of the roller model (as of "
+                                             "omni3's rollers): spin rates within "
                                              "5 % of slide speed / ρ (median over contacts)"),
-    dynamics.VELOCITY_PCT: Target.requirement(3.0, "issue 5 (omni3's torque target): "
+    dynamics.VELOCITY_PCT: Target.requirement(3.0, "accuracy asked of the Lagrange model (as "
+                                                   "of omni3's under torque): "
                                                    "body velocity within 3 % of the "
                                                    "Lagrange model"),
 }

@@ -18,7 +18,8 @@ from wmr_mujoco.validation.omni_wheels import rolling_radius_profile
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
 #: Requirement (issue 15) on the rolling-radius ripple, % of the mean radius.
-RIPPLE = Target.requirement(0.3, "issue 15: rolling-radius ripple ≤ 0.3 %")
+RIPPLE = Target.requirement(0.3, "smooth rolling asked of the roller envelope: "
+                                     "rolling-radius ripple ≤ 0.3 %")
 
 
 def ripple(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:

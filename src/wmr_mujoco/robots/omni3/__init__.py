@@ -117,8 +117,10 @@ TARGETS: Mapping[str, Target] = {
     mt.HEADING_DEG: req.HEADING_DEG,
     mt.CENTRE_DRIFT_M: Target.requirement(
         0.01 * OmniParams().wheel_distance,
-        "issue 3: turning in place keeps the centre within 1 % of the wheel distance L"),
-    ROLLER_RATE_PCT: Target.requirement(5.0, "issue 3: roller spin rates within 5 % of "
+        f"{req.SOURCE}: turning in place keeps the centre within 1 % of the wheel "
+        "distance L"),
+    ROLLER_RATE_PCT: Target.requirement(5.0, "accuracy asked of the roller model: spin rates "
+                                             "within 5 % of "
                                              "slide speed / ρ (median over contacts)"),
 }
 def square_with_rotation(side: float = 0.6, speed: float = 0.24, yaw_rate: float = 0.4

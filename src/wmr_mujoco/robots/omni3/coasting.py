@@ -27,7 +27,8 @@ from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.omni_wheels import SPEED, YAW_RATE
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
-COAST = Target.requirement(5.0, "issue 16: coasting figures within 5 % of the physics")
+COAST = Target.requirement(5.0, "accuracy asked of the coasting model: within 5 % "
+                                     "of the physics")
 #: Drive (with a 0.5 s ramp) and coast, s.
 DRIVE_TIME = 1.5
 COAST_TIME = 3.0

@@ -37,7 +37,8 @@ from wmr_mujoco.sim.engine import simulate
 from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
-SLIP = Target.requirement(5.0, "issue 16: slip-onset torque predicted within 5 %")
+SLIP = Target.requirement(5.0, "accuracy asked of the traction model: slip-onset "
+                                    "torque predicted within 5 %")
 #: Torque pattern of the scenario (a push along x), scaled to a largest entry of 1.
 PATTERN = (0.0, -1.0, 1.0)
 #: Slip speed that counts as slipping for good, m/s.

@@ -66,10 +66,12 @@ SPEED_PCT = 1.0
 WEAVE_BRACKET, CAPSIZE_BRACKET, SPEED_XTOL = (3.8, 4.8), (5.5, 6.6), 1e-4
 
 EIGEN_TARGET = Target.requirement(
-    1.0, "issue 14: each real and imaginary part of weave, capsize and castering at "
+    1.0, "agreement with the benchmark bicycle's linearised eigenvalues (Meijaard et "
+         "al. 2007): each real and imaginary part of weave, capsize and castering at "
          "1-10 m/s within max(2 %, 0.05 1/s) of the benchmark (error / tolerance ≤ 1)")
 SPEED_TARGET = Target.requirement(
-    SPEED_PCT, "issue 14: weave and capsize speeds from the physics within 1 % of the "
+    SPEED_PCT, "agreement with the benchmark bicycle's critical speeds: weave and capsize "
+               "speeds from the physics within 1 % of the "
                "benchmark's")
 
 

@@ -1,0 +1,101 @@
+"""A robot attached into a dm_control arena: it compiles and rolls as in its own scene."""
+
+import mujoco
+import numpy as np
+import pytest
+from dm_control import mjcf
+
+import wmr_mujoco as wmr
+from wmr_mujoco.api import attach
+from wmr_mujoco.models.attach import attach_robot
+
+#: Wheel-rate controls (rad/s) that drive each robot straight: omni3's wheels 2 and 3 in
+#: opposite senses (wheel 1 across the motion), mecanum4's four alike, the disc's wheel
+#: with its steering held.
+CTRL = {"omni3": (0.0, 20.0, -20.0), "mecanum4": (10.0, 10.0, 10.0, 10.0),
+        "disc": (10.0, 0.0)}
+#: Simulated time, s.
+DURATION = 0.5
+
+
+def _arena() -> mjcf.RootElement:
+    arena = mjcf.RootElement(model="arena")
+    arena.worldbody.add("geom", name="ground", type="plane", size=(5, 5, 0.1))
+    return arena
+
+
+def _drive(model: mujoco.MjModel, ctrl_by_name: dict[str, float], base: str) -> np.ndarray:
+    data = mujoco.MjData(model)
+    for name, value in ctrl_by_name.items():
+        data.ctrl[model.actuator(name).id] = value
+    for _ in range(round(DURATION / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+    return data.site_xpos[model.site(base).id].copy()
+
+
+@pytest.mark.parametrize("robot", list(CTRL))
+def test_an_attached_robot_rolls_on_the_arena_floor_as_in_its_own_scene(robot):
+    """Same bodies, same contact parameters (the robot's geoms have contact priority;
+    its scene's pairs are re-made against the arena's floor): the paths differ only by
+    the solver's summation order, far under 0.1 mm after 0.5 s, while the robot rolls
+    more than 0.2 m (1/2000 of it)."""
+    arena = _arena()
+    frame = attach(arena, robot)
+    assert frame.freejoint is not None or robot == "disc"  # the disc rides on slides
+    model = mujoco.MjModel.from_xml_string(arena.to_xml_string(), arena.get_assets())
+    own = wmr.load(robot)
+    names = [own.actuator(i).name for i in range(own.nu)]
+    assert model.npair == own.npair  # mecanum4's and the disc's floor pairs came along
+    end = _drive(model, {f"{robot}/{n}": c for n, c in zip(names, CTRL[robot], strict=True)},
+                 f"{robot}/base")
+    expected = _drive(own, dict(zip(names, CTRL[robot], strict=True)), "base")
+    start = _drive(own, dict.fromkeys(names, 0.0), "base")
+    assert np.linalg.norm(expected[:2] - start[:2]) > 0.2
+    np.testing.assert_allclose(end, expected, atol=1e-4)
+
+
+def test_the_plain_attach_fails_on_the_free_joint_which_is_why_attach_exists():
+    arena = _arena()
+    arena.attach(mjcf.from_path(str(wmr.get_spec("omni3").robot_path)))
+    with pytest.raises(ValueError, match="free joint can only be used on top level"):
+        mujoco.MjModel.from_xml_string(arena.to_xml_string(), arena.get_assets())
+
+
+def test_without_its_scene_pairs_mecanum4_would_sink():
+    """Attached without the pairs its scene adds, no roller touches the floor."""
+    arena = _arena()
+    attach_robot(arena, mjcf.from_path(str(wmr.get_spec("mecanum4").robot_path)))
+    model = mujoco.MjModel.from_xml_string(arena.to_xml_string(), arena.get_assets())
+    assert _drive(model, {}, "mecanum4/base")[2] < 0.0
+
+
+def test_a_position_and_a_named_floor():
+    arena = _arena()
+    arena.worldbody.add("geom", name="ramp", type="plane", size=(1, 1, 0.1), pos=(9, 9, 0))
+    with pytest.raises(ValueError, match=r"2 plane geoms .* name the floor: floor='...'"):
+        attach(arena, "disc")
+    with pytest.raises(ValueError, match="floor = 'nope': the arena has no geom"):
+        attach(arena, "disc", floor="nope")
+    attach(arena, "mecanum4", pos=(1.0, 2.0, 0.0), floor="ground")
+    model = mujoco.MjModel.from_xml_string(arena.to_xml_string(), arena.get_assets())
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    np.testing.assert_allclose(data.site_xpos[model.site("mecanum4/base").id][:2], (1, 2),
+                               atol=1e-9)
+
+
+def test_the_composition_docs_example_runs():
+    """docs/composition.md's example, executed as printed: the mecanum robot compiles in
+    the arena at its position, with its wheel actuator found by its prefixed name."""
+    import re
+    from pathlib import Path
+
+    doc = Path(__file__).resolve().parents[2] / "docs" / "composition.md"
+    block = re.findall(r"```python\n(.*?)```", doc.read_text(), flags=re.DOTALL)[0]
+    scope: dict[str, object] = {}
+    exec(compile(block, str(doc), "exec"), scope)
+    model, data = scope["model"], scope["data"]
+    assert data.ctrl[model.actuator("mecanum4/wheel_fl").id] == 10.0
+    mujoco.mj_forward(model, data)
+    np.testing.assert_allclose(data.site_xpos[model.site("mecanum4/base").id][:2], (1, 0),
+                               atol=1e-9)
