@@ -1,0 +1,193 @@
+"""MkDocs hooks of the documentation site (``mkdocs.yml``: ``hooks:``; ``make docs``).
+
+* :func:`on_config`: drops ``nav`` entries whose page does not exist yet (the generated
+  result and benchmark pages appear when their generator has run), so that a strict
+  build passes with or without them;
+* :func:`on_files`: adds every robot's clips from ``renders/`` to the site (copied at
+  build time, never into ``docs/``);
+* :func:`on_page_markdown`: fills the gallery from the robots' registry, expands
+  ``<!-- api: PACKAGE -->`` into one mkdocstrings block per module of ``PACKAGE``, and
+  turns links that leave ``docs/`` for the repository (``../models/...``) into repository
+  paths in code, since the site holds only ``docs/``;
+* MathJax (for the tutorials' equations) is served from the site itself: the copy that
+  the ``django-static-mathjax`` wheel ships (``docs`` extra), nothing from a CDN.
+
+The pure functions below do the work and are tested without MkDocs
+(``tests/tutorials/test_site.py``); the ``on_*`` names are MkDocs' event hooks.
+"""
+
+from __future__ import annotations
+
+import logging
+import posixpath
+import re
+from collections.abc import Iterable, Iterator
+from pathlib import Path
+from typing import Any
+
+LOG = logging.getLogger("mkdocs.hooks.wmr")
+#: Marker in ``docs/gallery.md`` that the generated gallery replaces.
+GALLERY_MARKER = "<!-- gallery: generated -->"
+#: Folder of the clips, relative to the repository root, and in the site.
+RENDERS = "renders"
+#: ``<!-- api: wmr_mujoco.analytic -->``: every public module of that package.
+_API = re.compile(r"<!-- api: ([\w.]+) -->")
+#: The MathJax bundle the site serves, its configuration (inline ``$…$`` as in Jupyter).
+MATHJAX = "javascripts/tex-svg.js"
+MATHJAX_CONFIG = "javascripts/mathjax-config.js"
+_MATHJAX_SETTINGS = """window.MathJax = {
+  tex: {inlineMath: [["$", "$"], ["\\\\(", "\\\\)"]],
+        displayMath: [["$$", "$$"], ["\\\\[", "\\\\]"]],
+        processEscapes: true, processEnvironments: true},
+  svg: {fontCache: "global"}
+};
+"""
+_LINK = re.compile(r"(!?)\[([^\]]*)\]\(([^)\s]+)\)")
+_SHOWN = (".gif", ".png")
+
+
+def prune_nav(nav: list[Any], exists: Any) -> list[Any]:
+    """``nav`` without the pages for which ``exists(path)`` is false (empty sections too).
+
+    Entries are MkDocs' nav items: a path, ``{title: path}`` or ``{title: [items]}``;
+    external links (``scheme://``) are kept.
+    """
+    out: list[Any] = []
+    for item in nav:
+        if isinstance(item, dict):
+            (title, value), = item.items()
+            if isinstance(value, list):
+                inner = prune_nav(value, exists)
+                if inner:
+                    out.append({title: inner})
+            elif "://" in str(value) or exists(value):
+                out.append(item)
+        elif "://" in str(item) or exists(item):
+            out.append(item)
+    return out
+
+
+def clip_files(robots: Iterable[Any]) -> Iterator[tuple[str, str, str]]:
+    """``(robot, description, file name)`` of every clip of every registered robot."""
+    for spec in robots:
+        for clip in spec.clips:
+            yield spec.name, spec.description, spec.clip_file(clip)
+
+
+def gallery_markdown(robots: Iterable[Any], renders: Path) -> str:
+    """A Markdown table: each robot, its one-line description and its clips.
+
+    A clip that ``make renders`` has not written yet is named, not shown.
+    """
+    rows: dict[str, tuple[str, list[str]]] = {}
+    for name, description, file in clip_files(robots):
+        shown = rows.setdefault(name, (description, []))[1]
+        if not (renders / file).is_file():
+            shown.append(f"`{RENDERS}/{file}` (not rendered yet: `make renders`)")
+        elif file.endswith(_SHOWN):
+            shown.append(f"![{name}: {file}]({RENDERS}/{file})")
+        else:
+            shown.append(f"[{file}]({RENDERS}/{file})")
+    lines = ["| robot | clip | what |", "|---|---|---|"]
+    for name, (description, shown) in rows.items():
+        lines.append(f"| `{name}` | {' '.join(shown)} | {description} |")
+    return "\n".join(lines)
+
+
+def outside_links(markdown: str, page_dir: str) -> str:
+    """Links and images whose target leaves ``docs/`` become the repository path in code.
+
+    ``page_dir`` is the page's folder relative to ``docs/`` ('' at the top). A link
+    ``[models/omni3/README.md](../models/omni3/README.md)`` from a top-level page becomes
+    ``models/omni3/README.md (`models/omni3/README.md` in the repository)``; links inside
+    ``docs/``, absolute URLs and anchors are left alone.
+    """
+    def repl(match: re.Match[str]) -> str:
+        _, text, target = match.groups()
+        if "://" in target or target.startswith(("#", "mailto:", "/")):
+            return match.group(0)
+        path = posixpath.normpath(posixpath.join(page_dir, target.split("#")[0]))
+        if not path.startswith("../"):
+            return match.group(0)
+        repo_path = path[len("../"):]
+        shown = text.strip("`") or repo_path
+        if shown == repo_path:
+            return f"`{repo_path}` (in the repository)"
+        return f"{text} (`{repo_path}` in the repository)"
+    return _LINK.sub(repl, markdown)
+
+
+def api_markdown(package: str) -> str:
+    """One ``::: module`` block per public module of ``package`` (its ``MODULES``)."""
+    import importlib
+
+    mod = importlib.import_module(package)
+    names = getattr(mod, "MODULES", None)
+    if names is None:
+        import pkgutil
+
+        names = [m.name for m in pkgutil.iter_modules(mod.__path__)
+                 if not m.name.startswith("_")]
+    return "\n\n".join(f"::: {package}.{name}" for name in sorted(names))
+
+
+def mathjax_bundle() -> Path | None:
+    """The MathJax 3 SVG bundle shipped by ``django-static-mathjax`` (None: not installed)."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("mathjax")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    for root in spec.submodule_search_locations:
+        path = Path(root) / "static" / "mathjax" / "es5" / "tex-svg.js"
+        if path.is_file():
+            return path
+    return None
+
+
+def _repo_root(config: Any) -> Path:
+    return Path(config["docs_dir"]).resolve().parent
+
+
+# -- MkDocs event hooks ----------------------------------------------------------------
+
+def on_config(config: Any) -> Any:
+    """Drop nav entries whose page is missing (generated pages not generated yet)."""
+    docs = Path(config["docs_dir"])
+    if config.get("nav"):
+        kept = prune_nav(config["nav"], lambda p: (docs / p).is_file())
+        if kept != config["nav"]:
+            LOG.info("nav: pages not present are left out of the site's navigation")
+        config["nav"] = kept
+    return config
+
+
+def on_files(files: Any, config: Any) -> Any:
+    """Add the robots' clips in ``renders/`` to the site, under ``renders/``."""
+    from mkdocs.structure.files import File
+
+    from wmr_mujoco.robots import ROBOTS
+
+    bundle = mathjax_bundle()
+    if bundle is None:
+        LOG.warning("MathJax is missing: install the docs extra (pip install -e '.[docs]')")
+    else:
+        files.append(File.generated(config, MATHJAX, abs_src_path=str(bundle)))
+    files.append(File.generated(config, MATHJAX_CONFIG, content=_MATHJAX_SETTINGS))
+    renders = _repo_root(config) / RENDERS
+    for _, _, name in clip_files(ROBOTS.values()):
+        if (renders / name).is_file() and files.get_file_from_path(f"{RENDERS}/{name}") is None:
+            files.append(File(f"{RENDERS}/{name}", str(renders.parent), config["site_dir"],
+                              config["use_directory_urls"]))
+    return files
+
+
+def on_page_markdown(markdown: str, page: Any, config: Any, files: Any) -> str:
+    """Fill the gallery; rewrite links that leave ``docs/``."""
+    if GALLERY_MARKER in markdown:
+        from wmr_mujoco.robots import ROBOTS
+
+        table = gallery_markdown(ROBOTS.values(), _repo_root(config) / RENDERS)
+        markdown = markdown.replace(GALLERY_MARKER, table)
+    markdown = _API.sub(lambda m: api_markdown(m.group(1)), markdown)
+    return outside_links(markdown, posixpath.dirname(page.file.src_uri))
