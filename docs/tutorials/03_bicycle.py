@@ -70,6 +70,7 @@ ax.plot(run.model["x"], run.model["y"], "r", lw=4, label="model")
 ax.plot(xs, ys, "g", lw=1.5, label="MuJoCo")
 ax.set(xlabel="x (m)", ylabel="y (m)", aspect="equal", title="steady turn")
 ax.legend()
+fig.tight_layout()
 
 # %% [markdown]
 # ## How many directions can the bicycle reach?
@@ -128,3 +129,4 @@ ax.plot(park.model["x"], park.model["y"], "r", lw=4, label="model")
 ax.plot(park.sim["x"], park.sim["y"], "g", lw=1.5, label="MuJoCo")
 ax.set(xlabel="x (m)", ylabel="y (m)", aspect="equal", title="parallel parking (rear contact)")
 ax.legend()
+fig.tight_layout()

@@ -59,6 +59,7 @@ ax.plot(run.model["x"], run.model["y"], "r", lw=4, label="model")
 ax.plot(run.sim["x"], run.sim["y"], "g", lw=1.5, label="MuJoCo")
 ax.set(xlabel="x (m)", ylabel="y (m)", aspect="equal", title="tricycle, sinusoidal steering")
 ax.legend()
+fig.tight_layout()
 
 # %% [markdown]
 # ## Reading the wheel rates from MuJoCo
@@ -90,6 +91,7 @@ ax.plot(time, left, label="left (driven)")
 ax.plot(time, right, label="right (free)")
 ax.set(xlabel="time (s)", ylabel="wheel rate (rad/s)")
 ax.legend()
+fig.tight_layout()
 
 # %% [markdown]
 # ## Exercise: the instantaneous centre from the wheel rates

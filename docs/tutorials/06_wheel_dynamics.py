@@ -60,6 +60,7 @@ ax.plot(run.model.time, run.model["speed"], "r", lw=4, label="model")
 ax.plot(run.sim.time, run.sim["speed"], "g", lw=1.5, label="MuJoCo")
 ax.set(xlabel="time (s)", ylabel="speed (m/s)", title=f"τ = {tau} N·m")
 ax.legend()
+fig.tight_layout()
 
 # %% [markdown]
 # ## Exercise: the traction limit
@@ -105,3 +106,4 @@ for factor in (0.9, 1.1):
     print(f"{factor} × limit: slip speed after 0.5 s {1000 * slip[-1]:.2f} mm/s")
 ax.set(xlabel="time (s)", ylabel="slip speed (mm/s)", title="rolling, then sliding")
 ax.legend()
+fig.tight_layout()

@@ -123,6 +123,7 @@ for i, name in enumerate(["u (m/s)", "v (m/s)", "r (rad/s)"]):
     ax.plot(time, sim[:, i], lw=1, label=f"{name}, MuJoCo")
 ax.set(xlabel="time (s)", title="constant torques from rest")
 ax.legend(fontsize=7)
+fig.tight_layout()
 
 # %% [markdown]
 # The small remaining difference is what the slide leaves out: the rollers' own inertia

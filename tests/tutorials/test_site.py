@@ -60,3 +60,23 @@ def test_api_markdown_lists_every_analytic_module() -> None:
     md = site.api_markdown("wmr_mujoco.analytic")
     assert md.count(":::") == len(analytic.MODULES)
     assert "::: wmr_mujoco.analytic.unicycle" in md
+
+
+def test_quiet_kernels_uses_a_private_ipc_config(monkeypatch) -> None:
+    import json
+    import logging
+
+    monkeypatch.delenv("JUPYTER_CONFIG_DIR", raising=False)
+    level = logging.getLogger("traitlets").level
+    try:
+        folder = site.quiet_kernels()
+        import os
+
+        assert os.environ["JUPYTER_CONFIG_DIR"] == str(folder)
+        settings = json.loads((folder / "jupyter_nbconvert_config.json").read_text())
+        assert settings["KernelManager"]["transport"] == "ipc"
+        assert settings["KernelManager"]["ip"].startswith(str(folder))
+        site.on_post_build({})
+        assert not folder.exists()
+    finally:
+        logging.getLogger("traitlets").setLevel(level)

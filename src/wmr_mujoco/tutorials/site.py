@@ -18,9 +18,13 @@ The pure functions below do the work and are tested without MkDocs
 
 from __future__ import annotations
 
+import json
 import logging
+import os
 import posixpath
 import re
+import shutil
+import tempfile
 from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import Any
@@ -42,6 +46,9 @@ _MATHJAX_SETTINGS = """window.MathJax = {
   svg: {fontCache: "global"}
 };
 """
+#: Wider pages: the tutorials' code and printed output fit without scrolling.
+STYLE = "stylesheets/wide.css"
+_STYLE = ".md-grid { max-width: 1500px; }\n"
 _LINK = re.compile(r"(!?)\[([^\]]*)\]\(([^)\s]+)\)")
 _SHOWN = (".gif", ".png")
 
@@ -151,8 +158,30 @@ def _repo_root(config: Any) -> Path:
 
 # -- MkDocs event hooks ----------------------------------------------------------------
 
+_JUPYTER_DIR: list[Path] = []
+
+
+def quiet_kernels() -> Path:
+    """Point Jupyter at a private configuration: kernels over IPC sockets in a temp folder.
+
+    The tutorials' kernels otherwise listen on local TCP without encryption, which
+    ipykernel warns about on every page; the sockets' files go in the same folder,
+    removed after the build (:func:`on_post_build`). The HTML exporter's note that plot
+    images carry no alternative text is silenced too: the lab template it uses has no
+    place for one, and it inserts a placeholder itself.
+    """
+    folder = Path(tempfile.mkdtemp(prefix="wmr-docs-jupyter-"))
+    settings = {"KernelManager": {"transport": "ipc", "ip": str(folder / "kernel")}}
+    (folder / "jupyter_nbconvert_config.json").write_text(json.dumps(settings))
+    os.environ["JUPYTER_CONFIG_DIR"] = str(folder)
+    logging.getLogger("traitlets").setLevel(logging.ERROR)
+    _JUPYTER_DIR.append(folder)
+    return folder
+
+
 def on_config(config: Any) -> Any:
     """Drop nav entries whose page is missing (generated pages not generated yet)."""
+    quiet_kernels()
     docs = Path(config["docs_dir"])
     if config.get("nav"):
         kept = prune_nav(config["nav"], lambda p: (docs / p).is_file())
@@ -174,12 +203,19 @@ def on_files(files: Any, config: Any) -> Any:
     else:
         files.append(File.generated(config, MATHJAX, abs_src_path=str(bundle)))
     files.append(File.generated(config, MATHJAX_CONFIG, content=_MATHJAX_SETTINGS))
+    files.append(File.generated(config, STYLE, content=_STYLE))
     renders = _repo_root(config) / RENDERS
     for _, _, name in clip_files(ROBOTS.values()):
         if (renders / name).is_file() and files.get_file_from_path(f"{RENDERS}/{name}") is None:
             files.append(File(f"{RENDERS}/{name}", str(renders.parent), config["site_dir"],
                               config["use_directory_urls"]))
     return files
+
+
+def on_post_build(config: Any) -> None:
+    """Remove the private Jupyter folder of :func:`quiet_kernels`."""
+    while _JUPYTER_DIR:
+        shutil.rmtree(_JUPYTER_DIR.pop(), ignore_errors=True)
 
 
 def on_page_markdown(markdown: str, page: Any, config: Any, files: Any) -> str:
