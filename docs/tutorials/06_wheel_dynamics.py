@@ -28,7 +28,7 @@
 # (`wmr_mujoco.analytic.wheel_dynamics`). The MuJoCo `disc` in torque mode is this wheel:
 # its carriage slides freely on the mount, so $m$ is disc plus carriage.
 #
-# *Run time: about 2 s.*
+# *Run time: about 5 s as a script on a 2-core machine, most of it importing MuJoCo.*
 
 # %%
 import matplotlib.pyplot as plt

@@ -29,6 +29,10 @@ def test_outside_links_become_repository_paths() -> None:
     assert "the disc (`models/disc/README.md` in the repository)" in out
     assert "[inside](analytical.md)" in out and "[web](https://example.org/a.md)" in out
     assert "![pic](renders/disc.gif)" in out
+    # The clips are carried by the site: the link is kept, relative to the site's copy.
+    assert site.outside_links("![c](../renders/disc.gif)", "") == "![c](renders/disc.gif)"
+    assert (site.outside_links("[c](../../renders/a.gif)", "tutorials")
+            == "[c](../renders/a.gif)")
     # From a sub-folder, one level up stays inside docs/.
     assert site.outside_links("[a](../index.md)", "tutorials") == "[a](../index.md)"
 

@@ -107,16 +107,21 @@ def outside_links(markdown: str, page_dir: str) -> str:
     ``page_dir`` is the page's folder relative to ``docs/`` ('' at the top). A link
     ``[models/omni3/README.md](../models/omni3/README.md)`` from a top-level page becomes
     ``models/omni3/README.md (`models/omni3/README.md` in the repository)``; links inside
-    ``docs/``, absolute URLs and anchors are left alone.
+    ``docs/``, absolute URLs and anchors are left alone, and so are links into
+    ``renders/``, which the site carries (:func:`on_files`): ``../renders/x.gif`` from a
+    top-level page becomes ``renders/x.gif``.
     """
     def repl(match: re.Match[str]) -> str:
-        _, text, target = match.groups()
+        bang, text, target = match.groups()
         if "://" in target or target.startswith(("#", "mailto:", "/")):
             return match.group(0)
         path = posixpath.normpath(posixpath.join(page_dir, target.split("#")[0]))
         if not path.startswith("../"):
             return match.group(0)
         repo_path = path[len("../"):]
+        if repo_path.startswith(f"{RENDERS}/"):      # copied into the site: keep the link
+            site_path = posixpath.relpath(repo_path, page_dir or ".")
+            return f"{bang}[{text}]({site_path}{target[len(target.split('#')[0]):]})"
         shown = text.strip("`") or repo_path
         if shown == repo_path:
             return f"`{repo_path}` (in the repository)"
