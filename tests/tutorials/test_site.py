@@ -30,11 +30,24 @@ def test_outside_links_become_repository_paths() -> None:
     assert "[inside](analytical.md)" in out and "[web](https://example.org/a.md)" in out
     assert "![pic](renders/disc.gif)" in out
     # The clips are carried by the site: the link is kept, relative to the site's copy.
-    assert site.outside_links("![c](../renders/disc.gif)", "") == "![c](renders/disc.gif)"
-    assert (site.outside_links("[c](../../renders/a.gif)", "tutorials")
+    carried = {"renders/disc.gif", "renders/a.gif"}
+    assert (site.outside_links("![c](../renders/disc.gif)", "", carried)
+            == "![c](renders/disc.gif)")
+    assert (site.outside_links("[c](../../renders/a.gif)", "tutorials", carried)
             == "[c](../renders/a.gif)")
+    assert site.outside_links("![c](../renders/disc.gif)", "") == (
+        "c (`renders/disc.gif` in the repository)")
+    # A link out of the repository is left for MkDocs to report.
+    assert site.outside_links("[x](../../secret.md)", "") == "[x](../../secret.md)"
     # From a sub-folder, one level up stays inside docs/.
     assert site.outside_links("[a](../index.md)", "tutorials") == "[a](../index.md)"
+
+
+def test_carried_files_are_pictures_and_clips_outside_docs() -> None:
+    text = ("![p](../reports/plots/a.png) [r](../reports/validation.md) ![i](img/x.png) "
+            "![c](../../renders/b.gif#t) [w](https://example.org/c.png)")
+    assert site.carried_files(text, "") == {"reports/plots/a.png"}
+    assert site.carried_files(text, "sub") == {"renders/b.gif"}
 
 
 @dataclass(frozen=True)

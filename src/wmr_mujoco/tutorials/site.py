@@ -3,8 +3,9 @@
 * :func:`on_config`: drops ``nav`` entries whose page does not exist yet (the generated
   result and benchmark pages appear when their generator has run), so that a strict
   build passes with or without them;
-* :func:`on_files`: adds every robot's clips from ``renders/`` to the site (copied at
-  build time, never into ``docs/``);
+* :func:`on_files`: adds every robot's clips from ``renders/``, and any picture or clip a
+  page links outside ``docs/`` (the reports' plots), to the site under the same path
+  (copied at build time, never into ``docs/``);
 * :func:`on_page_markdown`: fills the gallery from the robots' registry, expands
   ``<!-- api: PACKAGE -->`` into one mkdocstrings block per module of ``PACKAGE``, and
   turns links that leave ``docs/`` for the repository (``../models/...``) into repository
@@ -25,7 +26,7 @@ import posixpath
 import re
 import shutil
 import tempfile
-from collections.abc import Iterable, Iterator
+from collections.abc import Container, Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -101,25 +102,47 @@ def gallery_markdown(robots: Iterable[Any], renders: Path) -> str:
     return "\n".join(lines)
 
 
-def outside_links(markdown: str, page_dir: str) -> str:
+#: Files a page may show from outside ``docs/`` (clips, plots): carried into the site.
+CARRIED = (".gif", ".png", ".svg", ".jpg", ".jpeg", ".mp4", ".webm")
+
+
+def _outside(page_dir: str, target: str) -> str | None:
+    """The repository path a relative link leaves ``docs/`` for.
+
+    None if it stays inside ``docs/``, or leaves the repository too (MkDocs then reports
+    it as a broken link).
+    """
+    if "://" in target or target.startswith(("#", "mailto:", "/")):
+        return None
+    path = posixpath.normpath(posixpath.join(page_dir, target.split("#")[0]))
+    if not path.startswith("../") or path.startswith("../../"):
+        return None
+    return path[len("../"):]
+
+
+def carried_files(markdown: str, page_dir: str) -> set[str]:
+    """Repository paths of the pictures and clips outside ``docs/`` that a page links to."""
+    found = (_outside(page_dir, m.group(3)) for m in _LINK.finditer(markdown))
+    return {p for p in found if p and p.lower().endswith(CARRIED)}
+
+
+def outside_links(markdown: str, page_dir: str, carried: Container[str] = ()) -> str:
     """Links and images whose target leaves ``docs/`` become the repository path in code.
 
     ``page_dir`` is the page's folder relative to ``docs/`` ('' at the top). A link
     ``[models/omni3/README.md](../models/omni3/README.md)`` from a top-level page becomes
     ``models/omni3/README.md (`models/omni3/README.md` in the repository)``; links inside
-    ``docs/``, absolute URLs and anchors are left alone, and so are links into
-    ``renders/``, which the site carries (:func:`on_files`): ``../renders/x.gif`` from a
-    top-level page becomes ``renders/x.gif``.
+    ``docs/``, absolute URLs and anchors are left alone. Files in ``carried`` (repository
+    paths the site holds under the same path, :func:`on_files`) keep their link, relative
+    to the site's copy: ``../renders/x.gif`` from a top-level page becomes
+    ``renders/x.gif``.
     """
     def repl(match: re.Match[str]) -> str:
         bang, text, target = match.groups()
-        if "://" in target or target.startswith(("#", "mailto:", "/")):
+        repo_path = _outside(page_dir, target)
+        if repo_path is None:
             return match.group(0)
-        path = posixpath.normpath(posixpath.join(page_dir, target.split("#")[0]))
-        if not path.startswith("../"):
-            return match.group(0)
-        repo_path = path[len("../"):]
-        if repo_path.startswith(f"{RENDERS}/"):      # copied into the site: keep the link
+        if repo_path in carried:
             site_path = posixpath.relpath(repo_path, page_dir or ".")
             return f"{bang}[{text}]({site_path}{target[len(target.split('#')[0]):]})"
         shown = text.strip("`") or repo_path
@@ -164,6 +187,8 @@ def _repo_root(config: Any) -> Path:
 # -- MkDocs event hooks ----------------------------------------------------------------
 
 _JUPYTER_DIR: list[Path] = []
+#: Repository paths carried into the site by :func:`on_files`.
+_CARRIED: set[str] = set()
 
 
 def quiet_kernels() -> Path:
@@ -197,7 +222,11 @@ def on_config(config: Any) -> Any:
 
 
 def on_files(files: Any, config: Any) -> Any:
-    """Add the robots' clips in ``renders/`` to the site, under ``renders/``."""
+    """Add MathJax, the robots' clips and the pictures pages link outside ``docs/``.
+
+    Each carried file keeps its repository path in the site (``renders/x.gif``,
+    ``reports/plots/y.png``): the generated result pages may show the reports' plots.
+    """
     from mkdocs.structure.files import File
 
     from wmr_mujoco.robots import ROBOTS
@@ -209,11 +238,16 @@ def on_files(files: Any, config: Any) -> Any:
         files.append(File.generated(config, MATHJAX, abs_src_path=str(bundle)))
     files.append(File.generated(config, MATHJAX_CONFIG, content=_MATHJAX_SETTINGS))
     files.append(File.generated(config, STYLE, content=_STYLE))
-    renders = _repo_root(config) / RENDERS
-    for _, _, name in clip_files(ROBOTS.values()):
-        if (renders / name).is_file() and files.get_file_from_path(f"{RENDERS}/{name}") is None:
-            files.append(File(f"{RENDERS}/{name}", str(renders.parent), config["site_dir"],
-                              config["use_directory_urls"]))
+    root = _repo_root(config)
+    wanted = {f"{RENDERS}/{name}" for _, _, name in clip_files(ROBOTS.values())}
+    for page in files.documentation_pages():
+        if page.src_uri.endswith(".md"):
+            wanted |= carried_files(Path(page.abs_src_path).read_text(encoding="utf-8"),
+                                    posixpath.dirname(page.src_uri))
+    for path in sorted(wanted):
+        if (root / path).is_file() and files.get_file_from_path(path) is None:
+            files.append(File(path, str(root), config["site_dir"], config["use_directory_urls"]))
+            _CARRIED.add(path)
     return files
 
 
@@ -231,4 +265,4 @@ def on_page_markdown(markdown: str, page: Any, config: Any, files: Any) -> str:
         table = gallery_markdown(ROBOTS.values(), _repo_root(config) / RENDERS)
         markdown = markdown.replace(GALLERY_MARKER, table)
     markdown = _API.sub(lambda m: api_markdown(m.group(1)), markdown)
-    return outside_links(markdown, posixpath.dirname(page.file.src_uri))
+    return outside_links(markdown, posixpath.dirname(page.file.src_uri), _CARRIED)
