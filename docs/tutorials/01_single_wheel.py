@@ -37,7 +37,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import wmr_mujoco as wmr
-from wmr_mujoco.analytic import unicycle
+from wmr_mujoco.analytic import unicycle, wrap_angle
 from wmr_mujoco.tutorials.checks import check_circle_radius
 
 # %% [markdown]
@@ -61,8 +61,9 @@ print(unicycle.constant_input_pose(q, 0.5, 0.4, t).round(3))   # one lap: back t
 # %%
 v, omega = 0.5, 0.4
 run = wmr.compare("disc", [wmr.const(v, ramp=0.5), omega], duration=12.0)
-print("final pose, physics:", run.sim.pose[-1].round(4))
-print("final pose, model:  ", run.model.pose[-1].round(4))
+for label, traj in (("physics", run.sim), ("model", run.model)):
+    x, y, phi = traj.pose[-1]
+    print(f"final pose, {label:8s} x = {x:.4f} m, y = {y:.4f} m, φ = {wrap_angle(phi):.4f} rad")
 print("worst position error:", round(run.metric("worst position error", "% of path"), 3),
       "% of path; passed:", run.passed)
 

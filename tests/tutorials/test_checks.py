@@ -48,6 +48,19 @@ def test_circle_radius_malformed(bad: object) -> None:
     assert_hint(checks.check_circle_radius(bad, 0.5, 0.4), "radius")
 
 
+def test_circle_radius_without_a_circle() -> None:
+    assert_hint(checks.check_circle_radius(1.0, 0.5, 0.0), "straight line")
+    assert_hint(checks.check_circle_radius(1.0, 0.0, 0.4), "on the spot")
+
+
+def test_an_unforeseen_answer_still_gets_no_traceback() -> None:
+    class Broken:
+        @property
+        def pose(self):
+            raise RuntimeError("no pose here")
+    assert_hint(checks.check_closed_loop(Broken()), "could not be checked", "RuntimeError")
+
+
 # -- closed loop -----------------------------------------------------------------------
 
 def polyline(points: list[tuple[float, float, float]], n: int = 50) -> np.ndarray:
@@ -93,6 +106,7 @@ def test_parallel_park() -> None:
     assert_hint(checks.check_parallel_park(skewed), "forward offset 0.3", "heading 11.5",
                 "steering 0.3")
     assert_hint(checks.check_parallel_park(np.zeros((3, 3))), "shape (N, 4)")
+    assert_hint(checks.check_parallel_park(np.zeros((0, 4))), "fewer than two")
 
 
 # -- tricycle ICR ----------------------------------------------------------------------

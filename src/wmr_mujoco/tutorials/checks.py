@@ -61,6 +61,9 @@ def _exercise(name: str) -> Callable[[Callable[..., str]], Callable[..., CheckRe
                 return CheckResult(name, True, body(*args, **kwargs))
             except _HintError as hint:
                 return CheckResult(name, False, str(hint))
+            except Exception as exc:  # an answer no hint foresaw: still no traceback
+                return CheckResult(name, False, f"this answer could not be checked "
+                                                f"({type(exc).__name__}: {exc})")
         return check
     return wrap
 
@@ -112,7 +115,11 @@ def check_circle_radius(radius: object, v: float, omega: float) -> str:
     carries that error.
     """
     r = _number("radius", radius)
-    expected = abs(_number("v", v) / _number("omega", omega))
+    v, omega = _number("v", v), _number("omega", omega)
+    if v == 0 or omega == 0:
+        raise _HintError(f"v = {v:g} m/s, ω = {omega:g} rad/s: a circle needs both non-zero "
+                         "(ω = 0 drives a straight line, v = 0 turns on the spot)")
+    expected = abs(v / omega)
     return _relative("radius", r, expected, 0.01, "m")
 
 
@@ -181,6 +188,8 @@ def check_parallel_park(trajectory: object) -> str:
             array of ``(x, y, heading, steer)``).
     """
     states = _array("trajectory", getattr(trajectory, "states", trajectory), (None, 4))
+    if len(states) < 2:
+        raise _HintError("the trajectory has fewer than two samples")
     start, end = states[0], states[-1]
     c, s = math.cos(start[2]), math.sin(start[2])
     dx, dy = end[:2] - start[:2]
