@@ -57,6 +57,22 @@ bench: $(STAMP)
 readme: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.docs_sync.readme_sync
 
+# The documentation site in site/: MkDocs, offline, warnings as errors; runs every
+# tutorial (docs/tutorials/NN_*.py) while building (WMR_DOCS_EXECUTE=false skips that).
+# (docs is phony: the folder docs/ must not stand for the target.)
+.PHONY: docs tutorials
+DOCS_STAMP := $(VENV)/.installed-docs
+$(DOCS_STAMP): $(STAMP)
+	$(BIN)/python -m pip install --quiet -e ".[docs]"
+	touch $(DOCS_STAMP)
+
+docs: $(DOCS_STAMP)
+	NO_MKDOCS_2_WARNING=1 $(BIN)/mkdocs build --strict
+
+# Every tutorial run top to bottom as a script, its exercise checked, its time printed.
+tutorials: $(STAMP)
+	$(BIN)/python -m pytest tests/docs/test_tutorials.py -q -s
+
 sysdeps:
 	bash scripts/install-system-deps.sh
 

@@ -557,9 +557,13 @@ class HybridRun:
     """Time series of a hybrid simulation.
 
     Attributes:
-        t: times, s; pose: (N, 3) X, Y, ψ; twist: (N, 3) u, v, r; thetas: (N, 3) wheel
-        angles; torques: (N, 3); switches: (time, wheel, energy lost J) per mode switch
-        (wheels switching together share one impact, its loss on the first of them).
+        t: times, s.
+        pose: (N, 3) X, Y, ψ.
+        twist: (N, 3) u, v, r.
+        thetas: (N, 3) wheel angles.
+        torques: (N, 3).
+        switches: (time, wheel, energy lost J) per mode switch (wheels switching together
+            share one impact, its loss on the first of them).
     """
 
     t: np.ndarray
