@@ -1,0 +1,122 @@
+"""``audit(path)``: read a robot, find its wheels and class, drive it, diagnose it.
+
+The steps (each in its module): :mod:`~wmr_mujoco.audit.scene` reads the file and adds a
+floor; :mod:`~wmr_mujoco.audit.wheels` finds the wheels, their kinds and rolling radii;
+:mod:`~wmr_mujoco.audit.kinematics` derives the Jacobian and the manoeuvres;
+:mod:`~wmr_mujoco.audit.drive` picks the servos; :mod:`~wmr_mujoco.audit.run` drives each
+manoeuvre beside the ideal model; :mod:`~wmr_mujoco.audit.figures` measures;
+:mod:`~wmr_mujoco.audit.diagnoses` looks for known pitfalls and confirms each with a
+counterfactual run.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.audit.drive import Drive, make_drive
+from wmr_mujoco.audit.errors import AuditInputError
+from wmr_mujoco.audit.figures import Figures, figures, verdict
+from wmr_mujoco.audit.kinematics import Manoeuvre, jacobian, manoeuvres, reference_point, span
+from wmr_mujoco.audit.run import Record, run
+from wmr_mujoco.audit.scene import Scene, read_scene
+from wmr_mujoco.audit.wheels import Wheels, find
+
+#: Seconds each manoeuvre is driven (ramp included) unless told otherwise.
+DURATION = 2.0
+#: Accepted range of ``duration``, s (enough to pass the ramp; bounded run time).
+DURATION_RANGE = (0.5, 30.0)
+
+
+@dataclass
+class Outcome:
+    """One manoeuvre's run: the record, its figures and the verdict line."""
+
+    manoeuvre: Manoeuvre
+    record: Record
+    figures: Figures
+    verdict: str
+
+
+@dataclass
+class Audit:
+    """Everything the audit found (the report is written from this)."""
+
+    scene: Scene
+    wheels: Wheels
+    drive: Drive
+    jacobian_rows: tuple[str, ...]
+    jacobian: np.ndarray
+    reference: np.ndarray
+    span: float
+    duration: float
+    outcomes: list[Outcome]
+    diagnoses: list = field(default_factory=list)
+
+    @property
+    def robot_class(self) -> tuple[int, int]:
+        """Campion's (δm, δs)."""
+        return self.wheels.classification.robot_class
+
+    def worst(self) -> Outcome:
+        """The manoeuvre with the largest judged position error."""
+        return max(self.outcomes, key=lambda o: judged(o.figures, self.span))
+
+
+def judged(f: Figures, robot_span: float) -> float:
+    """The judged position figure: % of path, or a spin's drift in % of the span."""
+    return f.position_pct if f.position_pct is not None else 100.0 * f.drift_m / max(
+        robot_span, 0.05)
+
+
+def drive_all(a: Audit, model: mujoco.MjModel | None = None,
+              only: tuple[str, ...] | None = None) -> list[Outcome]:
+    """Run the audit's manoeuvres (``only`` those named) on ``model`` (default: its own)."""
+    out = []
+    for m in manoeuvres(a.wheels):
+        if only is not None and m.name not in only:
+            continue
+        rec = run(a.drive, a.wheels, m, a.duration, a.reference, model)
+        f = figures(rec)
+        out.append(Outcome(m, rec, f, verdict(f, a.span)))
+    return out
+
+
+def audit(path: Path | str, duration: float = DURATION, diagnose: bool = True,
+          progress: Callable[[str], None] | None = None) -> Audit:
+    """Audit the robot in the MJCF file ``path`` (module docstring).
+
+    Args:
+        path: an MJCF scene with a floor, or a robot file (a floor is added).
+        duration: seconds each manoeuvre is driven, in :data:`DURATION_RANGE`.
+        diagnose: whether to look for pitfalls (and run their counterfactuals).
+        progress: called with one line per step.
+
+    Raises:
+        AuditInputError: bad input (exit code 2), before any run.
+        NotWheeledError: not a wheeled robot the audit can drive (exit code 4).
+        SimulationDivergedError: a run diverged.
+    """
+    lo, hi = DURATION_RANGE
+    if not isinstance(duration, (int, float)) or not lo <= duration <= hi:
+        raise AuditInputError(f"duration {duration!r} s is outside [{lo:g}, {hi:g}] s")
+    say = progress or (lambda _: None)
+    scene = read_scene(path)
+    found = find(scene.model)
+    names, jac = jacobian(found)
+    ref = reference_point(found)
+    a = Audit(scene, found, make_drive(scene, found), names, jac, ref, span(found, ref),
+              float(duration), [])
+    say(f"class {a.robot_class}; {a.drive.statement}")
+    a.outcomes = drive_all(a)
+    for o in a.outcomes:
+        say(f"{o.manoeuvre.name}: {o.figures.error_label()}, {o.figures.heading_deg:.1f}°")
+    if diagnose:
+        from wmr_mujoco.audit.diagnoses import diagnose as find_pitfalls
+
+        a.diagnoses = find_pitfalls(a, say)
+    return a
