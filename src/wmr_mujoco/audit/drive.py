@@ -123,8 +123,8 @@ def _own(model: mujoco.MjModel, found: Wheels) -> Drive | None:
     rank = np.linalg.matrix_rank(rows, tol=1e-6)
     if (steer and rank < 1) or (not steer and rank < found.classification.delta_m):
         return None
-    names = ", ".join(f"{mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, c.actuator) or c.actuator} "
-                      f"({c.mode})" for c in (*spin.values(), *steer.values()))
+    label = mujoco.mjtObj.mjOBJ_ACTUATOR
+    names = ", ".join(f"{mujoco.mj_id2name(model, label, c.actuator) or c.actuator} ({c.mode})" for c in (*spin.values(), *steer.values()))
     return Drive(model, spin, steer, False, f"driven through its own servos: {names}")
 
 
