@@ -124,7 +124,8 @@ def _own(model: mujoco.MjModel, found: Wheels) -> Drive | None:
     if (steer and rank < 1) or (not steer and rank < found.classification.delta_m):
         return None
     label = mujoco.mjtObj.mjOBJ_ACTUATOR
-    names = ", ".join(f"{mujoco.mj_id2name(model, label, c.actuator) or c.actuator} ({c.mode})" for c in (*spin.values(), *steer.values()))
+    names = ", ".join(f"{mujoco.mj_id2name(model, label, c.actuator) or c.actuator} ({c.mode})"
+                      for c in (*spin.values(), *steer.values()))
     return Drive(model, spin, steer, False, f"driven through its own servos: {names}")
 
 
