@@ -21,7 +21,14 @@ import numpy as np
 from wmr_mujoco.audit.drive import Drive, make_drive
 from wmr_mujoco.audit.errors import AuditInputError
 from wmr_mujoco.audit.figures import Figures, figures, verdict
-from wmr_mujoco.audit.kinematics import Manoeuvre, jacobian, manoeuvres, reference_point, span
+from wmr_mujoco.audit.kinematics import (
+    Manoeuvre,
+    infeasible,
+    jacobian,
+    manoeuvres,
+    reference_point,
+    span,
+)
 from wmr_mujoco.audit.run import Record, run
 from wmr_mujoco.audit.scene import Scene, read_scene
 from wmr_mujoco.audit.wheels import Wheels, find
@@ -55,6 +62,8 @@ class Audit:
     span: float
     duration: float
     outcomes: list[Outcome]
+    manoeuvres: list[Manoeuvre] = field(default_factory=list)
+    skipped: dict[str, str] = field(default_factory=dict)
     diagnoses: list = field(default_factory=list)
 
     @property
@@ -67,6 +76,12 @@ class Audit:
         return max(self.outcomes, key=lambda o: judged(o.figures, self.span))
 
 
+def steer_limits(model: mujoco.MjModel, found: Wheels) -> dict[str, tuple[float, float]]:
+    """Wheel name -> the range of its steering joint, for the limited ones."""
+    return {w.name: tuple(float(x) for x in model.jnt_range[w.steer_joint])
+            for w in found.wheels if w.steer_joint >= 0 and model.jnt_limited[w.steer_joint]}
+
+
 def judged(f: Figures, robot_span: float) -> float:
     """The judged position figure: % of path, or a spin's drift in % of the span."""
     return f.position_pct if f.position_pct is not None else 100.0 * f.drift_m / max(
@@ -74,13 +89,18 @@ def judged(f: Figures, robot_span: float) -> float:
 
 
 def drive_all(a: Audit, model: mujoco.MjModel | None = None,
-              only: tuple[str, ...] | None = None) -> list[Outcome]:
-    """Run the audit's manoeuvres (``only`` those named) on ``model`` (default: its own)."""
+              only: tuple[str, ...] | None = None, drive: Drive | None = None
+              ) -> list[Outcome]:
+    """Run the audit's manoeuvres (``only`` those named).
+
+    On ``model`` (default: the drive's), through ``drive``'s channels (default: the
+    audit's).
+    """
     out = []
-    for m in manoeuvres(a.wheels):
+    for m in a.manoeuvres:
         if only is not None and m.name not in only:
             continue
-        rec = run(a.drive, a.wheels, m, a.duration, a.reference, model)
+        rec = run(drive or a.drive, a.wheels, m, a.duration, a.reference, model)
         f = figures(rec)
         out.append(Outcome(m, rec, f, verdict(f, a.span)))
     return out
@@ -112,6 +132,13 @@ def audit(path: Path | str, duration: float = DURATION, diagnose: bool = True,
     a = Audit(scene, found, make_drive(scene, found), names, jac, ref, span(found, ref),
               float(duration), [])
     say(f"class {a.robot_class}; {a.drive.statement}")
+    limits = steer_limits(a.drive.model, found)
+    for m in manoeuvres(found):
+        why = infeasible(found, m, set(a.drive.spin), limits)
+        if why is None:
+            a.manoeuvres.append(m)
+        else:
+            a.skipped[m.name] = why
     a.outcomes = drive_all(a)
     for o in a.outcomes:
         say(f"{o.manoeuvre.name}: {o.figures.error_label()}, {o.figures.heading_deg:.1f}°")

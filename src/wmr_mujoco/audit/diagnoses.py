@@ -19,6 +19,7 @@ geometry, without a counterfactual (the audit does not rebuild rollers).
 from __future__ import annotations
 
 import copy
+import dataclasses
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -29,6 +30,9 @@ from wmr_mujoco.audit.core import Audit, Outcome, drive_all, judged
 from wmr_mujoco.audit.wheels import subtree_bodies
 
 CONFIRM_POINTS = 1.0
+#: Gears (m) read as an assumed wheel radius, and the relative mismatch that counts.
+GEAR_RADIUS = (0.005, 2.0)
+GEAR_TOL = 0.02
 CONFIRM_SHARE = 0.25
 #: Envelope ripple above which a Swedish wheel's roller ring is called polygonal.
 RIPPLE_FLAG = 0.005
@@ -170,6 +174,40 @@ def scrubbing_wheels(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
         "a ball caster", m, turning or None)]
 
 
+def actuator_radius(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
+    """Wheel servos whose gear is a length other than the rolling radius.
+
+    A servo with gear g on a wheel joint has length ``g q``: a gear that is a length
+    (:data:`GEAR_RADIUS` bounds) is the radius its author assumed, so that ``ctrl`` is
+    the wheel's ground speed. Commanded that way the wheel moves at ``(R/g) ctrl``. The
+    run "with the cause" commands ``ctrl = v`` as the author meant; the audit's own runs
+    (``ctrl = g ω``, exact) are the ones without it.
+    """
+    lo, hi = GEAR_RADIUS
+    bad = {n: ch for n, ch in a.drive.spin.items()
+           if lo <= abs(ch.gear) <= hi and abs(abs(ch.gear) / _radius(a, n) - 1) > GEAR_TOL}
+    if not bad:
+        return []
+    drive = dataclasses.replace(a.drive, spin={
+        n: dataclasses.replace(ch, gear=np.sign(ch.gear) * _radius(a, n)) if n in bad else ch
+        for n, ch in a.drive.spin.items()})
+    names = ", ".join(f"{n} gear {ch.gear:g} m vs rolling radius {_radius(a, n):.4g} m"
+                      for n, ch in bad.items())
+    say("counterfactual: wheels commanded in ground speed through their gear")
+    after = _scores(a, drive_all(a, drive=drive))
+    before = _scores(a, a.outcomes)
+    gain = max(after.values()) - max(before.values())
+    ok = gain > CONFIRM_POINTS and gain > CONFIRM_SHARE * max(after.values())
+    return [Diagnosis("actuator radius", f"wheel servo(s) assume a radius other than the "
+                      f"rolling radius ({names}) when ctrl is taken as ground speed", after,
+                      before, ok, "set each wheel servo's gear to the rolling radius (or "
+                      "command it in rad/s with gear 1)")]
+
+
+def _radius(a: Audit, name: str) -> float:
+    return next(w.radius for w in a.wheels.wheels if w.name == name)
+
+
 def timestep(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
     """Wheel contacts whose time constant is below two timesteps."""
     m0 = a.drive.model
@@ -218,7 +256,8 @@ def ripple(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
                       "more or longer rollers (overlapping rows) to round the envelope")]
 
 
-PITFALLS = (passive_friction, cylinder_wheels, scrubbing_wheels, timestep, noslip, ripple)
+PITFALLS = (passive_friction, cylinder_wheels, scrubbing_wheels, actuator_radius, timestep,
+            noslip, ripple)
 
 
 def diagnose(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:

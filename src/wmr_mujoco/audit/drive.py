@@ -11,9 +11,9 @@ actuator's length is ``g q``) in one of three modes:
 
 A steering joint takes a position servo (``ctrl = g β``) or an integrating one, whose
 rate the audit sets to ``(g β − act)/τ`` until it holds the angle. The robot's own
-actuators are used when every rolling wheel an actuator moves has one of those, the
-driven wheels fix the motion (rank of their Jacobian rows = δm, or ≥ 1 with steering)
-and every steering joint has a servo. Otherwise the audit removes the actuators on the
+actuators are used when every rolling wheel an actuator moves has one of those and every
+steering joint has a servo (manoeuvres the driven wheels do not determine are left out:
+:func:`~wmr_mujoco.audit.kinematics.infeasible`). Otherwise the audit removes the actuators on the
 wheel and steering joints (and tendons through them) and imposes velocity servos on every
 rolling wheel (``kv = I/τ`` with ``I = m R²/n + M_jj`` the inertia a wheel moves) and
 position servos on the steering joints; the report says so. Under an explicit integrator
@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.audit.kinematics import ROLLING_KINDS, wheel_row
+from wmr_mujoco.audit.kinematics import ROLLING_KINDS
 from wmr_mujoco.audit.scene import Scene
 from wmr_mujoco.audit.wheels import AuditWheel, Wheels
 
@@ -118,10 +118,6 @@ def _own(model: mujoco.MjModel, found: Wheels) -> Drive | None:
                 return None
             steer[w.name] = ch
     if not spin:
-        return None
-    rows = np.array([wheel_row(w) for w in _rolling(found) if w.name in spin])
-    rank = np.linalg.matrix_rank(rows, tol=1e-6)
-    if (steer and rank < 1) or (not steer and rank < found.classification.delta_m):
         return None
     label = mujoco.mjtObj.mjOBJ_ACTUATOR
     names = ", ".join(f"{mujoco.mj_id2name(model, label, c.actuator) or c.actuator} ({c.mode})"

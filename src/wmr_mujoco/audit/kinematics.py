@@ -19,7 +19,9 @@ parallel to ``v_c`` (the smaller of the two angles, the wheel then rolling eithe
 Castors and ball wheels follow; they add no row. The manoeuvres (straight, arc, spin and,
 for a holonomic robot, strafe and diagonal) are twists the sliding constraints of the
 fixed wheels (the class's C1f, :mod:`wmr_mujoco.analytic.campion`) allow: translations
-across the fixed axle and rotations about a point on it.
+across the fixed axle and rotations about a point on it; :func:`infeasible` drops those
+that need a steering angle beyond its joint's range or that the driven wheels do not
+determine.
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from wmr_mujoco.analytic.campion import sliding_row
 from wmr_mujoco.audit.wheels import AuditWheel, Wheels
 
 #: Ground speed of the manoeuvres' reference point, m/s (the peer study's speed).
@@ -141,7 +144,7 @@ def manoeuvres(found: Wheels, speed: float = SPEED) -> tuple[Manoeuvre, ...]:
     c = reference_point(found)
     f = forward(found)
     reach = max(span(found, c), 1e-3)
-    cls = found.classification.robot_class
+    holonomic = found.classification.robot_class == (3, 0)
 
     def twist(direction: np.ndarray, rate: float) -> tuple[float, float, float]:
         u, v = speed * direction
@@ -152,13 +155,46 @@ def manoeuvres(found: Wheels, speed: float = SPEED) -> tuple[Manoeuvre, ...]:
     out = [Manoeuvre("straight", twist(f, 0.0), f"straight at {speed:g} m/s"),
            Manoeuvre("arc", twist(f, speed / arc_radius),
                      f"left arc of radius {arc_radius:.2f} m at {speed:g} m/s")]
-    if cls == (2, 1):  # one steered wheel and casters: the yaw rate is not kinematic
-        return tuple(out[:1])
     out.append(Manoeuvre("spin", twist(np.zeros(2), spin_rate),
                          f"spin on the spot at {spin_rate:.2f} rad/s"))
-    if cls == (3, 0):
+    if holonomic:
         left = np.array([-f[1], f[0]])
         diag = (f + left) / np.sqrt(2.0)
         out += [Manoeuvre("strafe", twist(left, 0.0), f"sideways (left) at {speed:g} m/s"),
                 Manoeuvre("diagonal", twist(diag, 0.0), f"diagonal (45° left) at {speed:g} m/s")]
     return tuple(out)
+
+
+def infeasible(found: Wheels, man: Manoeuvre, driven: set[str],
+               steer_limits: dict[str, tuple[float, float]]) -> str | None:
+    """Why ``man`` cannot be driven kinematically, or None when it can.
+
+    Two reasons: a steering angle outside its joint's range (``steer_limits``: wheel name
+    -> range about the joint's own axis, from the model; ``sense`` +1 assumed there, the
+    range being symmetric in practice); or a twist the wheels do not determine: the
+    sliding rows (fixed and steered wheels) and the driven wheels' rows must have rank 3,
+    else part of the motion (a unicycle's or a single steered wheel's yaw) is left to the
+    dynamics, and only the straight run is kept.
+    """
+    twist = np.array(man.twist)
+    rows = []
+    for w in found.wheels:
+        if w in found.scrubbing or w.kind not in ROLLING_KINDS:
+            continue
+        beta = steer_angle(w, twist, 1.0) if w.kind == "steerable" else 0.0
+        if w.name in steer_limits:
+            lo, hi = steer_limits[w.name]
+            if not lo <= beta <= hi:
+                return (f"needs {w.name} steered {beta:+.2f} rad, outside its range "
+                        f"[{lo:g}, {hi:g}] rad")
+        if w.kind != "swedish":
+            c, s_ = np.cos(beta), np.sin(beta)
+            a = np.array(w.wheel.axle)
+            rows.append(sliding_row(w.wheel.position, np.array([c * a[0] - s_ * a[1],
+                                                                s_ * a[0] + c * a[1]])))
+        if w.name in driven:
+            rows.append(wheel_row(w, beta))
+    if man.name != "straight" and np.linalg.matrix_rank(np.array(rows), tol=1e-6) < 3:
+        return ("the driven wheels do not determine this motion (rank of the sliding and "
+                "driven-wheel rows < 3): its yaw is left to the dynamics")
+    return None

@@ -26,7 +26,7 @@ def verdict_lines(a: Audit) -> list[str]:
     """One line per manoeuvre: name, verdict, worst position and heading errors."""
     return [f"{o.manoeuvre.name}: {o.verdict} (worst {o.figures.error_label()}, "
             f"{o.figures.heading_deg:.1f}° heading; {o.manoeuvre.description})"
-            for o in a.outcomes]
+            for o in a.outcomes] + [f"{n}: not driven ({why})" for n, why in a.skipped.items()]
 
 
 def summary_text(a: Audit) -> str:
@@ -101,7 +101,7 @@ def as_json(a: Audit) -> dict:
         "jacobian": {"rows": list(a.jacobian_rows), "matrix": a.jacobian.tolist()},
         "reference_point": a.reference.tolist(), "span": a.span,
         "drive": {"imposed": a.drive.imposed, "statement": a.drive.statement},
-        "duration": a.duration,
+        "duration": a.duration, "skipped": a.skipped,
         "manoeuvres": [{"name": o.manoeuvre.name, "twist": list(o.manoeuvre.twist),
                         "verdict": o.verdict, "figures": o.figures.as_dict()}
                        for o in a.outcomes],
