@@ -26,17 +26,33 @@ LEGS = """<mujoco><worldbody><geom type="plane" size="2 2 .1"/>
 <geom type="capsule" fromto="0 0 0 0 0 -.4" size=".03"/></body>
 </body></worldbody></mujoco>"""
 
-#: A differential drive without floor: two sphere wheels with velocity servos and a
-#: frictionless ball skid (condim 1).
-DIFF = """<mujoco><option timestep="0.002" integrator="implicitfast"/><worldbody>
-<body name="base" pos="0 0 .05"><freejoint/><geom type="box" size=".1 .08 .02" mass="2"/>
-<geom name="skid" type="sphere" size=".02" pos="-.08 0 -.03" condim="1"/>
-<body name="wl" pos=".03 .1 0"><joint name="left" axis="0 1 0"/>
-<geom type="sphere" size=".05" mass=".1"/></body>
-<body name="wr" pos=".03 -.1 0"><joint name="right" axis="0 1 0"/>
-<geom type="sphere" size=".05" mass=".1"/></body>
-</body></worldbody><actuator><velocity joint="left" kv="2"/><velocity joint="right" kv="2"/>
-</actuator></mujoco>"""
+
+
+def diff_xml(wheel: str = 'type="sphere" size=".05"', servo: str = 'kv="2"',
+             option: str = 'timestep="0.002" integrator="implicitfast"',
+             caster: str = "") -> str:
+    """A differential drive (robot file, no floor) with its parts as options.
+
+    Args:
+        wheel: the wheels' geom attributes (shape and size; centre 5 cm above the floor).
+        servo: the velocity servos' attributes.
+        option: the ``<option>`` attributes.
+        caster: attributes of a ball caster's ball joint; empty: a frictionless skid.
+    """
+    rear = (f'<body name="caster" pos="-.08 0 -.03"><joint name="ball" type="ball" {caster}/>'
+            '<geom type="sphere" size=".02" mass=".05"/></body>' if caster else
+            '<geom name="skid" type="sphere" size=".02" pos="-.08 0 -.03" condim="1"/>')
+    wheels = "".join(f'<body name="w{s}" pos=".03 {y} 0"><joint name="{s}" axis="0 1 0"/>'
+                     f'<geom {wheel} mass=".1"/></body>'
+                     for s, y in (("left", ".1"), ("right", "-.1")))
+    return (f'<mujoco><option {option}/><worldbody><body name="base" pos="0 0 .05">'
+            f'<freejoint/><geom type="box" size=".1 .08 .02" mass="2"/>{rear}{wheels}'
+            f'</body></worldbody><actuator><velocity joint="left" {servo}/>'
+            f'<velocity joint="right" {servo}/></actuator></mujoco>')
+
+
+#: The plain differential drive: sphere wheels, velocity servos, a frictionless skid.
+DIFF = diff_xml()
 
 
 @pytest.fixture

@@ -177,15 +177,16 @@ def scrubbing_wheels(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
 def actuator_radius(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
     """Wheel servos whose gear is a length other than the rolling radius.
 
-    A servo with gear g on a wheel joint has length ``g q``: a gear that is a length
-    (:data:`GEAR_RADIUS` bounds) is the radius its author assumed, so that ``ctrl`` is
+    A servo with gear g on a wheel joint has length ``g q``: a gear other than MuJoCo's
+    default 1 that is a length (:data:`GEAR_RADIUS` bounds) is the radius its author assumed, so that ``ctrl`` is
     the wheel's ground speed. Commanded that way the wheel moves at ``(R/g) ctrl``. The
     run "with the cause" commands ``ctrl = v`` as the author meant; the audit's own runs
     (``ctrl = g ω``, exact) are the ones without it.
     """
     lo, hi = GEAR_RADIUS
     bad = {n: ch for n, ch in a.drive.spin.items()
-           if lo <= abs(ch.gear) <= hi and abs(abs(ch.gear) / _radius(a, n) - 1) > GEAR_TOL}
+           if lo <= abs(ch.gear) <= hi and abs(ch.gear) != 1.0
+           and abs(abs(ch.gear) / _radius(a, n) - 1) > GEAR_TOL}
     if not bad:
         return []
     drive = dataclasses.replace(a.drive, spin={

@@ -25,6 +25,7 @@ from wmr_mujoco.audit.errors import AuditInputError, NotWheeledError
 from wmr_mujoco.audit.support import envelope
 from wmr_mujoco.models import classify
 from wmr_mujoco.models.colliders import colliders, is_collider
+from wmr_mujoco.sim.stepping import SimulationDivergedError
 
 #: Envelope ripple above which a jointed collider is not a wheel (a rolling ring of
 #: rollers ripples a few per cent; a limb's collider seen from its joint, tens).
@@ -131,6 +132,41 @@ def settle(model: mujoco.MjModel) -> mujoco.MjData:
     return data
 
 
+def unstable_at_rest(model: mujoco.MjModel) -> None:
+    """Raise if the model blows up at rest (MuJoCo's bad-acceleration warning).
+
+    The usual cause is a velocity gain too stiff for an explicit integrator: the servo
+    ``kv`` (times gear²) over the joint's own inertia ``M_jj`` is stable under Euler only
+    for ``kv Δt / M_jj < 2``; the message names every such actuator.
+
+    Raises:
+        SimulationDivergedError: the model diverged while settling.
+    """
+    data = settle(model)
+    if data.warning[int(mujoco.mjtWarning.mjWARN_BADQACC)].number == 0:
+        return
+    causes = []
+    if int(model.opt.integrator) in (int(mujoco.mjtIntegrator.mjINT_EULER),
+                                     int(mujoco.mjtIntegrator.mjINT_RK4)):
+        data = mujoco.MjData(model)
+        mujoco.mj_forward(model, data)
+        full = np.zeros((model.nv, model.nv))
+        mujoco.mj_fullM(model, data, full)
+        for a in range(model.nu):
+            if int(model.actuator_trntype[a]) != int(mujoco.mjtTrn.mjTRN_JOINT):
+                continue
+            dof = model.jnt_dofadr[model.actuator_trnid[a, 0]]
+            kv = -model.actuator_biasprm[a, 2] * model.actuator_gear[a, 0] ** 2
+            ratio = kv * model.opt.timestep / full[dof, dof]
+            if ratio > 2.0:
+                name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, a) or f"#{a}"
+                causes.append(f"actuator {name!r}: kv·Δt/M_jj = {ratio:.0f} > 2")
+    why = (f"; under the explicit integrator {', '.join(causes)} (use integrator="
+           f"\"implicitfast\" or a smaller kv)" if causes else "")
+    raise SimulationDivergedError(f"the model is unstable at rest: MuJoCo reset it while it "
+                                  f"settled at zero controls{why}")
+
+
 def _frictionless_skids(model: mujoco.MjModel, data: mujoco.MjData) -> bool:
     """Whether every rigid chassis collider touching the floor is frictionless."""
     floor = {g for g in colliders(model) if model.geom_bodyid[g] == 0}
@@ -168,6 +204,7 @@ def find(model: mujoco.MjModel) -> Wheels:
             wheels outside the theory (each named with the reason).
         AuditInputError: several robots on the floor, or the model diverges at rest.
     """
+    unstable_at_rest(model)
     try:
         found, notes = classify.find_wheels(model)
     except ValueError as err:
