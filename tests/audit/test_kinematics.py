@@ -43,3 +43,23 @@ def test_steer_angle_points_the_wheel_along_its_contact_velocity():
     assert steer_angle(w, twist, -1.0) == pytest.approx(-np.arctan(0.5), abs=1e-12)
     # Rolling backwards rather than turning beyond 90°:
     assert steer_angle(w, -twist, 1.0) == pytest.approx(np.arctan(0.5), abs=1e-12)
+
+
+def test_infeasible_names_the_steering_range_and_undetermined_yaw():
+    from wmr_mujoco.analytic.campion import classify_wheels
+    from wmr_mujoco.audit.kinematics import Manoeuvre, infeasible
+    from wmr_mujoco.audit.wheels import Wheels
+
+    rear = _wheel("fixed", (0.0, 0.0), (0.0, 1.0))
+    front = AuditWheel(Wheel("front", "steerable", (1.0, 0.0), (0.0, 1.0), radius=0.05),
+                       1, (), 0.05, 0.0, steer_joint=2)
+    found = Wheels((rear, front), classify_wheels((rear.wheel, front.wheel)), 0)
+    spin = Manoeuvre("spin", (0.0, 0.0, 1.0), "")  # front wheel must steer 90°
+    assert "outside its range" in infeasible(found, spin, {"w"}, {"front": (-1.0, 1.0)})
+    # Spinning about the rear wheel's contact: the rear wheel stands still, so only a
+    # driven front wheel determines the yaw rate.
+    assert infeasible(found, spin, {"w", "front"}, {}) is None
+    assert "do not determine" in infeasible(found, spin, {"w"}, {})
+    unicycle = Wheels((rear,), classify_wheels((rear.wheel,)), 0)
+    assert "do not determine" in infeasible(unicycle, spin, {"w"}, {})
+    assert infeasible(unicycle, Manoeuvre("straight", (0.2, 0.0, 0.0), ""), {"w"}, {}) is None

@@ -178,8 +178,8 @@ def actuator_radius(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
     """Wheel servos whose gear is a length other than the rolling radius.
 
     A servo with gear g on a wheel joint has length ``g q``: a gear other than MuJoCo's
-    default 1 that is a length (:data:`GEAR_RADIUS` bounds) is the radius its author assumed, so that ``ctrl`` is
-    the wheel's ground speed. Commanded that way the wheel moves at ``(R/g) ctrl``. The
+    default 1 that is a length (:data:`GEAR_RADIUS` bounds) is the radius its author
+    assumed, so that ``ctrl`` is the wheel's ground speed. Commanded that way the wheel moves at ``(R/g) ctrl``. The
     run "with the cause" commands ``ctrl = v`` as the author meant; the audit's own runs
     (``ctrl = g ω``, exact) are the ones without it.
     """

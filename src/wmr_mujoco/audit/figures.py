@@ -10,9 +10,9 @@
 * rolling-radius ripple: ``(max − min)/mean`` of each wheel's axle height, worst wheel;
 * share of wheel samples off the floor (no contact between the wheel and the floor);
 * deepest penetration into the floor, mm;
-* coasting energy drift: the largest rise of the total energy during the free coast over
-  the kinetic energy when it began (a passive system only loses energy: a rise is the
-  integrator's), %;
+* coasting energy drift: the largest rise of the total energy during the free coast above
+  its lowest value so far, ``max_t (E(t) − min_{s≤t} E(s))``, over the kinetic energy
+  when the coast began (a passive system only loses energy: a rise is the integrator's), %;
 * real-time factor: simulated over wall-clock seconds of the stepping.
 """
 
@@ -80,7 +80,7 @@ def figures(rec: Record) -> Figures:
                default=0.0)
     h = rec.height[held]
     ripple = float(np.max((h.max(axis=0) - h.min(axis=0)) / h.mean(axis=0)))
-    rise = float(np.max(rec.energy - rec.energy[0]))
+    rise = float(np.max(rec.energy - np.minimum.accumulate(rec.energy)))
     return Figures(
         position_pct=100.0 * float(err.max()) / path if path > MIN_PATH else None,
         drift_m=float(err.max()), heading_deg=float(heading.max()), path_m=path,
