@@ -5,8 +5,9 @@ for the commands that render, so that EGL can fall back to OSMesa.
 
 Exit codes: 0 done; 1 a validation target missed or a simulation diverged; 2 bad input
 (checked before any work starts); 3 no OpenGL; 4 not a wheeled robot (``wmr audit``,
-``wmr export``); 130 interrupted (Ctrl-C); 143 terminated (SIGTERM). An interrupted command prints one line and leaves no file behind (every
-output is written to a temporary file and renamed when complete).
+``wmr export``); 130 interrupted (Ctrl-C); 143 terminated (SIGTERM). An interrupted
+command prints one line and leaves no file behind (every output is written to a temporary
+file and renamed when complete).
 
 Output locations, the same rule for every command: ``wmr`` writes into a folder that
 exists; ``wmr validate --out DIR`` creates ``DIR`` itself (not its parents), ``wmr

@@ -30,3 +30,17 @@ def test_bad_input_exits_2(tmp_path, capsys):
     assert main(["audit", str(tmp_path / "missing.xml")]) == 2
     assert "no such file" in capsys.readouterr().err
     assert main(["audit", str(tmp_path), "--duration", "0"]) == 2
+
+
+def test_out_parent_must_exist_checked_before_work(write, tmp_path, capsys):
+    assert main(["audit", str(write(DIFF)), "--out", str(tmp_path / "a" / "b")]) == 2
+    assert "does not exist" in capsys.readouterr().err
+
+
+def test_registering_the_commands_does_not_import_mujoco():
+    import subprocess
+    import sys
+
+    code = ("import sys, wmr_mujoco.cli as c; c.build_parser(); "
+            "sys.exit('mujoco' in sys.modules)")
+    assert subprocess.run([sys.executable, "-c", code]).returncode == 0

@@ -33,12 +33,18 @@ def _run_audit(path: Path, out: Path | None, duration: float, diagnose: bool,
 
 
 def _cmd_audit(args: argparse.Namespace) -> int:
+    if args.out is not None:
+        from wmr_mujoco.validation.report import check_report_folder
+
+        check_report_folder(args.out)
     return _run_audit(args.scene, args.out, args.duration, not args.no_diagnose, args.quiet)
 
 
 def _cmd_export(args: argparse.Namespace) -> int:
     from wmr_mujoco.audit.export_robot import export_robot
+    from wmr_mujoco.validation.report import check_report_folder
 
+    check_report_folder(args.out)
     scene = export_robot(args.robot, args.set or [], args.out)
     print(f"wrote {args.out}")
     return _run_audit(scene, args.out / "audit", args.duration, not args.no_diagnose,
@@ -47,14 +53,15 @@ def _cmd_export(args: argparse.Namespace) -> int:
 
 def register(subparsers: argparse._SubParsersAction) -> None:
     """Add ``audit`` and ``export`` to ``wmr``'s subcommands."""
-    from wmr_mujoco.audit.core import DURATION
+    from wmr_mujoco.audit.limits import DURATION
 
     p = subparsers.add_parser(
         "audit", help="audit any MJCF wheeled robot: class, ideal kinematics, manoeuvres, "
         "pitfalls (exit 0 ran, 2 bad input, 4 not a wheeled robot)")
     p.add_argument("scene", type=Path, help="an MJCF scene with a floor, or a robot file "
                    "(a floor is added)")
-    p.add_argument("--out", type=Path, help="report folder (audit.md, audit.json, plots)")
+    p.add_argument("--out", type=Path, help="report folder (audit.md, audit.json, plots), "
+                   "created if its parent exists")
     p.add_argument("--duration", type=float, default=DURATION,
                    help=f"seconds per manoeuvre (default {DURATION:g})")
     p.add_argument("--no-diagnose", action="store_true", help="skip the counterfactual runs")
@@ -66,7 +73,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     e.add_argument("robot", help="a registered robot (see `wmr list`)")
     e.add_argument("--set", action="append", metavar="FIELD=VALUE",
                    help="a parameter (dotted, as `wmr info ROBOT` lists them); repeatable")
-    e.add_argument("--out", type=Path, required=True, help="folder to write (created)")
+    e.add_argument("--out", type=Path, required=True,
+                   help="folder to write, created if its parent exists")
     e.add_argument("--duration", type=float, default=DURATION,
                    help=f"seconds per audit manoeuvre (default {DURATION:g})")
     e.add_argument("--no-diagnose", action="store_true", help="skip the counterfactual runs")

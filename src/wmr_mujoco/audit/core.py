@@ -21,6 +21,7 @@ import numpy as np
 from wmr_mujoco.audit.drive import Drive, make_drive
 from wmr_mujoco.audit.errors import AuditInputError
 from wmr_mujoco.audit.figures import Figures, figures, verdict
+from wmr_mujoco.audit.limits import DURATION, DURATION_RANGE
 from wmr_mujoco.audit.kinematics import (
     Manoeuvre,
     infeasible,
@@ -33,10 +34,6 @@ from wmr_mujoco.audit.run import Record, run
 from wmr_mujoco.audit.scene import Scene, read_scene
 from wmr_mujoco.audit.wheels import Wheels, find
 
-#: Seconds each manoeuvre is driven (ramp included) unless told otherwise.
-DURATION = 2.0
-#: Accepted range of ``duration``, s (enough to pass the ramp; bounded run time).
-DURATION_RANGE = (0.5, 30.0)
 
 
 @dataclass

@@ -179,9 +179,9 @@ def actuator_radius(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
 
     A servo with gear g on a wheel joint has length ``g q``: a gear other than MuJoCo's
     default 1 that is a length (:data:`GEAR_RADIUS` bounds) is the radius its author
-    assumed, so that ``ctrl`` is the wheel's ground speed. Commanded that way the wheel moves at ``(R/g) ctrl``. The
-    run "with the cause" commands ``ctrl = v`` as the author meant; the audit's own runs
-    (``ctrl = g ω``, exact) are the ones without it.
+    assumed, so that ``ctrl`` is the wheel's ground speed. Commanded that way the wheel
+    moves at ``(R/g) ctrl``. The run "with the cause" commands ``ctrl = v`` as the author
+    meant; the audit's own runs (``ctrl = g ω``, exact) are the ones without it.
     """
     lo, hi = GEAR_RADIUS
     bad = {n: ch for n, ch in a.drive.spin.items()

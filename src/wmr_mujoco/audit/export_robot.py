@@ -103,6 +103,7 @@ def export_robot(robot: str, settings: Sequence[str], out: Path) -> Path:
     params = params_with(spec, settings)
     xml = common.to_xml(spec.build(params))
     out = Path(out)
+    out.mkdir(exist_ok=True)
     write_text_atomic(out / spec.robot_file, xml)
     write_text_atomic(out / "scene.xml", scene_xml(spec, params))
     write_text_atomic(out / "README.md", readme(spec, params, settings))

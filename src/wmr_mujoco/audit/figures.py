@@ -92,9 +92,9 @@ def figures(rec: Record) -> Figures:
 
 
 def verdict(f: Figures, span: float) -> str:
-    """Follows / drifts from / fails to follow the ideal model (thresholds above.
+    """Follows, drifts from, or fails to follow the ideal model (thresholds above).
 
-    A spin in place by its drift in % of the robot's ``span``).
+    A spin in place is judged by its drift in % of the robot's ``span``.
     """
     pos = f.position_pct if f.position_pct is not None else \
         100.0 * f.drift_m / max(span, MIN_SPAN)

@@ -69,10 +69,9 @@ def _s(axle: np.ndarray) -> np.ndarray:
 
 
 def steer_angle(w: AuditWheel, twist: np.ndarray, sense: float) -> float:
-    """Steering angle.
+    """Steering angle that rolls ``w`` along its contact velocity (0 when it is still).
 
-    (about the steering joint's signed axis, ``sense`` = ±1 its z component's sign) that rolls
-    ``w`` along its contact velocity (0 when it is still).
+    About the steering joint's signed axis; ``sense`` = ±1 is the sign of its z component.
     """
     vc = contact_velocity(w.wheel.position, twist)
     if np.linalg.norm(vc) < 1e-9:
@@ -101,7 +100,7 @@ def wheel_row(w: AuditWheel, beta_world: float = 0.0) -> np.ndarray:
 def jacobian(found: Wheels) -> tuple[tuple[str, ...], np.ndarray]:
     """Names and rows of ``J`` at zero steering for the rolling wheels.
 
-    (fixed, steered at zero, Swedish): ``ω = J ν``, rad/s per (m/s, m/s, rad/s).
+    Fixed, steered (at zero) and Swedish wheels: ``ω = J ν``, rad/s per (m/s, m/s, rad/s).
     """
     rows = [w for w in found.wheels if w.kind in ROLLING_KINDS and w not in found.scrubbing]
     return tuple(w.name for w in rows), np.array([wheel_row(w) for w in rows]).reshape(-1, 3)

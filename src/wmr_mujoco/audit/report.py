@@ -135,9 +135,13 @@ def _plot(a: Audit, out: Path) -> list[Path]:
 
 
 def write_report(a: Audit, out: Path | str) -> list[Path]:
-    """Write ``audit.md``, ``audit.json`` and the plots into ``out`` (created)."""
+    """Write ``audit.md``, ``audit.json`` and the plots into ``out``.
+
+    ``out`` is created, not its parents (the CLI checks it first with
+    :func:`~wmr_mujoco.validation.report.check_report_folder`).
+    """
     out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
+    out.mkdir(exist_ok=True)
     written = _plot(a, out)
     written.append(write_text_atomic(out / "audit.json", json.dumps(as_json(a), indent=1)))
     written.append(write_text_atomic(out / "audit.md", markdown(a)))

@@ -93,9 +93,10 @@ class _Probe:
         return [bool(gs & touching) for gs in self.geoms]
 
     def slips(self, data: mujoco.MjData, prev: np.ndarray, dt: float) -> np.ndarray:
-        """Slip of each wheel along its constrained direction, from the axle points'.
+        """Slip of each wheel along its constrained direction.
 
-        Finite-difference velocity (module :mod:`~wmr_mujoco.audit.kinematics`).
+        From the axle points' finite-difference velocity (the constrained directions of
+        :mod:`~wmr_mujoco.audit.kinematics`).
         """
         out = np.zeros(len(self.found.wheels))
         for i, w in enumerate(self.found.wheels):

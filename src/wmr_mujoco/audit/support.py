@@ -37,10 +37,10 @@ _G = mujoco.mjtGeom
 
 def geom_support(model: mujoco.MjModel, data: mujoco.MjData, geom: int,
                  directions: np.ndarray) -> np.ndarray | None:
-    """``h(d)`` of ``geom``.
+    """``h(d)`` of ``geom`` about its own centre, for world unit directions ``(k, 3)``.
 
-    (posed as in ``data``) about its own centre, for world unit directions ``(k, 3)``; None for
-    a type without one (plane, height field, SDF).
+    The geom is posed as in ``data``. None for a type without a support function (plane,
+    height field, SDF).
     """
     d = directions @ data.geom_xmat[geom].reshape(3, 3)  # rows: d in the geom frame
     s = model.geom_size[geom]
