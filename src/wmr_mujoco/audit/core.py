@@ -21,7 +21,6 @@ import numpy as np
 from wmr_mujoco.audit.drive import Drive, make_drive
 from wmr_mujoco.audit.errors import AuditInputError
 from wmr_mujoco.audit.figures import Figures, figures, verdict
-from wmr_mujoco.audit.limits import DURATION, DURATION_RANGE
 from wmr_mujoco.audit.kinematics import (
     Manoeuvre,
     infeasible,
@@ -30,10 +29,10 @@ from wmr_mujoco.audit.kinematics import (
     reference_point,
     span,
 )
+from wmr_mujoco.audit.limits import DURATION, DURATION_RANGE
 from wmr_mujoco.audit.run import Record, run
 from wmr_mujoco.audit.scene import Scene, read_scene
 from wmr_mujoco.audit.wheels import Wheels, find
-
 
 
 @dataclass
