@@ -12,7 +12,7 @@ from .conftest import DIFF, LEGS
 def test_audit_writes_its_report_and_exits_0(write, tmp_path, capsys):
     out = tmp_path / "report"
     assert main(["audit", str(write(DIFF)), "--out", str(out), "--duration", "0.6",
-                 "--no-diagnose", "-q"]) == 0
+                 "--no-diagnose", "--draws", "1", "-q"]) == 0
     report = json.loads((out / "audit.json").read_text())
     assert report["class"] == [2, 0]
     assert {m["name"] for m in report["manoeuvres"]} == {"straight", "arc", "spin"}

@@ -12,7 +12,7 @@ from .conftest import anchor
 
 @pytest.fixture(scope="module")
 def soccer():
-    return audit(anchor("robot_soccer_kit"), duration=1.5)
+    return audit(anchor("robot_soccer_kit"), duration=1.5, draws=1)
 
 
 def test_soccer_kit_is_holonomic_and_off_its_kinematics(soccer):
@@ -39,10 +39,26 @@ def test_soccer_kit_roller_friction_is_named_with_both_figures(soccer):
 
 
 def test_diffdrive_of_this_package_follows_its_kinematics():
-    a = audit(MODELS_DIR / "diffdrive" / "scene.xml", duration=1.0, diagnose=False)
+    a = audit(MODELS_DIR / "diffdrive" / "scene.xml", duration=1.0, diagnose=False, draws=1)
     assert a.robot_class == (2, 0)
     assert not a.drive.imposed
     # wmr validate's diffdrive target is a few % of path; the audit's verdict "follows"
     # means <= 5 % of path and 5° on every manoeuvre.
     assert all(o.verdict == "follows the ideal model" for o in a.outcomes), \
         [(o.manoeuvre.name, o.figures.error_label()) for o in a.outcomes]
+
+
+def test_each_figure_is_the_worst_of_its_seeded_draws():
+    scene = MODELS_DIR / "diffdrive" / "scene.xml"
+    one = audit(scene, duration=1.0, diagnose=False, draws=1)
+    three = audit(scene, duration=1.0, diagnose=False, draws=3, seed=7)
+    assert three.draws[0].speed == 1.0 and len(three.draws) == 3
+    again = audit(scene, duration=1.0, diagnose=False, draws=3, seed=7)
+    for o1, o3, oa in zip(one.outcomes, three.outcomes, again.outcomes, strict=True):
+        # Draw 0 is the single nominal run, so the worst of three is at least as large.
+        assert o3.figures.drift_m >= o1.figures.drift_m - 1e-12
+        # Seeded: the same draws give the same figures (all but the wall-clock one).
+        same, other = o3.figures.as_dict(), oa.figures.as_dict()
+        same.pop("real_time_factor")
+        other.pop("real_time_factor")
+        assert same == other

@@ -18,7 +18,7 @@ DURATION = 1.0
 
 def _audit(write, old: str, new: str):
     assert old in BASE  # the variant really changes the file
-    return audit(write(BASE.replace(old, new)), duration=DURATION)
+    return audit(write(BASE.replace(old, new)), duration=DURATION, draws=1)
 
 
 def _only(a, name):
@@ -28,7 +28,7 @@ def _only(a, name):
 
 
 def test_clean_robot_has_no_diagnosis(write):
-    a = audit(write(BASE), duration=DURATION)
+    a = audit(write(BASE), duration=DURATION, draws=1)
     assert a.scene.floor_added
     assert a.diagnoses == []
 

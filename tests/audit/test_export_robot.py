@@ -15,7 +15,7 @@ from wmr_mujoco.robots import get_spec
 def test_export_writes_the_folder_and_audits_the_new_radius(tmp_path):
     out = tmp_path / "mine"
     assert main(["export", "diffdrive", "--set", "wheel.radius=0.1", "--out", str(out),
-                 "--duration", "0.6", "--no-diagnose", "-q"]) == 0
+                 "--duration", "0.6", "--no-diagnose", "--draws", "1", "-q"]) == 0
     assert {p.name for p in out.iterdir()} >= {"diffdrive.xml", "scene.xml", "README.md",
                                                "audit"}
     report = json.loads((out / "audit" / "audit.json").read_text())

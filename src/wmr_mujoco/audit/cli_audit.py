@@ -14,14 +14,14 @@ from pathlib import Path
 from wmr_mujoco.audit.errors import EXIT_NOT_WHEELED, NotWheeledError
 
 
-def _run_audit(path: Path, out: Path | None, duration: float, diagnose: bool,
-               quiet: bool) -> int:
+def _run_audit(path: Path, out: Path | None, args: argparse.Namespace) -> int:
     from wmr_mujoco.audit.core import audit
     from wmr_mujoco.audit.report import summary_text, write_report
 
-    say = (lambda _: None) if quiet else (lambda m: print(f"  {m}", file=sys.stderr))
+    say = (lambda _: None) if args.quiet else (lambda m: print(f"  {m}", file=sys.stderr))
     try:
-        a = audit(path, duration=duration, diagnose=diagnose, progress=say)
+        a = audit(path, duration=args.duration, diagnose=not args.no_diagnose, progress=say,
+                  draws=args.draws, seed=args.seed)
     except NotWheeledError as err:
         print(f"wmr: {path}: {err}", file=sys.stderr)
         return EXIT_NOT_WHEELED
@@ -37,7 +37,7 @@ def _cmd_audit(args: argparse.Namespace) -> int:
         from wmr_mujoco.validation.report import check_report_folder
 
         check_report_folder(args.out)
-    return _run_audit(args.scene, args.out, args.duration, not args.no_diagnose, args.quiet)
+    return _run_audit(args.scene, args.out, args)
 
 
 def _cmd_export(args: argparse.Namespace) -> int:
@@ -47,14 +47,24 @@ def _cmd_export(args: argparse.Namespace) -> int:
     check_report_folder(args.out)
     scene = export_robot(args.robot, args.set or [], args.out)
     print(f"wrote {args.out}")
-    return _run_audit(scene, args.out / "audit", args.duration, not args.no_diagnose,
-                      args.quiet)
+    return _run_audit(scene, args.out / "audit", args)
+
+
+def _common(p: argparse.ArgumentParser) -> None:
+    from wmr_mujoco.audit.limits import DRAWS, DURATION
+
+    p.add_argument("--duration", type=float, default=DURATION,
+                   help=f"seconds per manoeuvre (default {DURATION:g})")
+    p.add_argument("--draws", type=int, default=DRAWS,
+                   help=f"seeded variants of each manoeuvre, speed and wheel phase, the worst "
+                   f"reported (default {DRAWS})")
+    p.add_argument("--seed", type=int, default=0, help="seed of the draws (default 0)")
+    p.add_argument("--no-diagnose", action="store_true", help="skip the counterfactual runs")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
     """Add ``audit`` and ``export`` to ``wmr``'s subcommands."""
-    from wmr_mujoco.audit.limits import DURATION
-
     p = subparsers.add_parser(
         "audit", help="audit any MJCF wheeled robot: class, ideal kinematics, manoeuvres, "
         "pitfalls (exit 0 ran, 2 bad input, 4 not a wheeled robot)")
@@ -62,10 +72,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    "(a floor is added)")
     p.add_argument("--out", type=Path, help="report folder (audit.md, audit.json, plots), "
                    "created if its parent exists")
-    p.add_argument("--duration", type=float, default=DURATION,
-                   help=f"seconds per manoeuvre (default {DURATION:g})")
-    p.add_argument("--no-diagnose", action="store_true", help="skip the counterfactual runs")
-    p.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
+    _common(p)
     p.set_defaults(func=_cmd_audit)
     e = subparsers.add_parser(
         "export", help="write a Menagerie-style folder of a robot with your dimensions, "
@@ -75,8 +82,5 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="a parameter (dotted, as `wmr info ROBOT` lists them); repeatable")
     e.add_argument("--out", type=Path, required=True,
                    help="folder to write, created if its parent exists")
-    e.add_argument("--duration", type=float, default=DURATION,
-                   help=f"seconds per audit manoeuvre (default {DURATION:g})")
-    e.add_argument("--no-diagnose", action="store_true", help="skip the counterfactual runs")
-    e.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
+    _common(e)
     e.set_defaults(func=_cmd_export)

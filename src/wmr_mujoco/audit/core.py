@@ -29,7 +29,7 @@ from wmr_mujoco.audit.kinematics import (
     reference_point,
     span,
 )
-from wmr_mujoco.audit.limits import DURATION, DURATION_RANGE
+from wmr_mujoco.audit.limits import DRAWS, DRAWS_RANGE, DURATION, DURATION_RANGE, SPEED_FACTORS
 from wmr_mujoco.audit.run import Record, run
 from wmr_mujoco.audit.scene import Scene, read_scene
 from wmr_mujoco.audit.wheels import Wheels, find
@@ -37,12 +37,48 @@ from wmr_mujoco.audit.wheels import Wheels, find
 
 @dataclass
 class Outcome:
-    """One manoeuvre's run: the record, its figures and the verdict line."""
+    """One manoeuvre's worst draw: the record, its figures and the verdict line.
+
+    ``draw`` is the index of that draw (0: nominal speed, wheels as built); ``manoeuvre``
+    carries that draw's twist.
+    """
 
     manoeuvre: Manoeuvre
     record: Record
     figures: Figures
     verdict: str
+    draw: int = 0
+
+
+@dataclass(frozen=True)
+class Draw:
+    """One seeded variant of every manoeuvre: a speed factor and the wheels' start phase."""
+
+    speed: float
+    phases: dict[int, float]
+
+
+def make_draws(found: Wheels, n: int, seed: int) -> list[Draw]:
+    """``n`` seeded draws: the first nominal, the others varied.
+
+    The others run at speed × U(:data:`SPEED_FACTORS`) with each wheel's spin joint
+    started at U(0, 2π) (which roller of a Swedish wheel is down), from ``seed``.
+    """
+    rng = np.random.default_rng(seed)
+    out = [Draw(1.0, {})]
+    for _ in range(n - 1):
+        speed = float(rng.uniform(*SPEED_FACTORS))
+        out.append(Draw(speed, {w.joint: float(rng.uniform(0.0, 2.0 * np.pi))
+                                for w in found.wheels if w.kind != "ball"}))
+    return out
+
+
+def scaled(m: Manoeuvre, k: float) -> Manoeuvre:
+    """``m`` at ``k`` times its speed."""
+    if k == 1.0:
+        return m
+    return Manoeuvre(m.name, tuple(k * x for x in m.twist),
+                     f"{m.description}, draw at {k:.2f}× that speed")
 
 
 @dataclass
@@ -58,6 +94,7 @@ class Audit:
     span: float
     duration: float
     outcomes: list[Outcome]
+    draws: list[Draw] = field(default_factory=list)
     manoeuvres: list[Manoeuvre] = field(default_factory=list)
     skipped: dict[str, str] = field(default_factory=dict)
     diagnoses: list = field(default_factory=list)
@@ -96,14 +133,21 @@ def drive_all(a: Audit, model: mujoco.MjModel | None = None,
     for m in a.manoeuvres:
         if only is not None and m.name not in only:
             continue
-        rec = run(drive or a.drive, a.wheels, m, a.duration, a.reference, model)
-        f = figures(rec)
-        out.append(Outcome(m, rec, f, verdict(f, a.span)))
+        worst: Outcome | None = None
+        for i, d in enumerate(a.draws or [Draw(1.0, {})]):
+            mi = scaled(m, d.speed)
+            rec = run(drive or a.drive, a.wheels, mi, a.duration, a.reference, model,
+                      d.phases)
+            f = figures(rec)
+            if worst is None or judged(f, a.span) > judged(worst.figures, a.span):
+                worst = Outcome(mi, rec, f, verdict(f, a.span), i)
+        out.append(worst)
     return out
 
 
 def audit(path: Path | str, duration: float = DURATION, diagnose: bool = True,
-          progress: Callable[[str], None] | None = None) -> Audit:
+          progress: Callable[[str], None] | None = None, draws: int = DRAWS,
+          seed: int = 0) -> Audit:
     """Audit the robot in the MJCF file ``path`` (module docstring).
 
     Args:
@@ -111,6 +155,9 @@ def audit(path: Path | str, duration: float = DURATION, diagnose: bool = True,
         duration: seconds each manoeuvre is driven, in :data:`DURATION_RANGE`.
         diagnose: whether to look for pitfalls (and run their counterfactuals).
         progress: called with one line per step.
+        draws: seeded variants of each manoeuvre (speed, wheel phase; the first nominal)
+            in :data:`DRAWS_RANGE`; each figure is the worst draw's.
+        seed: seed of the draws.
 
     Raises:
         AuditInputError: bad input (exit code 2), before any run.
@@ -120,6 +167,9 @@ def audit(path: Path | str, duration: float = DURATION, diagnose: bool = True,
     lo, hi = DURATION_RANGE
     if not isinstance(duration, (int, float)) or not lo <= duration <= hi:
         raise AuditInputError(f"duration {duration!r} s is outside [{lo:g}, {hi:g}] s")
+    if not isinstance(draws, int) or not DRAWS_RANGE[0] <= draws <= DRAWS_RANGE[1]:
+        raise AuditInputError(f"draws {draws!r} is outside [{DRAWS_RANGE[0]}, "
+                              f"{DRAWS_RANGE[1]}]")
     say = progress or (lambda _: None)
     scene = read_scene(path)
     found = find(scene.model)
@@ -127,6 +177,7 @@ def audit(path: Path | str, duration: float = DURATION, diagnose: bool = True,
     ref = reference_point(found)
     a = Audit(scene, found, make_drive(scene, found), names, jac, ref, span(found, ref),
               float(duration), [])
+    a.draws = make_draws(found, draws, seed)
     say(f"class {a.robot_class}; {a.drive.statement}")
     limits = steer_limits(a.drive.model, found)
     for m in manoeuvres(found):

@@ -6,3 +6,8 @@ from __future__ import annotations
 DURATION = 2.0
 #: Accepted range of the duration, s (enough to pass the ramp; bounded run time).
 DURATION_RANGE = (0.5, 30.0)
+#: Seeded variants of each manoeuvre by default (the first nominal), and the accepted range.
+DRAWS = 3
+DRAWS_RANGE = (1, 20)
+#: Range of the speed factor of the non-nominal draws.
+SPEED_FACTORS = (0.5, 1.5)

@@ -69,7 +69,9 @@ def markdown(a: Audit) -> str:
             f" m; robot span {a.span:.4f} m.", "", f"**Drive**: {a.drive.statement}.", "",
             "## Verdicts", "", f"Thresholds: follows ≤ {FOLLOWS[0]:g} % of path and "
             f"{FOLLOWS[1]:g}°; drifts ≤ {DRIFTS[0]:g} % and {DRIFTS[1]:g}°; a spin in place by "
-            f"its drift in % of the span. Each manoeuvre {a.duration:g} s.", ""]
+            f"its drift in % of the span. Each manoeuvre {a.duration:g} s, {len(a.draws)} "
+            f"seeded draw(s) (speed × 0.5-1.5, wheel phase; the first nominal): the worst "
+            f"draw is reported.", ""]
     out += [f"- {v}" for v in verdict_lines(a)]
     out += ["", "## Figures", "", "| manoeuvre | worst position error | worst heading deg | "
             "lateral slip m/s (% of wheel speed) | radius ripple % | off floor % | "
@@ -102,8 +104,11 @@ def as_json(a: Audit) -> dict:
         "reference_point": a.reference.tolist(), "span": a.span,
         "drive": {"imposed": a.drive.imposed, "statement": a.drive.statement},
         "duration": a.duration, "skipped": a.skipped,
+        "draws": [{"speed": d.speed, "phases": {str(k): v for k, v in d.phases.items()}}
+                  for d in a.draws],
         "manoeuvres": [{"name": o.manoeuvre.name, "twist": list(o.manoeuvre.twist),
-                        "verdict": o.verdict, "figures": o.figures.as_dict()}
+                        "worst_draw": o.draw, "verdict": o.verdict,
+                        "figures": o.figures.as_dict()}
                        for o in a.outcomes],
         "diagnoses": [d.as_dict() for d in a.diagnoses],
     }

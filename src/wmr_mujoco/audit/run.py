@@ -134,8 +134,12 @@ def _command(drive: Drive, data: mujoco.MjData, rates: dict[str, float],
 
 
 def run(drive: Drive, found: Wheels, man: Manoeuvre, duration: float, ref: np.ndarray,
-        model: mujoco.MjModel | None = None) -> Record:
+        model: mujoco.MjModel | None = None, phases: dict[int, float] | None = None
+        ) -> Record:
     """Drive ``man`` for ``duration`` s (ramp included) on ``model`` (default the drive's).
+
+    ``phases``: start angles of hinge joints by id (the wheels' phase: which roller is
+    down), set before the settle.
 
     Raises:
         SimulationDivergedError: the state became NaN or infinite.
@@ -143,6 +147,8 @@ def run(drive: Drive, found: Wheels, man: Manoeuvre, duration: float, ref: np.nd
     model = copy.deepcopy(model or drive.model)
     model.opt.enableflags |= int(mujoco.mjtEnableBit.mjENBL_ENERGY)
     data = mujoco.MjData(model)
+    for j, angle in (phases or {}).items():
+        data.qpos[model.jnt_qposadr[j]] = angle
     dt = model.opt.timestep
     twist = np.array(man.twist)
     # The judged point is the reference point: its twist is (v_c(ref), r).
