@@ -4,7 +4,9 @@
 robot's scene as a foreign file (no registry knowledge: wheels, Jacobian, servos all
 found from the compiled model) and runs the robot's own kinematic validation scenarios
 (its analytic model, its inputs, its metric "worst position error % of path"), then
-pastes the table into docs/audit.md between the ``audit agreement`` markers.
+pastes the table into docs/audit.md between the ``audit agreement`` markers, and one
+audit's summary between the ``audit example`` markers there (and in the README, where it
+has them).
 
 The two drive different manoeuvres (speeds, durations, paths) through different models
 of the same kinematics, so they agree when both call the robot's kinematics faithful or
@@ -20,9 +22,10 @@ from wmr_mujoco.audit.anchors import anchor_scene
 from wmr_mujoco.audit.core import audit, judged
 from wmr_mujoco.audit.errors import NotWheeledError
 from wmr_mujoco.audit.figures import FOLLOWS
+from wmr_mujoco.audit.limits import DRAWS
 from wmr_mujoco.audit.report import summary_text
-from wmr_mujoco.docs_sync.markers import publish, study_parser
-from wmr_mujoco.models.paths import REPO_ROOT
+from wmr_mujoco.docs_sync.markers import has_markers, publish, replace_between, study_parser
+from wmr_mujoco.models.paths import README_PATH, REPO_ROOT
 from wmr_mujoco.robots import ROBOTS
 from wmr_mujoco.validation.metrics import POSITION_PCT
 from wmr_mujoco.validation.runner import run_all
@@ -35,8 +38,10 @@ KEY = "audit agreement"
 EXAMPLE_KEY = "audit example"
 
 
-def _validate_worst(robot: str) -> tuple[float | None, str]:
-    scen = [s for s in ROBOTS[robot].scenarios if s.kind == ScenarioKind.KINEMATIC]
+def _validate_worst(robot: str, only: Sequence[str] | None = None
+                    ) -> tuple[float | None, str]:
+    scen = [s for s in ROBOTS[robot].scenarios if s.kind == ScenarioKind.KINEMATIC
+            and (only is None or s.name in only)]
     if not scen:
         return None, "no kinematic scenario"
     worst, where = None, ""
@@ -47,16 +52,21 @@ def _validate_worst(robot: str) -> tuple[float | None, str]:
     return worst, where
 
 
-def row(robot: str, duration: float = 2.0) -> str:
-    """One table row for ``robot``."""
+def row(robot: str, duration: float = 2.0, draws: int = DRAWS,
+        only: Sequence[str] | None = None) -> str:
+    """One table row for ``robot``.
+
+    The audit's worst over ``draws`` seeded draws beside the worst of the robot's
+    kinematic validation scenarios (``only`` those named, default all).
+    """
     spec = ROBOTS[robot]
     try:
-        a = audit(spec.scene_path, duration=duration, diagnose=False)
+        a = audit(spec.scene_path, duration=duration, diagnose=False, draws=draws)
     except NotWheeledError as err:
         return f"| {robot} | not audited: {err} | | | | |"
     o = a.worst()
     ours = judged(o.figures, a.span)
-    theirs, where = _validate_worst(robot)
+    theirs, where = _validate_worst(robot, only)
     if theirs is None:
         return (f"| {robot} | ({a.robot_class[0]},{a.robot_class[1]}) | {o.manoeuvre.name}: "
                 f"{ours:.1f} | {where} | | |")
@@ -86,8 +96,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = study_parser(__doc__.splitlines()[0])
     parser.add_argument("robots", nargs="*")
     args = parser.parse_args(argv)
-    publish(DOC, {EXAMPLE_KEY: example(), KEY: table(args.robots or None)},
-            not args.no_write)
+    snippet = example()
+    publish(DOC, {EXAMPLE_KEY: snippet, KEY: table(args.robots or None)}, not args.no_write)
+    if not args.no_write and has_markers(README_PATH, EXAMPLE_KEY):
+        replace_between(README_PATH, EXAMPLE_KEY, snippet)
+        print(f"wrote {README_PATH}")
     return 0
 
 
