@@ -78,8 +78,9 @@ def row(robot: str, duration: float = 2.0, draws: int = DRAWS,
 
 def table(robots: Sequence[str] | None = None) -> str:
     """The agreement table (module docstring)."""
-    head = ["| robot | class (audit) | audit worst, % of path | validate worst kinematic, "
-            "% of path | difference, points | agree |", "|---|---|---|---|---|---|"]
+    head = ["| robot | class (audit) | audit worst, % of path (a spin: drift, % of span) | "
+            "validate worst kinematic, % of path | difference, points | agree |",
+            "|---|---|---|---|---|---|"]
     return "\n".join(head + [row(r) for r in (robots or list(ROBOTS))])
 
 

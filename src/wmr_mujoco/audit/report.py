@@ -55,7 +55,8 @@ def markdown(a: Audit) -> str:
            "## Wheels", "", "| wheel | kind | centre (x, y) m | axle | rolling radius m "
            "| envelope ripple % | γ deg | driven |", "|---|---|---|---|---|---|---|---|"]
     for w in a.wheels.wheels:
-        g = "" if w.wheel.roller_angle is None else f"{np.degrees(w.wheel.roller_angle):.1f}"
+        g = ("" if w.wheel.roller_angle is None else
+             f"{round(float(np.degrees(w.wheel.roller_angle)), 1) + 0.0:.1f}")
         out.append(f"| {w.name} | {w.kind} | ({w.wheel.position[0]:.4f}, "
                    f"{w.wheel.position[1]:.4f}) | ({w.wheel.axle[0]:.3f}, {w.wheel.axle[1]:.3f}) "
                    f"| {w.radius:.4f} | {_fmt(100 * w.ripple, 2)} | {g} | "
@@ -131,6 +132,7 @@ def _plot(a: Audit, out: Path) -> list[Path]:
         ax.set_ylabel("y (m)")
         ax.set_title(f"{o.manoeuvre.name}: {o.figures.error_label()}", fontsize=9)
         ax.legend(fontsize=8)
+        fig.tight_layout()
         path = out / f"path_{o.manoeuvre.name}.png"
         with atomic_path(path) as tmp:
             fig.savefig(tmp, dpi=80)
