@@ -37,11 +37,13 @@ def diff_xml(wheel: str = 'type="sphere" size=".05"', servo: str = 'kv="2"',
         wheel: the wheels' geom attributes (shape and size; centre 5 cm above the floor).
         servo: the velocity servos' attributes.
         option: the ``<option>`` attributes.
-        caster: attributes of a ball caster's ball joint; empty: a frictionless skid.
+        caster: attributes of a ball caster's ball joint; empty: a frictionless skid
+            (``condim`` 1 with a higher ``priority`` than the floor, whose condim 3 would
+            otherwise win).
     """
     rear = (f'<body name="caster" pos="-.08 0 -.03"><joint name="ball" type="ball" {caster}/>'
             '<geom type="sphere" size=".02" mass=".05"/></body>' if caster else
-            '<geom name="skid" type="sphere" size=".02" pos="-.08 0 -.03" condim="1"/>')
+            '<geom name="skid" type="sphere" size=".02" pos="-.08 0 -.03" condim="1" priority="1"/>')
     wheels = "".join(f'<body name="w{s}" pos=".03 {y} 0"><joint name="{s}" axis="0 1 0"/>'
                      f'<geom {wheel} mass=".1"/></body>'
                      for s, y in (("left", ".1"), ("right", "-.1")))

@@ -62,3 +62,21 @@ def test_each_figure_is_the_worst_of_its_seeded_draws():
         same.pop("real_time_factor")
         other.pop("real_time_factor")
         assert same == other
+
+
+def test_andino_caster_without_swivel_is_confirmed():
+    a = audit(anchor("andino"), duration=1.5, draws=1)
+    assert a.robot_class == (2, 0) and not a.drive.imposed
+    d = next(d for d in a.diagnoses if d.name == "caster without swivel")
+    assert d.confirmed
+    assert max(d.with_cause.values()) > max(d.without_cause.values())
+
+
+def test_mujoco_car_gets_imposed_servos_and_its_skid_is_a_ball_caster():
+    a = audit(anchor("mujoco_car"), duration=1.0, diagnose=False, draws=1)
+    assert a.robot_class == (2, 0)
+    # Its actuators are motors on tendons: the audit removes them and, under the car's
+    # Euler integrator, tracks the integrated wheel angle with position servos.
+    assert a.drive.imposed and "position servos" in a.drive.statement
+    assert "removed: forward, turn" in a.drive.statement
+    assert any("ideal ball caster" in n for n in a.wheels.notes)

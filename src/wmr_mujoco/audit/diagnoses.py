@@ -33,6 +33,8 @@ CONFIRM_POINTS = 1.0
 #: Gears (m) read as an assumed wheel radius, and the relative mismatch that counts.
 GEAR_RADIUS = (0.005, 2.0)
 GEAR_TOL = 0.02
+#: Wheel-floor sliding friction below which the floor is called slippery.
+LOW_FRICTION = 0.5
 CONFIRM_SHARE = 0.25
 #: Envelope ripple above which a Swedish wheel's roller ring is called polygonal.
 RIPPLE_FLAG = 0.005
@@ -161,9 +163,11 @@ def scrubbing_wheels(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
     if not a.wheels.scrubbing:
         return []
     m = copy.deepcopy(a.drive.model)
+    top = int(m.geom_priority.max()) + 1  # the higher priority sets the contact's condim
     for w in a.wheels.scrubbing:
         for g in w.geoms:
             m.geom_condim[g] = 1
+            m.geom_priority[g] = top
     names = ", ".join(repr(w.name) for w in a.wheels.scrubbing)
     say(f"counterfactual: {names} frictionless")
     turning = tuple(o.manoeuvre.name for o in a.outcomes if o.manoeuvre.twist[2] != 0.0)
@@ -207,6 +211,36 @@ def actuator_radius(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
 
 def _radius(a: Audit, name: str) -> float:
     return next(w.radius for w in a.wheels.wheels if w.name == name)
+
+
+def low_friction(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
+    """Wheel-floor contacts with a sliding friction below :data:`LOW_FRICTION`.
+
+    MuJoCo takes the contact's friction from the geom of higher ``priority``, else the
+    larger of the two (the default ``solmix`` rule for friction). The counterfactual sets
+    the floor's and the wheels' sliding friction to 1.
+    """
+    m0 = a.drive.model
+    floor = [g for g in range(m0.ngeom) if m0.geom_bodyid[g] == 0 and
+             (m0.geom_contype[g] or m0.geom_conaffinity[g])]
+    wheel_geoms = [g for w in a.wheels.wheels if w.kind != "ball" for g in w.geoms]
+
+    def mu(g1: int, g2: int) -> float:
+        p1, p2 = m0.geom_priority[g1], m0.geom_priority[g2]
+        if p1 != p2:
+            return float(m0.geom_friction[g1 if p1 > p2 else g2, 0])
+        return float(max(m0.geom_friction[g1, 0], m0.geom_friction[g2, 0]))
+
+    low = min((mu(f, g) for f in floor for g in wheel_geoms), default=1.0)
+    if low >= LOW_FRICTION:
+        return []
+    m = copy.deepcopy(m0)
+    m.geom_friction[floor + wheel_geoms, 0] = 1.0
+    say("counterfactual: wheel-floor friction 1")
+    return [_counterfactual(
+        a, "low friction", f"wheel-floor sliding friction {low:g} (the wheels slip under "
+        f"the drive torque)", "use a floor or tyre friction near 1 (rubber on a floor), or "
+        "drive more gently", m)]
 
 
 def timestep(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
@@ -257,8 +291,8 @@ def ripple(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:
                       "more or longer rollers (overlapping rows) to round the envelope")]
 
 
-PITFALLS = (passive_friction, cylinder_wheels, scrubbing_wheels, actuator_radius, timestep,
-            noslip, ripple)
+PITFALLS = (passive_friction, cylinder_wheels, scrubbing_wheels, low_friction,
+            actuator_radius, timestep, noslip, ripple)
 
 
 def diagnose(a: Audit, say: Callable[[str], None]) -> list[Diagnosis]:

@@ -178,8 +178,15 @@ def _frictionless_skids(model: mujoco.MjModel, data: mujoco.MjData) -> bool:
             path = top_down(model, int(model.geom_bodyid[other]))
             if not any(model.body_jntnum[b] for b in path[1:]):
                 skids.add(other)  # a collider rigid with the chassis
-    return bool(skids) and all(model.geom_condim[g] == 1 or model.geom_friction[g, 0] == 0
-                               for g in skids)
+    floor_priority = max((int(model.geom_priority[g]) for g in floor), default=0)
+    floor_condim = max((int(model.geom_condim[g]) for g in floor), default=3)
+
+    def frictionless(g: int) -> bool:  # MuJoCo: the higher priority, else the larger condim
+        condim = model.geom_condim[g] if model.geom_priority[g] > floor_priority else max(
+            model.geom_condim[g], floor_condim)
+        return condim == 1 or model.geom_friction[g, 0] == 0
+
+    return bool(skids) and all(frictionless(g) for g in skids)
 
 
 def _audit_wheel(model: mujoco.MjModel, data: mujoco.MjData, w: Wheel,
