@@ -43,7 +43,8 @@ def diff_xml(wheel: str = 'type="sphere" size=".05"', servo: str = 'kv="2"',
     """
     rear = (f'<body name="caster" pos="-.08 0 -.03"><joint name="ball" type="ball" {caster}/>'
             '<geom type="sphere" size=".02" mass=".05"/></body>' if caster else
-            '<geom name="skid" type="sphere" size=".02" pos="-.08 0 -.03" condim="1" priority="1"/>')
+            '<geom name="skid" type="sphere" size=".02" pos="-.08 0 -.03" condim="1" '
+            'priority="1"/>')
     wheels = "".join(f'<body name="w{s}" pos=".03 {y} 0"><joint name="{s}" axis="0 1 0"/>'
                      f'<geom {wheel} mass=".1"/></body>'
                      for s, y in (("left", ".1"), ("right", "-.1")))
