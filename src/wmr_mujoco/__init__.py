@@ -48,6 +48,7 @@ _LAZY = {
     "Piecewise": "wmr_mujoco.validation.signals",
     "Sine": "wmr_mujoco.validation.signals",
     "SimulationDivergedError": "wmr_mujoco.sim.stepping",
+    "audit": "wmr_mujoco.audit",
 }
 
 __all__ = sorted(_LAZY)

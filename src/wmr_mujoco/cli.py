@@ -4,12 +4,13 @@ MuJoCo is imported only inside the commands, after :func:`gl_backend.select_back
 for the commands that render, so that EGL can fall back to OSMesa.
 
 Exit codes: 0 done; 1 a validation target missed or a simulation diverged; 2 bad input
-(checked before any work starts); 3 no OpenGL; 5 an input/output error (disk full, a
-folder that is not writable, the video encoder failing); 130 interrupted (Ctrl-C); 141
-the reader of the output went away (``wmr info omni3 | head -1``: the rest of the output
-is dropped quietly, as by ``cat``: 128 + SIGPIPE); 143 terminated (SIGTERM). An
-interrupted or failed command prints one line and leaves no file behind (every output is
-written to a temporary file and renamed when complete).
+(checked before any work starts); 3 no OpenGL; 4 not a wheeled robot (``wmr audit``,
+``wmr export``); 5 an input/output error (disk full, a folder that is not writable, the
+video encoder failing); 130 interrupted (Ctrl-C); 141 the reader of the output went away
+(``wmr info omni3 | head -1``: the rest of the output is dropped quietly, as by ``cat``:
+128 + SIGPIPE); 143 terminated (SIGTERM). An interrupted or failed command prints one
+line and leaves no file behind (every output is written to a temporary file and renamed
+when complete).
 
 Output locations, the same rule for every command: ``wmr`` writes into a folder that
 exists; ``wmr validate --out DIR`` creates ``DIR`` itself (not its parents), ``wmr
@@ -264,6 +265,9 @@ def build_parser() -> argparse.ArgumentParser:
                        help="fewer repeats and cases (`make readme` refuses its report)")
     bench.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     bench.set_defaults(func=_cmd_bench)
+    from wmr_mujoco.audit.cli_audit import register as register_audit
+
+    register_audit(sub)
     return parser
 
 

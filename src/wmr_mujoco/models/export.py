@@ -17,17 +17,20 @@ from wmr_mujoco.docs_sync.markers import has_markers, replace_between
 from wmr_mujoco.info import used_params
 from wmr_mujoco.models.builders import common
 from wmr_mujoco.models.builders.scene import add_scene
-from wmr_mujoco.models.params import WheelParams
+from wmr_mujoco.models.params import RobotParams, WheelParams
 from wmr_mujoco.models.paths import README_PATH
 from wmr_mujoco.robots import ROBOTS, RobotSpec
 
 
-def scene_xml(spec: RobotSpec) -> str:
-    """The ``scene.xml`` text: an include of the robot file, then the scene elements."""
+def scene_xml(spec: RobotSpec, params: RobotParams | None = None) -> str:
+    """The ``scene.xml`` text: an include of the robot file, then the scene elements.
+
+    The scene elements are those of ``params`` (default: the robot's default parameters).
+    """
     scene = mjcf.RootElement(model=f"{spec.name} scene")
     add_scene(scene)
     if spec.scene_extras is not None and spec.params_type is not None:
-        spec.scene_extras(scene, spec.params_type())
+        spec.scene_extras(scene, params if params is not None else spec.params_type())
     tree = etree.fromstring(common.to_xml(scene).encode())
     for el in list(tree):
         if el.tag in ("compiler", "default") or (len(el) == 0 and not el.attrib):
