@@ -210,3 +210,15 @@ def test_a_round_collider_off_its_hinge_is_no_wheel():
     wheels, notes = classify.find_wheels(mujoco.MjModel.from_xml_string(cam))
     assert sorted(w.name for w in wheels) == ["castor", "right"]
     assert any("turns on 'left' but no collider of it is round" in n for n in notes)
+
+
+def test_a_thin_cylinder_roller_is_round_about_its_hinge():
+    """A roller as an O-ring (a flat cylinder about its hinge) rolls: the element type
+    MuJoCo reports is a NumPy integer, compared with the geom-type enum by value."""
+    xml = """<mujoco><worldbody><body><joint name="h" type="hinge" axis="0 0 1"/>
+      <geom name="g" type="cylinder" size="0.006 0.002" quat="0 1 0 0"/></body>
+      </worldbody></mujoco>"""
+    model = mujoco.MjModel.from_xml_string(xml)
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    assert classify.round_about(model, data, model.geom("g").id, model.joint("h").id)

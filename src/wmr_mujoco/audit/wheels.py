@@ -4,7 +4,7 @@ The kinds and the Campion class come from :mod:`wmr_mujoco.models.classify`; thi
 module adds what driving and judging need, and two readings the classifier leaves open:
 
 * a "wheel" whose colliders are not round about its joint (``ripple`` of the envelope,
-  :mod:`~wmr_mujoco.audit.support`, above :data:`ROUND_RIPPLE`) is a limb, not a wheel:
+  :mod:`~wmr_mujoco.models.support`, above :data:`ROUND_RIPPLE`) is a limb, not a wheel:
   a humanoid's hip is never called a wheel;
 * a rigid collider sliding on the floor is a skid outside the theory, unless it is
   frictionless (``condim`` 1 or zero sliding friction): then it is an ideal ball caster;
@@ -22,7 +22,7 @@ import numpy as np
 
 from wmr_mujoco.analytic.campion import Classification, Wheel, classify_wheels
 from wmr_mujoco.audit.errors import AuditInputError, NotWheeledError
-from wmr_mujoco.audit.support import envelope
+from wmr_mujoco.models.support import envelope
 from wmr_mujoco.models import classify
 from wmr_mujoco.models.colliders import colliders, is_collider
 from wmr_mujoco.sim.stepping import SimulationDivergedError

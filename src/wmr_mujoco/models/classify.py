@@ -23,7 +23,8 @@ How wheels are found (heuristics):
        colliders is *round* about the joint it spins on (:func:`round_about`: a sphere,
        or a cylinder, capsule or ellipsoid of revolution whose symmetry axis is that
        joint's axis, centred on the axis; a ball wheel's sphere centred on the ball
-       joint). A limb on a horizontal hinge (a humanoid's leg, an arm's link lying on
+       joint; a mesh whose rolling envelope about the joint ripples by at most
+       ``ROUND_RIPPLE``, :mod:`wmr_mujoco.models.support`). A limb on a horizontal hinge (a humanoid's leg, an arm's link lying on
        the floor) is not round about it and is no wheel (a note names it if it touches).
     5. Wheels are grouped by their spin joint (the hub for Swedish wheels); a wheel none
        of whose colliders touches the floor after settling is an error.
@@ -40,6 +41,7 @@ import numpy as np
 
 from wmr_mujoco.analytic.campion import Classification, Wheel, classify_wheels, summary
 from wmr_mujoco.models.colliders import colliders, is_collider
+from wmr_mujoco.models.support import envelope
 
 SETTLE_TIME = 0.5
 #: |cos| of the angle to the vertical above which a hinge counts as vertical.
@@ -51,6 +53,10 @@ CENTRED_TOL = 2e-3
 #: joint axis, and its symmetry axis within ROUND_ANGLE of the joint's.
 ROUND_TOL = 0.02
 ROUND_ANGLE = np.radians(2.0)
+#: Envelope ripple, (max h − min h) / mean h, above which a mesh turning about a joint is
+#: not round (a tessellated tyre of n facets ripples 1 − cos(π/n): 0.5 % for 32; a limb
+#: seen from its joint, from about 0 to its length: over 100 %).
+ROUND_RIPPLE = 0.25
 
 
 def round_about(model: mujoco.MjModel, data: mujoco.MjData, g: int, j: int) -> bool:
@@ -59,10 +65,11 @@ def round_about(model: mujoco.MjModel, data: mujoco.MjData, g: int, j: int) -> b
     A hinge: a sphere, or a cylinder, capsule or ellipsoid with two equal radii whose
     symmetry axis is parallel to the hinge (within ``ROUND_ANGLE``), in each case
     centred on the hinge's axis line (within ``ROUND_TOL`` of the geom's bounding
-    radius). A ball joint: a sphere centred on the joint. Boxes, meshes and planes are
+    radius); a mesh whose rolling envelope about the hinge ripples by at most
+    ``ROUND_RIPPLE``. A ball joint: a sphere centred on the joint. Boxes and planes are
     never round here.
     """
-    kind = model.geom_type[g]
+    kind = int(model.geom_type[g])  # a NumPy int is not found by `in` on MuJoCo's enums
     centre, anchor, axis = data.geom_xpos[g], data.xanchor[j], data.xaxis[j]
     d = centre - anchor
     tol = ROUND_TOL * float(model.geom_rbound[g]) + 1e-9
@@ -72,6 +79,9 @@ def round_about(model: mujoco.MjModel, data: mujoco.MjData, g: int, j: int) -> b
         return False
     if kind == mujoco.mjtGeom.mjGEOM_SPHERE:
         return True
+    if kind == mujoco.mjtGeom.mjGEOM_MESH:
+        env = envelope(model, data, [g], anchor, axis)
+        return env is not None and env.ripple <= ROUND_RIPPLE
     frame = data.geom_xmat[g].reshape(3, 3)
     if kind in (mujoco.mjtGeom.mjGEOM_CYLINDER, mujoco.mjtGeom.mjGEOM_CAPSULE):
         symmetric = [2]

@@ -6,7 +6,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.audit.support import envelope, geom_support
+from wmr_mujoco.models.support import envelope, geom_support
 
 XML = """<mujoco><worldbody><body>
 <geom name="cyl" type="cylinder" size=".05 .01" euler="90 0 0"/>
