@@ -38,16 +38,12 @@ def test_rollout_members_equal_simulate_exactly():
     assert not np.allclose(batch.pose[0, -1], batch.pose[2, -1], atol=1e-3)
 
 
-def test_batch_trajectory_is_member_first():
+def test_array_inputs_one_row_per_member():
     batch = wmr.simulate_batch(ROBOT, np.array([[0.5, 0.0], [0.0, 1.0]]), DURATION)
     nstep = round(DURATION / wmr.load(ROBOT).opt.timestep)
     assert batch.pose.shape == (2, nstep + 1, 3) and len(batch) == 2
     assert batch.inputs.shape == (2, nstep, 2)
-    np.testing.assert_array_equal(batch["x"], batch.pose[:, :, 0])
-    with pytest.raises(KeyError, match="the components are"):
-        batch["speed"]
-    with pytest.raises(IndexError, match="valid members are 0..1"):
-        batch.member(2)
+    np.testing.assert_array_equal(batch.inputs[1], np.tile([0.0, 1.0], (nstep, 1)))
 
 
 def test_docs_sweep_example_runs_as_written():
@@ -79,6 +75,12 @@ def test_bad_inputs_are_named_before_work(inputs, message):
 def test_bad_backend_lists_the_installed_ones():
     with pytest.raises(ValueError, match=r"backend = 'cuda'; installed backends: rollout"):
         wmr.simulate_batch(ROBOT, [[0.5, 0.1]], DURATION, backend="cuda")
+
+
+def test_options_of_another_backend_are_named():
+    with pytest.raises(ValueError, match=r"backend 'rollout' has no option devices; its "
+                                         r"options: nthread"):
+        wmr.simulate_batch(ROBOT, [[0.5, 0.1]], DURATION, devices=["cpu"])
 
 
 def test_bad_duration_and_params_count():

@@ -28,3 +28,5 @@ def test_a_field_warp_cannot_batch_is_named():
 def test_bad_devices():
     with pytest.raises(ValueError, match="non-empty list of Warp device names"):
         WarpBackend(devices="cpu")
+    with pytest.raises(ValueError, match=r"probe_steps = -1; give an integer >= 0"):
+        WarpBackend(probe_steps=-1)

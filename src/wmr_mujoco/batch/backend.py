@@ -26,10 +26,13 @@ class Backend(abc.ABC):
     Attributes:
         name: what ``simulate_batch(backend=...)`` calls it.
         extra: the pip extra that installs it (None: always installed).
+        step_seconds: wall time of the last :meth:`run`'s stepping alone (no set-up, no
+            reading back of states), for throughput figures.
     """
 
     name: ClassVar[str]
     extra: ClassVar[str | None] = None
+    step_seconds: float = float("nan")
 
     @classmethod
     def installed(cls) -> bool:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import time
 from collections.abc import Sequence
 
 import numpy as np
@@ -27,6 +28,10 @@ class RolloutBackend(Backend):
     name = "rollout"
 
     def __init__(self, nthread: int | None = None) -> None:
+        if nthread is not None and (isinstance(nthread, bool) or not isinstance(nthread, int)
+                                    or nthread < 1):
+            raise ValueError(f"nthread = {nthread!r}; give an integer >= 1, or None (one "
+                             "per CPU)")
         self.nthread = nthread
 
     def run(self, preps: Sequence[Prepared]) -> list[np.ndarray]:
@@ -41,9 +46,11 @@ class RolloutBackend(Backend):
         controls = np.stack([p.controls for p in preps])
         nthread = max(1, min(self.nthread or os.cpu_count() or 1, len(preps)))
         datas = [mujoco.MjData(models[0]) for _ in range(nthread)]
+        start = time.perf_counter()
         rolled, _ = rollout.rollout(models[0] if shared else models,
                                     datas if nthread > 1 else datas[0], initial, controls,
                                     initial_warmstart=warm, persistent_pool=nthread > 1)
+        self.step_seconds = time.perf_counter() - start
         for d in datas:
             check_healthy(models[0], d)
         out = []

@@ -9,6 +9,7 @@ parameters share one loaded model and one settled start.
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Sequence
 from typing import Any
 
@@ -52,6 +53,9 @@ def make_backend(backend: str | Backend, **options: Any) -> Backend:
             the extra that installs the missing one).
     """
     if isinstance(backend, Backend):
+        if options:
+            raise ValueError(f"options {sorted(options)} given with a backend instance; "
+                             "give them to its constructor")
         return backend
     cls = BACKENDS.get(backend) if isinstance(backend, str) else None
     if cls is None:
@@ -61,6 +65,11 @@ def make_backend(backend: str | Backend, **options: Any) -> Backend:
         raise ValueError(f"backend {backend!r} is not installed: pip install "
                          f"'wmr-mujoco[{cls.extra}]'; installed: "
                          f"{', '.join(installed_backends())}")
+    valid = [n for n in inspect.signature(cls).parameters if n != "self"]
+    unknown = sorted(set(options) - set(valid))
+    if unknown:
+        raise ValueError(f"backend {backend!r} has no option {', '.join(unknown)}; its options: "
+                         f"{', '.join(valid) or 'none'}")
     return cls(**options)
 
 

@@ -20,6 +20,7 @@ MuJoCo Warp computes in float32 (C MuJoCo: float64); its results differ from
 from __future__ import annotations
 
 import dataclasses
+import time
 from collections.abc import Sequence
 from typing import Any
 
@@ -55,6 +56,8 @@ class WarpBackend(Backend):
         if devices is not None and (isinstance(devices, str) or not devices):
             raise ValueError(f"devices = {devices!r}; give a non-empty list of Warp device "
                              "names, e.g. ['cuda:0', 'cuda:1'] or ['cpu']")
+        if isinstance(probe_steps, bool) or not isinstance(probe_steps, int) or probe_steps < 0:
+            raise ValueError(f"probe_steps = {probe_steps!r}; give an integer >= 0")
         self.devices = None if devices is None else list(devices)
         self.probe_steps = probe_steps
 
@@ -93,10 +96,15 @@ class WarpBackend(Backend):
         runs = [_ShardRun([preps[i] for i in r], r.start, dev, sizes)
                 for r, dev in zip(ranges, devices, strict=False)]
         nstep = len(preps[0].controls)
+        self.step_seconds = 0.0
         for k0 in range(0, nstep, CHUNK):
             k1 = min(k0 + CHUNK, nstep)
+            start = time.perf_counter()
             for run in runs:
                 run.launch(k0, k1)
+            for run in runs:
+                run.wait()
+            self.step_seconds += time.perf_counter() - start
             for run in runs:
                 run.collect(k0, k1)
         return shard.join([run.states() for run in runs], ranges)
@@ -208,14 +216,17 @@ class _ShardRun:
                 for f, h in self.hist.items():
                     wp.copy(h[k - k0], getattr(self.d, f))
 
+    def wait(self) -> None:
+        """Wait until the device has done the queued steps."""
+        self.wp.synchronize_device(self.device)
+
     def collect(self, k0: int, k1: int) -> None:
-        """Wait for the chunk, read its states back, check overflow and finiteness.
+        """Read the chunk's states back (after :meth:`wait`), check overflow and finiteness.
 
         Raises:
             RuntimeError: a buffer overflowed.
             SimulationDivergedError: a non-finite state.
         """
-        self.wp.synchronize_device(self.device)
         flags = self.d.overflow.numpy()
         bad = [name for name in OVERFLOW_BITS
                if np.any(flags & int(getattr(self.mjw.OverflowType, name)))]
