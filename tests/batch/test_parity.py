@@ -3,8 +3,8 @@
 The tolerance is derived in :mod:`wmr_mujoco.batch.parity`: a quarter (``SHARE``) of the
 robot's own ``worst position error % of path`` target, so that the engine never decides
 a validation verdict with more than 25 % margin. Warp builds its kernels once per
-process (20-33 s on a CPU, then cached on disk), so each robot's run is one
-module-scoped fixture.
+process (tens of seconds on a CPU, then cached on disk), so each robot's run is measured
+once per module (the ``measured`` fixture).
 """
 
 import numpy as np
@@ -16,7 +16,7 @@ from wmr_mujoco.robots import get_spec
 
 #: In the default run: a wheeled robot and one on rollers (its own contact set).
 QUICK = ("diffdrive", "omni3")
-#: The rest; all together about a minute more on this machine's CPU (kernels cached).
+#: The rest, marked slow (still run in CI).
 SLOW = ("disc", "bicycle", "tricycle", "single_steer", "double_steer", "mecanum4")
 
 _results: dict[str, parity_mod.Parity] = {}

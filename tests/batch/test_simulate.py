@@ -12,6 +12,7 @@ from wmr_mujoco.batch import simulate as batch_simulate
 from wmr_mujoco.batch.trajectory import BatchTrajectory
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "batch.md"
+README = DOC.parents[1] / "README.md"
 ROBOT = "diffdrive"  # two input channels (v, ω)
 DURATION = 0.3
 
@@ -46,17 +47,27 @@ def test_array_inputs_one_row_per_member():
     np.testing.assert_array_equal(batch.inputs[1], np.tile([0.0, 1.0], (nstep, 1)))
 
 
+def _sweep_examples() -> list[tuple[Path, str]]:
+    """Every ```python block calling simulate_batch in docs/batch.md and the README."""
+    found = []
+    for path in (DOC, README):
+        found += [(path, b) for b in re.findall(r"```python\n(.*?)```", path.read_text(),
+                                                flags=re.DOTALL) if "simulate_batch(" in b]
+    return found
+
+
 def test_docs_sweep_example_runs_as_written():
-    """The parameter sweep in docs/batch.md (also the README's), executed as printed; its
-    last member is what wmr.simulate gives with the same friction."""
-    block = next(b for b in re.findall(r"```python\n(.*?)```", DOC.read_text(), flags=re.DOTALL)
-                 if "simulate_batch(" in b)
-    scope: dict[str, object] = {}
-    exec(compile(block, str(DOC), "exec"), scope)
-    runs, mus = scope["runs"], scope["mus"]
-    assert len(runs) == len(mus)
-    alone = wmr.simulate(ROBOT, [0.6, 1.0], 1.0, scope["params"][-1])
-    np.testing.assert_array_equal(runs.member(len(mus) - 1).states, alone.states)
+    """The parameter sweep in docs/batch.md (and its copy in the README, once there),
+    executed as printed; its last member is what wmr.simulate gives with that friction."""
+    examples = _sweep_examples()
+    assert any(path == DOC for path, _ in examples)
+    for path, block in examples:
+        scope: dict[str, object] = {}
+        exec(compile(block, str(path), "exec"), scope)
+        runs, mus = scope["runs"], scope["mus"]
+        assert len(runs) == len(mus)
+        alone = wmr.simulate(ROBOT, [0.6, 1.0], 1.0, scope["params"][-1])
+        np.testing.assert_array_equal(runs.member(len(mus) - 1).states, alone.states)
 
 
 @pytest.mark.parametrize(("inputs", "message"), [

@@ -1,7 +1,7 @@
 """Importing MuJoCo Warp: its kernel cache at a stable path, quiet, its devices.
 
-Warp compiles its kernels the first time a process steps a model (20-33 s per robot
-model on a CPU here) and keeps them in a kernel cache; a later process loads them in
+Warp compiles its kernels the first time a process steps a model (tens of seconds per
+robot model on a CPU) and keeps them in a kernel cache; a later process loads them in
 under a second. The cache is ``$WMR_WARP_CACHE`` if set, else
 ``~/.cache/wmr-mujoco/warp`` (Warp adds its version below it). Delete the folder to
 force a rebuild.
