@@ -113,6 +113,14 @@ def test_batch_too_large_for_memory_is_refused_before_work(monkeypatch):
         wmr.simulate_batch(ROBOT, [[0.5, 0.1]] * 2000, 1000.0)
 
 
+def test_too_many_members_are_refused_before_any_member_is_made():
+    n = batch_simulate.MAX_MEMBERS + 1
+    with pytest.raises(ValueError, match=f"{n} members; at most"):
+        wmr.simulate_batch(ROBOT, np.zeros((n, 2)), DURATION)
+    with pytest.raises(ValueError, match=f"{n} members; at most"):
+        wmr.simulate_batch(ROBOT, [[0.0, 0.0]] * n, DURATION)
+
+
 def test_members_of_different_structure_are_refused():
     base = wmr.get_spec("mecanum4").params_type()
     other = replace(base, rollers_per_wheel=base.rollers_per_wheel + 2)

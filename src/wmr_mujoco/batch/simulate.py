@@ -38,6 +38,8 @@ from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 BACKENDS: dict[str, type[Backend]] = {b.name: b for b in (RolloutBackend, WarpBackend)}
 #: The most memory the states of one batch may take (bytes), checked before any work.
 MAX_BYTES = 4 * 2**30
+#: The most members of one call (checked before any per-member object is made).
+MAX_MEMBERS = 65_536
 
 
 def installed_backends() -> list[str]:
@@ -83,10 +85,16 @@ def member_inputs(inputs: object) -> list[Sequence[Input]]:
         if inputs.ndim != 2 or inputs.shape[0] == 0:
             raise ValueError(f"inputs has shape {inputs.shape}; give (members, channels), "
                              "one row of constant inputs per member")
+        if inputs.shape[0] > MAX_MEMBERS:
+            raise ValueError(f"{inputs.shape[0]} members; at most {MAX_MEMBERS} per call: "
+                             "split the batch into several calls")
         return [[float(v) for v in row] for row in inputs]
     if isinstance(inputs, (str, bytes)) or not isinstance(inputs, Sequence) or not inputs:
         raise ValueError(f"inputs = {inputs!r}; give one entry per member, each what "
                          "wmr.simulate takes (one number or function of time per channel)")
+    if len(inputs) > MAX_MEMBERS:
+        raise ValueError(f"{len(inputs)} members; at most {MAX_MEMBERS} per call: split the "
+                         "batch into several calls")
     out = []
     for i, member in enumerate(inputs):
         if isinstance(member, np.ndarray) and member.ndim == 1:

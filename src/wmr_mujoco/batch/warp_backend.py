@@ -184,6 +184,7 @@ class _ShardRun:
             models = _distinct([p.model for p in preps])
             names = _batched_fields(base.scenario.robot, mjw, models) if len(models) > 1 else []
             self.m = mjw.put_model(base.model, batch_sizes=dict.fromkeys(names, nw))
+            self.m.opt.warn_overflow = 0  # no printing: collect() raises instead
             if names:
                 per_model = {id(m): mjw.put_model(m) for m in models}
                 for name in names:
