@@ -16,13 +16,13 @@ from typing import Any
 import mujoco
 import numpy as np
 
+import wmr_mujoco
 from wmr_mujoco.api import Input, _scenario, _sim_trajectory
 from wmr_mujoco.batch.backend import Backend
 from wmr_mujoco.batch.rollout import RolloutBackend
 from wmr_mujoco.batch.trajectory import BatchTrajectory
 from wmr_mujoco.batch.warp_backend import WarpBackend
 from wmr_mujoco.models.actuation import set_actuation_mode
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.sim.engine import STATE_SPEC
 from wmr_mujoco.validation.runner import (
@@ -149,7 +149,8 @@ def prepare_members(scenarios: Sequence[Scenario], params: Sequence[RobotParams 
     groups: dict[object, list[int]] = {}
     for i, p in enumerate(params):
         groups.setdefault(_key(p), []).append(i)
-    models = {key: load(scenarios[idx[0]].robot, params[idx[0]]) for key, idx in groups.items()}
+    models = {key: wmr_mujoco.load(scenarios[idx[0]].robot, params[idx[0]])
+              for key, idx in groups.items()}
     first = next(iter(models.values()))
     sizes = ("nq", "nv", "nu", "na", "nbody", "ngeom")
     for key, m in models.items():
