@@ -11,7 +11,7 @@ $(STAMP): pyproject.toml setup.py scripts/install-system-deps.sh scripts/make-ve
 	bash scripts/install-system-deps.sh
 	bash scripts/make-venv.sh $(PYTHON) $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e ".[test]"
+	$(BIN)/python -m pip install --quiet -e ".[test,gpu]"
 	touch $(STAMP)
 
 demo: $(STAMP)

@@ -35,6 +35,7 @@ _LAZY = {
     "ScenarioKind": "wmr_mujoco.validation.scenarios",
     "Scenario": "wmr_mujoco.validation.scenarios",
     "simulate": "wmr_mujoco.api",
+    "simulate_batch": "wmr_mujoco.batch",
     "predict": "wmr_mujoco.api",
     "compare": "wmr_mujoco.api",
     "attach": "wmr_mujoco.api",

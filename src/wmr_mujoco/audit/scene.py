@@ -12,8 +12,8 @@ from pathlib import Path
 import mujoco
 
 from wmr_mujoco.audit.errors import AuditInputError
-from wmr_mujoco.models.support import lowest_point
 from wmr_mujoco.models.colliders import colliders
+from wmr_mujoco.models.support import lowest_point
 
 #: Largest MJCF file read, bytes (meshes are separate files; 64 MB of XML is no robot).
 MAX_FILE_BYTES = 64 * 2**20

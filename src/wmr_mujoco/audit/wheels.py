@@ -22,9 +22,9 @@ import numpy as np
 
 from wmr_mujoco.analytic.campion import Classification, Wheel, classify_wheels
 from wmr_mujoco.audit.errors import AuditInputError, NotWheeledError
-from wmr_mujoco.models.support import envelope
 from wmr_mujoco.models import classify
 from wmr_mujoco.models.colliders import colliders, is_collider
+from wmr_mujoco.models.support import envelope
 from wmr_mujoco.sim.stepping import SimulationDivergedError
 
 #: Envelope ripple above which a jointed collider is not a wheel (a rolling ring of

@@ -24,8 +24,9 @@ How wheels are found (heuristics):
        or a cylinder, capsule or ellipsoid of revolution whose symmetry axis is that
        joint's axis, centred on the axis; a ball wheel's sphere centred on the ball
        joint; a mesh whose rolling envelope about the joint ripples by at most
-       ``ROUND_RIPPLE``, :mod:`wmr_mujoco.models.support`). A limb on a horizontal hinge (a humanoid's leg, an arm's link lying on
-       the floor) is not round about it and is no wheel (a note names it if it touches).
+       ``ROUND_RIPPLE``, :mod:`wmr_mujoco.models.support`). A limb on a horizontal hinge
+       (a humanoid's leg, an arm's link lying on the floor) is not round about it and is
+       no wheel (a note names it if it touches).
     5. Wheels are grouped by their spin joint (the hub for Swedish wheels); a wheel none
        of whose colliders touches the floor after settling is an error.
 """

@@ -1,0 +1,32 @@
+"""The warp backend's refusals, before any stepping."""
+
+from dataclasses import replace
+
+import mujoco
+import pytest
+
+import wmr_mujoco as wmr
+from wmr_mujoco.batch.warp_backend import WarpBackend
+
+
+def test_pgs_solver_is_refused_with_the_nearest_setting():
+    model = wmr.load("diffdrive")
+    model.opt.solver = mujoco.mjtSolver.mjSOL_PGS
+    with pytest.raises(ValueError, match=r"solver is PGS.*Newton or CG.*backend='rollout'"):
+        WarpBackend().check("diffdrive", [model])
+
+
+def test_a_field_warp_cannot_batch_is_named():
+    """Rolling friction on the caster changes its contact dimension (condim 3 -> 6), a
+    field MuJoCo Warp shares across worlds: refused for members, naming it."""
+    base = wmr.get_spec("diffdrive").params_type()
+    rolling = replace(base, caster=replace(base.caster, rolling_friction=True))
+    with pytest.raises(ValueError, match=r"cannot vary 'geom_condim'"):
+        wmr.simulate_batch("diffdrive", [[0.5, 0.0]] * 2, 0.1, [base, rolling], backend="warp")
+
+
+def test_bad_devices():
+    with pytest.raises(ValueError, match="non-empty list of Warp device names"):
+        WarpBackend(devices="cpu")
+    with pytest.raises(ValueError, match=r"probe_steps = -1; give an integer >= 0"):
+        WarpBackend(probe_steps=-1)
