@@ -5,21 +5,31 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test lint models pictures renders study bench readme sysdeps clean
+.PHONY: demo test test-extra lint models pictures renders study bench readme sysdeps clean
 
 $(STAMP): pyproject.toml setup.py scripts/install-system-deps.sh scripts/make-venv.sh
 	bash scripts/install-system-deps.sh
 	bash scripts/make-venv.sh $(PYTHON) $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e ".[test,gpu]"
+	$(BIN)/python -m pip install --quiet -e ".[test]"
 	touch $(STAMP)
+
+# The optional extras' own checks: MuJoCo Warp's parity (the gpu extra, ~400 MB) and the
+# documentation site (the docs extra). Not part of the quick start; CI runs them.
+EXTRA_STAMP := $(VENV)/.installed-extra
+$(EXTRA_STAMP): $(STAMP)
+	$(BIN)/python -m pip install --quiet -e ".[test,gpu,docs]"
+	touch $(EXTRA_STAMP)
 
 demo: $(STAMP)
 	$(BIN)/wmr validate
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests scripts
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -m "not extra"
+
+test-extra: $(EXTRA_STAMP)
+	$(BIN)/python -m pytest -m extra
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests scripts
@@ -61,12 +71,7 @@ readme: $(STAMP)
 # tutorial (docs/tutorials/NN_*.py) while building (WMR_DOCS_EXECUTE=false skips that).
 # (docs is phony: the folder docs/ must not stand for the target.)
 .PHONY: docs tutorials
-DOCS_STAMP := $(VENV)/.installed-docs
-$(DOCS_STAMP): $(STAMP)
-	$(BIN)/python -m pip install --quiet -e ".[docs]"
-	touch $(DOCS_STAMP)
-
-docs: $(DOCS_STAMP)
+docs: $(EXTRA_STAMP)
 	NO_MKDOCS_2_WARNING=1 $(BIN)/mkdocs build --strict
 
 # Every tutorial run top to bottom as a script, its exercise checked, its time printed.

@@ -10,6 +10,8 @@ import wmr_mujoco as wmr
 from wmr_mujoco.api import _prepare
 from wmr_mujoco.batch import buffers
 
+pytestmark = pytest.mark.extra  # MuJoCo Warp (the gpu extra)
+
 
 def test_buffers_cover_the_counts_of_an_independent_c_run():
     prep = _prepare("omni3", [0.3, 0.1, 0.5], 0.3, None, "kinematic", 0.5, False)

@@ -14,6 +14,8 @@ from wmr_mujoco.batch import parity as parity_mod
 from wmr_mujoco.batch.parity import SHARE, draws, parity
 from wmr_mujoco.robots import get_spec
 
+pytestmark = pytest.mark.extra  # MuJoCo Warp (the gpu extra)
+
 #: In the default run: a wheeled robot and one on rollers (its own contact set).
 QUICK = ("diffdrive", "omni3")
 #: The rest, marked slow (still run in CI).

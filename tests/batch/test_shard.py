@@ -30,6 +30,7 @@ def test_join_restores_member_order():
         split(0, 2)
 
 
+@pytest.mark.extra  # MuJoCo Warp (the gpu extra)
 def test_two_shards_on_one_cpu_equal_one_shard():
     """Worlds are independent in MuJoCo Warp, so splitting 3 members into shards of 2 and
     1 (both on the CPU) and joining them gives the one-shard result bit for bit, in order;

@@ -8,6 +8,8 @@ import pytest
 import wmr_mujoco as wmr
 from wmr_mujoco.batch.warp_backend import WarpBackend
 
+pytestmark = pytest.mark.extra  # MuJoCo Warp (the gpu extra)
+
 
 def test_pgs_solver_is_refused_with_the_nearest_setting():
     model = wmr.load("diffdrive")

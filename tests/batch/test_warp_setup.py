@@ -2,7 +2,11 @@
 
 from pathlib import Path
 
+import pytest
+
 from wmr_mujoco.batch import warp_setup
+
+pytestmark = pytest.mark.extra  # MuJoCo Warp (the gpu extra)
 
 
 def test_cache_dir_follows_the_environment(monkeypatch, tmp_path):

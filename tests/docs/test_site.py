@@ -23,8 +23,11 @@ ROOT = Path(__file__).resolve().parents[2]
 MISSING = [m for m in ("mkdocs", "material", "mkdocstrings_handlers.python", "mkdocs_jupyter",
                        "mathjax") if importlib.util.find_spec(m.split(".")[0]) is None]
 
-pytestmark = pytest.mark.skipif(bool(MISSING), reason=f"docs extra not installed "
-                                f"(pip install -e '.[docs]'): no {', '.join(MISSING)}")
+# The docs extra's check: `make test-extra` installs it and runs this (CI does); a run of
+# the marked tests without it is skipped with the reason.
+pytestmark = [pytest.mark.extra,
+              pytest.mark.skipif(bool(MISSING), reason=f"docs extra not installed "
+                                 f"(pip install -e '.[docs]'): no {', '.join(MISSING)}")]
 
 
 @pytest.fixture(scope="module")
