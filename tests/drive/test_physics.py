@@ -52,6 +52,30 @@ def test_diffdrive_arcs_end_on_the_kinematic_arcs() -> None:
     assert worst <= pct, f"worst position error {worst:.3f} % of path > {pct} %"
 
 
+def test_bicycle_turns_end_on_the_kinematic_turns() -> None:
+    """2 m/s after a 1 s ramp (its validation scenarios' speed), a steering angle drawn in
+    ±0.5 rad (their steady turns' range) commanded from the start, 3 s.
+
+    Tolerance: the bicycle's validation requirement, worst position error within
+    ``POSITION_PCT`` % of the analytic path.
+    """
+    pct = get_spec("bicycle").targets[mt.POSITION_PCT].value
+    rng = np.random.default_rng(11)
+    worst = 0.0
+    for _ in range(DRAWS):
+        phi, pose, seed = rng.uniform(-0.5, 0.5), rng.uniform(-1.0, 1.0, 3), int(
+            rng.integers(1000))
+
+        def command(t: float, phi: float = phi) -> tuple[float, float]:
+            return 2.0 * min(t / 1.0, 1.0), phi
+
+        sim = _run("bicycle", "mujoco", command, 150, pose, seed)
+        kin = _run("bicycle", "kinematic", command, 150, pose, seed)
+        error = np.max(np.linalg.norm(sim[:, :2] - kin[:, :2], axis=1))
+        worst = max(worst, 100.0 * error / path_length(kin[:, :2]))
+    assert worst <= pct, f"worst position error {worst:.3f} % of path > {pct} %"
+
+
 SERVOED = [name for name in drivable() if getattr(ROBOTS[name].command, "servo", ())]
 
 
