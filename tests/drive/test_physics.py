@@ -8,72 +8,11 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic.planar import path_length
 from wmr_mujoco.drive import drivable, make
 from wmr_mujoco.models.builders.whipple import KEY_SPEED
-from wmr_mujoco.robots import ROBOTS, get_spec
-from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.robots import ROBOTS
 
 PERIOD = 0.02
-#: Draws of the diffdrive family: speed, yaw rate, start pose and wheel phase.
-DRAWS = 5
-
-
-def _run(robot: str, backend: str, command, steps: int, pose, seed) -> np.ndarray:
-    r = make(robot, backend=backend, control_period=PERIOD)
-    r.reset(pose, seed)
-    for k in range(steps):
-        r.step(command(k * PERIOD))
-    return np.array([s.pose for s in r.history])
-
-
-def test_diffdrive_arcs_end_on_the_kinematic_arcs() -> None:
-    """Constant (v, ω) for 2 s after the validation's 0.5 s ramp, both backends.
-
-    Tolerance: the robot's own validation requirement, the worst position error over the
-    run within ``POSITION_PCT`` % of the analytic path. The ramp is the validation
-    scenarios' (a step from rest asks for more than the wheels' traction: they slip).
-    """
-    pct = get_spec("diffdrive").targets[mt.POSITION_PCT].value
-    rng = np.random.default_rng(7)
-    worst = 0.0
-    for _ in range(DRAWS):
-        v, w = rng.uniform(0.2, 0.8), rng.uniform(-1.5, 1.5)
-        pose, seed = rng.uniform(-1.0, 1.0, 3), int(rng.integers(1000))
-
-        def command(t: float, v: float = v, w: float = w) -> tuple[float, float]:
-            ramp = min(t / 0.5, 1.0)
-            return v * ramp, w * ramp
-
-        sim = _run("diffdrive", "mujoco", command, 100, pose, seed)
-        kin = _run("diffdrive", "kinematic", command, 100, pose, seed)
-        error = np.max(np.linalg.norm(sim[:, :2] - kin[:, :2], axis=1))
-        worst = max(worst, 100.0 * error / path_length(kin[:, :2]))
-    assert worst <= pct, f"worst position error {worst:.3f} % of path > {pct} %"
-
-
-def test_bicycle_turns_end_on_the_kinematic_turns() -> None:
-    """2 m/s after a 1 s ramp (its validation scenarios' speed), a steering angle drawn in
-    ±0.5 rad (their steady turns' range) commanded from the start, 3 s.
-
-    Tolerance: the bicycle's validation requirement, worst position error within
-    ``POSITION_PCT`` % of the analytic path.
-    """
-    pct = get_spec("bicycle").targets[mt.POSITION_PCT].value
-    rng = np.random.default_rng(11)
-    worst = 0.0
-    for _ in range(DRAWS):
-        phi, pose, seed = rng.uniform(-0.5, 0.5), rng.uniform(-1.0, 1.0, 3), int(
-            rng.integers(1000))
-
-        def command(t: float, phi: float = phi) -> tuple[float, float]:
-            return 2.0 * min(t / 1.0, 1.0), phi
-
-        sim = _run("bicycle", "mujoco", command, 150, pose, seed)
-        kin = _run("bicycle", "kinematic", command, 150, pose, seed)
-        error = np.max(np.linalg.norm(sim[:, :2] - kin[:, :2], axis=1))
-        worst = max(worst, 100.0 * error / path_length(kin[:, :2]))
-    assert worst <= pct, f"worst position error {worst:.3f} % of path > {pct} %"
 
 
 SERVOED = [name for name in drivable() if getattr(ROBOTS[name].command, "servo", ())]
