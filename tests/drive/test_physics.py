@@ -106,3 +106,24 @@ def test_whipple_starts_rolling_upright_and_reports_its_lean() -> None:
     state = robot.step((0.0, 0.0))
     # Self-stable at the keyframe speed: it rolls on, upright, along its heading.
     assert abs(state.extra["lean"]) < 0.01 and state.pose[2] == pytest.approx(1.0, abs=0.01)
+
+
+@pytest.mark.parametrize("name", ["diffdrive", "bicycle", "whipple"])
+def test_a_period_is_n_timesteps_of_mj_step_bit_for_bit(name: str) -> None:
+    """Split into ``mj_step2``, ``mj_step(n − 1)``, ``mj_step1``, a period simulates what
+    ``n`` calls of ``mj_step`` with the applied controls simulate, exactly."""
+    robot = make(name)
+    robot.reset(pose=(0.1, 0.2, 0.3))
+    m = robot.model
+    start = mujoco.MjData(m)
+    mujoco.mj_copyData(start, m, robot.data)
+    controls = []
+    for k in range(10):
+        robot.step(0.1 * robot.command_space.high * (1 + k % 3))
+        controls.append(robot.data.ctrl.copy())
+    for ctrl in controls:
+        start.ctrl[:] = ctrl
+        for _ in range(robot.nstep):
+            mujoco.mj_step(m, start)
+    np.testing.assert_array_equal(robot.data.qpos, start.qpos)
+    np.testing.assert_array_equal(robot.data.qvel, start.qvel)
