@@ -68,7 +68,9 @@ class MujocoRobot(Robot):
         """Place at ``pose``, settle on the floor at rest, zero the velocities.
 
         Like the validation runner: the controls are 0 (wheel-rate servos hold the wheels,
-        steering targets stay at 0) for the command map's ``settle`` seconds.
+        steering targets stay at 0) for the command map's ``settle`` seconds. A command
+        map with a keyframe and no settling (the Whipple bicycle, which cannot stand
+        still) starts from the keyframe's state, velocities included, turned to ``pose``.
         """
         model, data, cmap = self.model, self.data, self.spec.command
         if cmap.keyframe is not None:
