@@ -50,6 +50,7 @@ _LAZY = {
     "Sine": "wmr_mujoco.validation.signals",
     "SimulationDivergedError": "wmr_mujoco.sim.stepping",
     "audit": "wmr_mujoco.audit",
+    **dict.fromkeys(("make", "RobotState", "CommandSpace"), "wmr_mujoco.drive"),
 }
 
 __all__ = sorted(_LAZY)

@@ -1,0 +1,179 @@
+"""Reading a :class:`~wmr_mujoco.drive.state.RobotState` from MuJoCo, and placing a robot.
+
+Everything is looked up once per compiled model (:class:`Reader`, :func:`place`), so that a
+control step reads its state with a few array reads and one ``mj_objectVelocity``.
+"""
+
+from __future__ import annotations
+
+import math
+from types import MappingProxyType
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.drive.state import RobotState
+from wmr_mujoco.robots.command import CommandMap
+from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
+
+_SITE = mujoco.mjtObj.mjOBJ_SITE
+#: The ``steer_angles`` of a robot without steering joints (read-only).
+_EMPTY = np.zeros(0)
+_EMPTY.flags.writeable = False
+#: The ``extra`` of a robot without extras.
+NO_EXTRAS: MappingProxyType[str, float] = MappingProxyType({})
+
+#: Free-joint type, and the axes of the planar pose joints (slides x, y; hinge z).
+_FREE = int(mujoco.mjtJoint.mjJNT_FREE)
+_SLIDE = int(mujoco.mjtJoint.mjJNT_SLIDE)
+_HINGE = int(mujoco.mjtJoint.mjJNT_HINGE)
+
+
+def wheel_of_body(model: mujoco.MjModel, wheels: tuple[str, ...]) -> np.ndarray:
+    """For every body, the index of its wheel, or -1.
+
+    A body belongs to the wheel whose hinge is on it or on an ancestor (rollers belong to
+    their wheel).
+    """
+    owner = {int(model.jnt_bodyid[model.joint(w).id]): k for k, w in enumerate(wheels)}
+    table = np.full(model.nbody, -1, dtype=int)
+    for b in range(model.nbody):
+        a = b
+        while a > 0 and a not in owner:
+            a = int(model.body_parentid[a])
+        table[b] = owner.get(a, -1)
+    return table
+
+
+class Reader:
+    """Reads the robot's state from ``data`` (pose, twist, wheels, steering, contacts).
+
+    Args:
+        model: the compiled scene.
+        command: the robot's command map (its wheels, steering joints and extras).
+    """
+
+    def __init__(self, model: mujoco.MjModel, command: CommandMap) -> None:
+        self.model = model
+        self.site = model.site("base").id
+        self.wheel_dofs = np.array([model.jnt_dofadr[model.joint(w).id]
+                                    for w in command.wheels], dtype=int)
+        self.nsteer = len(command.steers)
+        self.steer_qpos = np.array([model.jnt_qposadr[model.joint(s).id]
+                                    for s in command.steers], dtype=int)
+        nwheel = len(command.wheels)
+        table = wheel_of_body(model, command.wheels)[model.geom_bodyid]
+        #: Per geom, its wheel's index, or ``nwheel`` (a spare slot) for other geoms.
+        self.geom_wheel = np.where(table >= 0, table, nwheel)
+        self._geom_wheel = self.geom_wheel.tolist()
+        self.nwheel = nwheel
+        self.extras = command.extras
+        self._vel = np.zeros(6)
+
+    def heading(self, data: mujoco.MjData) -> float:
+        """Heading of the ``base`` site in (−π, π]: ``atan2(R₁₀, R₀₀)``."""
+        m = data.site_xmat[self.site]
+        return math.atan2(m[3], m[0])
+
+    def contacts(self, data: mujoco.MjData) -> np.ndarray:
+        """Whether each wheel (or one of its rollers) has a contact."""
+        # A few contacts per step: a Python loop over them beats array indexing.
+        out = [False] * (self.nwheel + 1)
+        if data.ncon:
+            owner = self._geom_wheel
+            for g1, g2 in data.contact.geom.tolist():
+                out[owner[g1]] = out[owner[g2]] = True
+        return np.array(out[:self.nwheel])
+
+    def check(self, data: mujoco.MjData) -> None:
+        """Raise :class:`SimulationDivergedError` on any MuJoCo warning.
+
+        MuJoCo checks ``qpos``, ``qvel`` and ``qacc`` for NaN and huge values in every
+        step and raises a warning (and resets the state) when one is bad, so the warning
+        counters alone show a divergence; :func:`check_healthy` then names it.
+        """
+        if any(data.warning.number.tolist()):
+            check_healthy(self.model, data)
+            raise SimulationDivergedError(f"MuJoCo warnings at t={data.time:.4f} s")
+
+    def read(self, data: mujoco.MjData, time: float, last_heading: float) -> RobotState:
+        """The state in ``data``; the heading unwrapped next to ``last_heading``."""
+        pos = data.site_xpos[self.site]
+        m = data.site_xmat[self.site]
+        h = math.atan2(m[3], m[0])
+        h = last_heading + math.remainder(h - last_heading, math.tau)
+        vel = self._vel
+        mujoco.mj_objectVelocity(self.model, data, _SITE, self.site, vel, 1)
+        extra = (MappingProxyType(dict(self.extras(self.model, data)))
+                 if self.extras is not None else NO_EXTRAS)
+        # One array for pose and twist (two views): fewer allocations per step.
+        both = np.array((pos[0], pos[1], h, vel[3], vel[4], vel[2]))
+        return RobotState(
+            time=np.array(time), pose=both[:3], twist=both[3:],
+            wheel_rates=data.qvel[self.wheel_dofs],
+            steer_angles=data.qpos[self.steer_qpos] if self.nsteer else _EMPTY,
+            wheel_contacts=self.contacts(data), extra=extra)
+
+
+def _planar_joints(model: mujoco.MjModel) -> tuple[int, int, int]:
+    """The ``(slide x, slide y, hinge z)`` joints above the ``base`` site's body.
+
+    Raises:
+        ValueError: the robot has neither a free joint nor these three joints.
+    """
+    found: dict[str, int] = {}
+    b = int(model.site_bodyid[model.site("base").id])
+    while b > 0:
+        for j in range(model.body_jntadr[b], model.body_jntadr[b] + model.body_jntnum[b]):
+            axis = tuple(np.round(model.jnt_axis[j], 12))
+            kind = {(_SLIDE, (1.0, 0.0, 0.0)): "x", (_SLIDE, (0.0, 1.0, 0.0)): "y",
+                    (_HINGE, (0.0, 0.0, 1.0)): "yaw"}.get((int(model.jnt_type[j]), axis))
+            if kind is not None and kind not in found:
+                found[kind] = j
+        b = int(model.body_parentid[b])
+    if len(found) != 3:
+        raise ValueError("cannot place the robot: it has no free joint and no slide-x, "
+                         f"slide-y and yaw-hinge joints (found {sorted(found)})")
+    return found["x"], found["y"], found["yaw"]
+
+
+def place(model: mujoco.MjModel, data: mujoco.MjData, pose: np.ndarray) -> None:
+    """Move the robot, as it stands in ``data``, so that ``base`` is at ``pose``.
+
+    A free root joint is turned about the vertical through ``base`` and shifted (its
+    world-frame linear velocity turned with it); a planar robot (slides along x and y and a
+    yaw hinge above ``base``) gets the yaw hinge turned and the slides shifted. Heights and
+    tilts are kept. Every integrator actuator on a joint (a steering servo, whose ``act``
+    is its target angle) then targets the joint's angle, so that nothing moves by itself.
+    """
+    mujoco.mj_kinematics(model, data)
+    site = model.site("base").id
+    x0, y0 = data.site_xpos[site][:2]
+    m = data.site_xmat[site]
+    turn = float(pose[2]) - math.atan2(m[3], m[0])
+    if model.jnt_type[0] == _FREE:
+        adr = model.jnt_qposadr[0]
+        c, s = math.cos(turn), math.sin(turn)
+        dx, dy = data.qpos[adr] - x0, data.qpos[adr + 1] - y0
+        data.qpos[adr] = pose[0] + c * dx - s * dy
+        data.qpos[adr + 1] = pose[1] + s * dx + c * dy
+        quat = np.zeros(4)
+        mujoco.mju_mulQuat(quat, np.array([math.cos(turn / 2), 0.0, 0.0, math.sin(turn / 2)]),
+                           data.qpos[adr + 3:adr + 7].copy())
+        data.qpos[adr + 3:adr + 7] = quat
+        vadr = model.jnt_dofadr[0]
+        vx, vy = data.qvel[vadr], data.qvel[vadr + 1]
+        data.qvel[vadr], data.qvel[vadr + 1] = c * vx - s * vy, s * vx + c * vy
+    else:
+        jx, jy, jyaw = _planar_joints(model)
+        data.qpos[model.jnt_qposadr[jyaw]] += turn
+        mujoco.mj_kinematics(model, data)
+        x1, y1 = data.site_xpos[site][:2]
+        data.qpos[model.jnt_qposadr[jx]] += pose[0] - x1
+        data.qpos[model.jnt_qposadr[jy]] += pose[1] - y1
+    joint = int(mujoco.mjtTrn.mjTRN_JOINT)
+    for i in range(model.nu):
+        if model.actuator_actadr[i] >= 0 and model.actuator_trntype[i] == joint:
+            data.act[model.actuator_actadr[i]] = data.qpos[
+                model.jnt_qposadr[model.actuator_trnid[i, 0]]]
+    mujoco.mj_forward(model, data)
