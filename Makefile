@@ -27,11 +27,11 @@ lint: $(STAMP)
 # Regenerate the checked-in MJCF files from the builders' defaults, the parameter tables
 # and the README's Campion class table.
 models: $(STAMP)
-	$(BIN)/python -m wmr_mujoco.models.export
+	$(BIN)/python -m wmr_mujoco.docs_sync.export
 
 # The pictures in models/*/README.md.
 pictures: $(STAMP)
-	$(BIN)/python -m wmr_mujoco.models.pictures
+	$(BIN)/python -m wmr_mujoco.docs_sync.pictures
 
 # The clips in renders/ shown in the README: every clip each registry entry lists.
 renders: $(STAMP)

@@ -22,14 +22,18 @@ from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
+from dm_control import mjcf
 
+from wmr_mujoco.models import loading
 from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots import get_spec
 from wmr_mujoco.sim.engine import STATE_SPEC, Engine
 from wmr_mujoco.sim.engine import simulate as run_engine
 from wmr_mujoco.validation.metrics import Row, Trace
-from wmr_mujoco.validation.runner import Prepared, measure, prepare
+from wmr_mujoco.validation.runner import Job, Prepared, jobs, measure, prepare
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
+from wmr_mujoco.validation.spec import RobotSpec
 
 #: An input channel: a constant, or a function of the time after the settle (s).
 Input = float | Callable[[float], float]
@@ -144,7 +148,8 @@ def _scenario(robot: str, inputs: Sequence[Input], duration: float, kind: Scenar
 
 def _prepare(robot: str, inputs: Sequence[Input], duration: float, params: RobotParams | None,
              kind: ScenarioKind | str, settle: float, world_frame: bool) -> Prepared:
-    return prepare(_scenario(robot, inputs, duration, kind, settle, world_frame), params)
+    return prepare(get_spec(robot), _scenario(robot, inputs, duration, kind, settle,
+                                              world_frame), params)
 
 
 def _model_trajectory(prep: Prepared) -> Trajectory:
@@ -224,3 +229,73 @@ def compare(robot: str, inputs: Sequence[Input], duration: float,
     states = run_engine(prep.model, prep.data, prep.controls, Engine.ROLLOUT)
     rows = measure(prep, states, Trace())
     return Comparison(_sim_trajectory(prep, states), _model_trajectory(prep), rows)
+
+
+def _spec(robot: str | RobotSpec) -> RobotSpec:
+    """The registry entry of a robot name; a spec as it is.
+
+    Raises:
+        ValueError: unknown robot name (the message lists the valid ones).
+    """
+    return robot if isinstance(robot, RobotSpec) else get_spec(robot)
+
+
+def load(robot: str | RobotSpec, params: RobotParams | None = None) -> mujoco.MjModel:
+    """The compiled scene (robot, floor, light) of a registered robot or a spec.
+
+    Args:
+        robot: a name from :data:`wmr_mujoco.robots.ROBOTS`, or a ``RobotSpec``.
+        params: None to load the checked-in ``scene.xml`` (a robot without files is built
+            from its defaults); otherwise an instance of the robot's parameter dataclass.
+
+    Raises:
+        ValueError: unknown robot name (the message lists the valid ones) or wrong
+            parameter type.
+        FileNotFoundError: the scene file is missing (the message names the path).
+    """
+    return loading.load(_spec(robot), params)
+
+
+def build_scene(robot: str | RobotSpec, params: RobotParams | None = None
+                ) -> mjcf.RootElement:
+    """The robot built from ``params`` (defaults if None) with floor and light, unbuilt.
+
+    Raises:
+        ValueError: unknown robot name, a robot without a builder, or wrong ``params``.
+    """
+    return loading.build_scene(_spec(robot), params)
+
+
+def validation_jobs(robots: Sequence[str] | None = None,
+                    names: Sequence[str] | None = None) -> list[Job]:
+    """The registered scenarios of ``robots`` (all if None), each with its robot.
+
+    Args:
+        robots: registry names, in the order wanted (None: every robot, registry order).
+        names: keep only the scenarios of these names (None: all).
+
+    Raises:
+        ValueError: an unknown robot, one without scenarios, or a name none of the chosen
+            robots has; the message lists the valid ones.
+    """
+    from wmr_mujoco.robots import ROBOTS
+
+    if robots is None:
+        specs = list(ROBOTS.values())
+    else:
+        have = [name for name, spec in ROBOTS.items() if spec.scenarios]
+        specs = [get_spec(r) for r in robots]
+        for spec in specs:
+            if not spec.scenarios:
+                raise ValueError(f"no validation scenarios for robot {spec.name!r}; robots "
+                                 f"with scenarios: {', '.join(have)}")
+    work = jobs(specs)
+    if names:
+        valid = [s.name for _, s in work]
+        unknown = [n for n in names if n not in valid]
+        if unknown:
+            where = ", ".join(robots or ()) or "any robot"
+            raise ValueError(f"no scenario {unknown[0]!r} for {where}; valid: "
+                             f"{', '.join(repr(n) for n in dict.fromkeys(valid))}")
+        work = [(spec, s) for spec, s in work if s.name in names]
+    return work

@@ -8,11 +8,11 @@ import pytest
 
 from wmr_mujoco.analytic import mecanum_contact as mc
 from wmr_mujoco.analytic import mecanum_roller as mr
+from wmr_mujoco.api import load
 from wmr_mujoco.models.builders.mecanum4 import WHEELS
 from wmr_mujoco.models.colliders import colliders
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.validation.omni_wheels import rolling_radius_profile
+from wmr_mujoco.robots.roller_wheels import rolling_radius_profile
 
 P = MecanumParams()
 R, B, G = P.wheel_radius, P.roller_half_width, P.roller_angle

@@ -17,8 +17,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from wmr_mujoco.docs_sync.markers import replace_between
-from wmr_mujoco.models.paths import README_PATH
-from wmr_mujoco.validation.report import REPORTS_DIR
+from wmr_mujoco.models.paths import README_PATH, REPORTS_DIR
 
 #: README marker key -> (report file, command that writes it).
 SECTIONS = {"validation results": ("summary.md", "make demo"),

@@ -135,9 +135,9 @@ def _on_model(measure: Callable[[mujoco.MjModel], MeasurementResult]
               ) -> Callable[[Scenario, RobotParams | None], MeasurementResult]:
     """A measurement scenario's ``evaluate``: ``measure`` on the disc built from params."""
     def evaluate(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
-        from wmr_mujoco.models.loading import load  # loading reads the registry
+        from wmr_mujoco.models.loading import load
 
-        return measure(load(NAME, params))
+        return measure(load(SPEC, params))
     return evaluate
 
 

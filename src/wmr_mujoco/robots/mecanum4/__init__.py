@@ -19,11 +19,7 @@ from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.mecanum4 import dynamics, kinematics, ripple
 from wmr_mujoco.robots.mecanum4.grouped import Group
-from wmr_mujoco.robots.spec import RobotSpec
-from wmr_mujoco.validation import metrics as mt
-from wmr_mujoco.validation.adapters import Adapter
-from wmr_mujoco.validation.metrics import Probe, Target
-from wmr_mujoco.validation.omni_wheels import (
+from wmr_mujoco.robots.roller_wheels import (
     DIRECTIONS_DEG,
     RAMP,
     ROLLER_RATE_PCT,
@@ -33,6 +29,10 @@ from wmr_mujoco.validation.omni_wheels import (
     translation,
     twist_inputs,
 )
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation.adapters import Adapter
+from wmr_mujoco.validation.metrics import Probe, Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
 

@@ -18,7 +18,7 @@ from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.robots.whipple import eigen, stability
-from wmr_mujoco.robots.whipple.rolling import NAME
+from wmr_mujoco.robots.whipple.rolling import NAME, compile_model
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
 
 
@@ -31,7 +31,8 @@ def _push(speed: float, what: str) -> Scenario:
     evaluate, start = stability.push_scenario_parts(speed)
     return Scenario(NAME, push_name(speed), duration=stability.PUSH_DURATION,
                     kind=ScenarioKind.MEASUREMENT, settle=0.0, evaluate=evaluate,
-                    film=free_run(start), description=f"sideways push at {speed:g} m/s: {what}")
+                    film=free_run(start, compile_model),
+                    description=f"sideways push at {speed:g} m/s: {what}")
 
 
 SCENARIOS = (

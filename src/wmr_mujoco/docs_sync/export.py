@@ -1,6 +1,6 @@
 """Write the checked-in MJCF files from the builders' default parameters.
 
-Run ``python -m wmr_mujoco.models.export`` after changing a builder or a default parameter;
+Run ``python -m wmr_mujoco.docs_sync.export`` after changing a builder or a default parameter;
 ``tests/models/test_loading.py`` fails until the files agree with the builders again.
 """
 
@@ -72,7 +72,7 @@ def update_class_table(readme: Path = README_PATH) -> Path | None:
 
     if not has_markers(readme, CLASS_TABLE_KEY):
         return None
-    replace_between(readme, CLASS_TABLE_KEY, class_table({n: load(n) for n in ROBOTS}))
+    replace_between(readme, CLASS_TABLE_KEY, class_table({n: load(s) for n, s in ROBOTS.items()}))
     return readme
 
 
