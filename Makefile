@@ -25,7 +25,7 @@ lint: $(STAMP)
 	$(BIN)/ruff check src tests scripts
 
 # Regenerate the checked-in MJCF files from the builders' defaults, the parameter tables
-# and the README's Campion class table.
+# and the Campion class table (docs/campion-classes.md).
 models: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.docs_sync.export
 
@@ -52,7 +52,7 @@ study: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/wmr bench
 
-# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into README.md
+# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into docs/results.md and docs/benchmarks.md
 # (a missing report changes nothing; `--only "validation results"` pastes one section).
 readme: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.docs_sync.readme_sync

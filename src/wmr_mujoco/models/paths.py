@@ -68,3 +68,6 @@ README_PATH: Path = REPO_ROOT / "README.md"
 
 #: Default output folder of ``wmr validate`` (and of the reports ``make readme`` reads).
 REPORTS_DIR = Path("reports")
+
+#: The documentation pages, some with generated sections (``make readme``, ``make models``).
+DOCS_DIR: Path = REPO_ROOT / "docs"
