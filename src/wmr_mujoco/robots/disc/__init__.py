@@ -107,10 +107,16 @@ def judge_rolling(scenario: Scenario, trace: Trace, adapter: DiscDynamics,
 
     The slope is a least-squares fit over the whole steady part of the run, so it is
     judged on every sample, not on one instant.
+
+    Raises:
+        ValueError: the run ends before two samples of its steady part (duration ≤ 0.5 s).
     """
     tr = trace.arrays()
     t, sim, ana = tr["time"], tr["sim"], tr["analytic"]
     steady = t > 0.5
+    if np.count_nonzero(steady) < 2:
+        raise ValueError(f"{scenario.key}: duration = {scenario.duration:g} s; the rolling "
+                         "acceleration is fitted after 0.5 s, give a longer run")
     measured = float(np.polyfit(t[steady], sim[steady, 1], 1)[0])
     torque = scenario.input_at(0.0)[0]
     expected = adapter.wheel.rolling_acceleration(torque)
