@@ -2,8 +2,14 @@
 
 Targets (omni3's registry entry, issue 3): worst position error over the run ≤ 1 % of
 path, worst heading error ≤ 1°, median roller-rate error ≤ 5 %; a pure rotation keeps the
-centre within 1 % of the wheel distance. Each trial: 5 s from a settled start, reached by
-a 0.5 s ramp that keeps traction below μN.
+centre within 1 % of the wheel distance. Each trial starts settled, reached by a 0.5 s
+ramp that keeps traction below μN.
+
+The translations, the rotation and translate+rotate are omni3's registered scenarios,
+judged over their whole 5 s by ``wmr validate`` (``make demo``). Here four trials, one of
+each kind and the diagonal+rotate trial that only the studies run, shortened to
+:data:`SHORT_S`: the targets are worst-over-the-run bounds, so a shorter run is held to
+the same ones.
 """
 
 import dataclasses
@@ -13,7 +19,11 @@ import pytest
 
 from wmr_mujoco.robots.roller_wheels.trials import peer_spec, run_trial, standard_trials
 
-TRIALS = standard_trials("omni3")
+#: Seconds each trial runs here: the ramp, then 1.5 s at speed (the roller-rate probe
+#: starts after 1 s).
+SHORT_S = 2.0
+TRIALS = [dataclasses.replace(t, duration=SHORT_S) for t in standard_trials("omni3")
+          if t.name in ("translate   0°", "translate  45°", "rotate", "diagonal+rotate")]
 
 
 @pytest.fixture(scope="module")
@@ -36,7 +46,7 @@ def test_tracks_ideal_kinematics(runs, name):
 def test_rollers_turn_at_the_kinematic_rate(runs):
     errors = [run.value("roller rate error (median)", "%") for run in runs.values()]
     measured = [e for e in errors if np.isfinite(e)]
-    assert len(measured) >= 8  # every trial with sideways slide measured rollers
+    assert len(measured) >= 3  # every trial with sideways slide measured rollers
     assert max(measured) <= 5.0
 
 
