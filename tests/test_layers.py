@@ -5,8 +5,8 @@ one above. The imports are read from the source with :mod:`ast`: module-level im
 imports inside functions alike (a deferred import is still a dependency).
 
 1. ``core``: the package root, :mod:`~wmr_mujoco.atomic`, :mod:`~wmr_mujoco.choices`,
-   :mod:`~wmr_mujoco.progress`, :mod:`~wmr_mujoco.render.gl_backend` (chooses the OpenGL
-   backend before MuJoCo loads);
+   :mod:`~wmr_mujoco.progress`, the OpenGL helpers (``gl_env``,
+   :mod:`~wmr_mujoco.render.gl_backend`: the backend is chosen before MuJoCo loads);
 2. ``parameters``: the frozen parameter dataclasses (``models.params``,
    ``models.params_*``), the primitive solids' mass properties (``models.solids``) and the
    file locations (``models.paths``). Analytic models read parameters;
@@ -42,7 +42,7 @@ MAX_LINES = 400
 #: (layer, module-name prefixes), bottom to top; the longest matching prefix wins and a
 #: module no prefix matches is ``application``.
 LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
-    ("core", ("wmr_mujoco", "wmr_mujoco.atomic", "wmr_mujoco.choices",
+    ("core", ("wmr_mujoco", "wmr_mujoco.atomic", "wmr_mujoco.choices", "wmr_mujoco.gl_env",
               "wmr_mujoco.progress", "wmr_mujoco.render.gl_backend")),
     ("parameters", ("wmr_mujoco.models.params", "wmr_mujoco.models.params_mecanum",
                     "wmr_mujoco.models.params_wheeled", "wmr_mujoco.models.params_whipple",
