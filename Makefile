@@ -35,13 +35,13 @@ lint: $(STAMP)
 	$(BIN)/ruff check src tests scripts
 
 # Regenerate the checked-in MJCF files from the builders' defaults, the parameter tables
-# and the README's Campion class table.
+# and the Campion class table (docs/campion-classes.md).
 models: $(STAMP)
-	$(BIN)/python -m wmr_mujoco.models.export
+	$(BIN)/python -m wmr_mujoco.docs_sync.export
 
 # The pictures in models/*/README.md.
 pictures: $(STAMP)
-	$(BIN)/python -m wmr_mujoco.models.pictures
+	$(BIN)/python -m wmr_mujoco.docs_sync.pictures
 
 # The clips in renders/ shown in the README: every clip each registry entry lists.
 renders: $(STAMP)
@@ -62,7 +62,7 @@ study: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/wmr bench
 
-# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into README.md
+# Paste reports/summary.md (make demo) and reports/bench.md (make bench) into docs/results.md and docs/benchmarks.md
 # (a missing report changes nothing; `--only "validation results"` pastes one section).
 readme: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.docs_sync.readme_sync

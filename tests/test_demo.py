@@ -15,7 +15,7 @@ def test_the_line_reports_the_run(monkeypatch):
     monkeypatch.setattr(demo, "ROBOTS", {"disc": spec})
     lines = demo.run_demo().splitlines()
     assert len(lines) == 2 and lines[0].startswith("robot")
-    sim = run_scenario(spec.scenario(spec.demo_scenario)).trace.arrays()["sim"]
+    sim = run_scenario(spec, spec.scenario(spec.demo_scenario)).trace.arrays()["sim"]
     path = float(np.sum(np.hypot(*np.diff(sim[:, :2], axis=0).T)))
     x, y, heading = sim[-1, :3]
     fields = lines[1].replace(",", " ").replace("°", " ").replace("%", " ").split()
@@ -35,8 +35,8 @@ def test_a_failed_run_is_shown_not_raised(monkeypatch):
     monkeypatch.setattr(demo, "ROBOTS", {"disc": spec})
     real = runner.run_scenario
 
-    def failing(scenario):
-        return dataclasses.replace(real(scenario), error="diverged at t=0.1 s")
+    def failing(spec, scenario):
+        return dataclasses.replace(real(spec, scenario), error="diverged at t=0.1 s")
 
     monkeypatch.setattr(demo, "run_scenario", failing)
     assert "failed: diverged at t=0.1 s" in demo.run_demo()

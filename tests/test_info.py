@@ -7,8 +7,8 @@ import functools
 import pytest
 
 from wmr_mujoco.info import describe, describe_file, used_params
+from wmr_mujoco.lookup import build_scene
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.loading import build_scene
 from wmr_mujoco.robots import ROBOTS, get_spec
 
 DECLARED = [(name, field) for name, spec in ROBOTS.items() if spec.params_type is not None

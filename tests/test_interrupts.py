@@ -22,17 +22,19 @@ def _default_sigint() -> None:
 
 
 def _interrupt(argv: list[str], cwd: Path, ready: Callable[[], bool], sig: int,
-               group: bool = False) -> tuple[int, str]:
+               group: bool = False, stderr: Path | None = None) -> tuple[int, str]:
     """Start ``wmr argv``, wait (≤ 60 s) until ``ready()``, send ``sig``; exit code, stderr.
 
     ``group``: to the whole process group (``wmr`` and its helpers), as a terminal does.
 
     The child runs in its own session, which is killed whatever happens, so that a failed
-    test leaves no process behind (a render of 600 s would otherwise run on).
+    test leaves no process behind (a render of 600 s would otherwise run on). ``stderr``:
+    a file for the child's stderr (so that ``ready`` can read its progress lines).
     """
     env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
     proc = subprocess.Popen([sys.executable, "-m", "wmr_mujoco.cli", *argv], cwd=cwd,
-                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE if stderr is None else stderr.open("w"),
                             text=True, preexec_fn=_default_sigint, start_new_session=True)
     try:
         deadline = time.monotonic() + 60
@@ -44,7 +46,7 @@ def _interrupt(argv: list[str], cwd: Path, ready: Callable[[], bool], sig: int,
         else:
             proc.send_signal(sig)
         _, err = proc.communicate(timeout=30)
-        return proc.returncode, err
+        return proc.returncode, err if stderr is None else stderr.read_text()
     finally:
         with contextlib.suppress(ProcessLookupError):
             os.killpg(proc.pid, signal.SIGKILL)
@@ -73,13 +75,14 @@ def test_interrupted_render_leaves_no_file(tmp_path, sig, code):
 
 
 @pytest.mark.parametrize("sig, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
-def test_interrupted_validate_leaves_no_file(tmp_path, sig, code):
+def test_interrupted_validate_leaves_no_file(tmp_path, tmp_path_factory, sig, code):
     out = tmp_path / "report"
-    # The first staged plot: every worker has started (the signal then never meets a
-    # worker still being set up), and most scenarios are still to run.
+    log = tmp_path_factory.mktemp("stderr") / "stderr.txt"
+    # The first scenario's progress line (no terminal: one line per result): the run is
+    # under way and most scenarios are still to run.
     returncode, err = _interrupt(
-        ["validate", "whipple", "disc_free", "--out", str(out), "--quiet"], tmp_path,
-        lambda: bool(list(out.glob(".plots-*/*"))), sig)
+        ["validate", "whipple", "disc_free", "--out", str(out)], tmp_path,
+        lambda: "[1/" in log.read_text(), sig, stderr=log)
     assert returncode == code, err
     assert err.strip().splitlines()[-1] == (
         f"wmr validate: {'interrupted' if code == 130 else 'terminated'}; nothing written")

@@ -29,9 +29,8 @@ from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
-from dm_control import mjcf
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.models import loading
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.run_limits import (
@@ -44,7 +43,13 @@ from wmr_mujoco.run_limits import (
 from wmr_mujoco.sim.engine import STATE_SPEC, Engine
 from wmr_mujoco.sim.engine import simulate as run_engine
 from wmr_mujoco.validation.metrics import Row, Trace
-from wmr_mujoco.validation.runner import Prepared, check_runnable, make_adapter, measure, prepare
+from wmr_mujoco.validation.runner import (
+    Prepared,
+    check_runnable,
+    make_adapter,
+    measure,
+    prepare,
+)
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
 
@@ -197,12 +202,14 @@ def _prepare(robot: str, inputs: Sequence[Input], duration: float, params: Robot
              kind: ScenarioKind | str, settle: float, world_frame: bool,
              max_memory: float | None, physics: bool = True) -> Prepared:
     """Check everything, then load, settle and schedule (warning of clipped inputs)."""
-    s = _scenario(get_spec(robot).name, inputs, duration, kind, settle, world_frame)
-    check_runnable(s)
-    model = load(s.robot, params)
-    check_frame(s, make_adapter(s, model, params))
-    check_steps(s, model, make_adapter(s, model, params), max_memory)
-    prep = prepare(s, params, model=model)
+    spec = get_spec(robot)
+    s = _scenario(spec.name, inputs, duration, kind, settle, world_frame)
+    check_runnable(spec, s)
+    model = loading.load(spec, params)
+    adapter = make_adapter(spec, s, model, params)
+    check_frame(s, adapter)
+    check_steps(s, model, adapter, max_memory)
+    prep = prepare(spec, s, params, model=model)
     if physics:
         warn_clipped(prep)
     return prep
@@ -301,41 +308,12 @@ def compare(robot: str, inputs: Sequence[Input], duration: float,
     return Comparison(_sim_trajectory(prep, states), _model_trajectory(prep), rows)
 
 
-def attach(arena: mjcf.RootElement, robot: str, pos: Sequence[float] = (0.0, 0.0, 0.0),
-           quat: Sequence[float] | None = None, params: RobotParams | None = None,
-           floor: str | None = None) -> mjcf.Element:
-    """Attach a registered robot to a dm_control ``mjcf`` arena; return the frame.
-
-    ``arena.attach(mjcf.from_path("models/omni3/omni3.xml"))`` fails on the robot's free
-    joint and drops the contact pairs its scene adds; this loads the robot file (built
-    from ``params`` if given), moves the free joint to the frame and adds the pairs
-    against the arena's floor (:func:`~wmr_mujoco.models.attach.attach_robot`). Names
-    inside the arena are prefixed with the robot's (``"omni3/wheel1"``).
-
-    Raises:
-        ValueError: unknown robot, a foreign model file, or the arena's floor not found.
-    """
-    from wmr_mujoco.models.attach import attach_robot
-
-    spec = get_spec(robot)
-    if spec.build is None or spec.params_type is None:
-        raise ValueError(f"robot {spec.name!r} is a model file without a robot-only file; "
-                         "attach it with arena.attach(mjcf.from_path(...)) yourself")
-    chosen = params if params is not None else spec.params_type()
-    if params is None and spec.folder is not None:
-        root = mjcf.from_path(str(spec.robot_path))
-    else:
-        root = spec.build(chosen)
-    return attach_robot(arena, root, pos, quat, spec.scene_extras, chosen, floor)
-
-
 __all__ = [
     "MAX_MEMORY",
     "Comparison",
     "Input",
     "InputClippedWarning",
     "Trajectory",
-    "attach",
     "compare",
     "predict",
     "simulate",

@@ -98,9 +98,9 @@ def _cmd_demo(args: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
-    from wmr_mujoco.choices import match_name
+    from wmr_mujoco.lookup import validation_jobs
     from wmr_mujoco.progress import bar, shown
-    from wmr_mujoco.validation.pool import ValidationPool
+    from wmr_mujoco.robots import ROBOTS
     from wmr_mujoco.validation.report import (
         check_report_folder,
         summary_line,
@@ -108,19 +108,12 @@ def _cmd_validate(args: argparse.Namespace) -> int:
         write_report,
     )
     from wmr_mujoco.validation.runner import run_all
-    from wmr_mujoco.validation.scenarios import scenarios_for
 
     _robots_only("validate", args.robots, "a model file has no analytic model or scenarios "
                  "to validate against")
     check_report_folder(args.out)
-    scenarios = scenarios_for(args.robots or None)
-    if args.scenario:
-        names = list(dict.fromkeys(s.name for s in scenarios))
-        where = ", ".join(args.robots) or "any robot"
-        chosen = {match_name(n, names, "scenario", f"no scenario {n!r} for {where}",
-                             f"valid: {', '.join(map(repr, names))}") for n in args.scenario}
-        scenarios = [s for s in scenarios if s.name in chosen]
-    progress_bar = bar(len(scenarios), "wmr validate", unit="scenario")
+    work = validation_jobs(args.robots or None, args.scenario or None)
+    progress_bar = bar(len(work), "wmr validate", unit="scenario")
 
     def progress(msg: str) -> None:
         if msg.startswith("["):  # "[i/n] robot/scenario": one scenario measured
@@ -130,16 +123,12 @@ def _cmd_validate(args: argparse.Namespace) -> int:
                 return
         progress_bar.write(msg, file=sys.stderr)
 
-    # Worker processes run the scenarios (a batch or a measurement each) and draw each
-    # scenario's plot as soon as its result is back.
-    with ValidationPool(args.out) as pool:
-        try:
-            results = run_all(scenarios, progress=progress, on_result=pool.plot,
-                              offload=pool.run)
-        finally:
-            progress_bar.close()
-        print(text_table(results, judged_only=not args.all_metrics))
-        path = write_report(results, args.out, pool.collect())
+    try:
+        results = run_all(work, progress=progress)
+    finally:
+        progress_bar.close()
+    print(text_table(results, judged_only=not args.all_metrics))
+    path = write_report(results, args.out, robots=ROBOTS)
     failed = [r.scenario.key for r in results if not r.passed]
     print(f"\n{summary_line(results)}; report: {path}")
     if failed:

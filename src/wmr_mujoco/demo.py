@@ -23,7 +23,7 @@ def run_demo() -> str:
         if spec.demo_scenario is None:
             continue
         scenario = spec.scenario(spec.demo_scenario)
-        result = run_scenario(scenario)
+        result = run_scenario(spec, scenario)
         if result.error:
             lines.append(f"{spec.name:<9} {scenario.name:<22} failed: {result.error}")
             continue

@@ -7,10 +7,10 @@ from pathlib import Path
 
 import mujoco
 
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models import classify
 from wmr_mujoco.models.actuation import actuation_mode
 from wmr_mujoco.models.builders.common import NUSER_ACTUATOR
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import ROBOTS, RobotSpec, get_spec, registered
 

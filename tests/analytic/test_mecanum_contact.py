@@ -8,11 +8,11 @@ import pytest
 
 from wmr_mujoco.analytic import mecanum_contact as mc
 from wmr_mujoco.analytic import mecanum_roller as mr
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.builders.mecanum4 import WHEELS
 from wmr_mujoco.models.colliders import colliders
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.validation.omni_wheels import rolling_radius_profile
+from wmr_mujoco.robots.roller_wheels import rolling_radius_profile
 
 P = MecanumParams()
 R, B, G = P.wheel_radius, P.roller_half_width, P.roller_angle
@@ -97,7 +97,7 @@ def test_ideal_sideways_mean_is_the_mean_cosine():
                                                ((0.0, 0.3, 0.0), "h cos φ")])
 def test_collider_translation_mean_follows_mujocos_rolling_radius(twist, weight):
     # Independent route: MuJoCo's rolling radius h(θ) of wheel FL over a revolution
-    # (validation.omni_wheels.rolling_radius_profile, mj_geomDistance). Ahead every
+    # (robots.roller_wheels.rolling_radius_profile, mj_geomDistance). Ahead every
     # wheel rolls on h, u = u_cmd ⟨h⟩/R; sideways the rows agree at equal |φ| and
     # v = v_cmd h cos φ / R (γ = 45°). The profile's even grid (Δ = 0.25°) averages a
     # function with a kink at each hand-over (the slope of h cos φ flips by ≈ 2 sin φ_m):

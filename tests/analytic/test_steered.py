@@ -8,7 +8,7 @@ import pytest
 
 from wmr_mujoco.analytic import steered
 from wmr_mujoco.analytic.integrate import integrate
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.params_wheeled import SingleSteerParams
 
 A = 0.2

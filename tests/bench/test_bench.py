@@ -33,15 +33,18 @@ def test_missing_peer_is_left_out_not_fatal(tmp_path):
 def test_engine_timing_leaves_measurement_scenarios_to_their_own_runs(monkeypatch):
     """The simulation stage times kinematic/dynamic runs; a measurement scenario (which
     has no adapter to prepare) is timed only in the full validation."""
+    import wmr_mujoco.api
+
     spec = bench.get_spec("disc")
-    monkeypatch.setattr(bench, "scenarios_for", lambda: [spec.scenario("torque"),
-                                                         spec.scenario("sliding wheel")])
+    monkeypatch.setattr(wmr_mujoco.api, "validation_jobs",
+                        lambda: [(spec, spec.scenario("torque")),
+                                 (spec, spec.scenario("sliding wheel"))])
     res = bench.validation_engines(1)
-    assert all(res[k] > 0 for k in ("loop", "rollout", "sim_loop", "sim_rollout"))
+    assert all(res[k] > 0 for k in ("all", "sim_loop", "sim_rollout"))
 
 
 def test_the_bench_says_where_the_peer_came_from(tmp_path):
-    from wmr_mujoco.bench.trials import PeerModel
+    from wmr_mujoco.robots.roller_wheels.trials import PeerModel
 
     row = {"label": "peer", "worst_position_pct": 1.0, "worst_heading_deg": 2.0,
            "real_time_factor": 3.0}

@@ -1,19 +1,31 @@
-"""The README's result and benchmark sections are pasted from the reports."""
+"""The docs' result and benchmark sections are pasted from the reports."""
 
 import json
 
 import pytest
 
 from wmr_mujoco.docs_sync.markers import markers
-from wmr_mujoco.docs_sync.readme_sync import SECTIONS, main, section_text, sync
-from wmr_mujoco.models.paths import README_PATH
+from wmr_mujoco.docs_sync.readme_sync import PAGES, SECTIONS, main, section_text, sync
+from wmr_mujoco.models.paths import REPO_ROOT
 
 
-def test_the_readme_has_every_section():
-    text = README_PATH.read_text()
+def test_the_docs_have_every_section():
     for key in SECTIONS:
+        text = (REPO_ROOT / PAGES[key]).read_text()
         begin, end = markers(key)
         assert text.count(begin) == 1 and text.count(end) == 1
+
+
+def _pages(root):
+    """The generated pages under ``root``, each with its sections' markers around "old"."""
+    for page in set(PAGES.values()):
+        (root / page).parent.mkdir(parents=True, exist_ok=True)
+        (root / page).write_text("\n".join(f"{b}\nold\n{e}" for k in SECTIONS
+                                           if PAGES[k] == page for b, e in [markers(k)]))
+
+
+def _text(root):
+    return "\n".join((root / page).read_text() for page in sorted(set(PAGES.values())))
 
 
 def test_section_text_demotes_headings():
@@ -28,51 +40,46 @@ def _complete(reports, quick=False, peer=True):
 
 
 def test_sync_pastes_each_report(tmp_path):
-    readme = tmp_path / "README.md"
-    readme.write_text("\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS)))
+    _pages(tmp_path)
     reports = tmp_path / "reports"
     reports.mkdir()
     (reports / "summary.md").write_text("| robot | pass |\n|---|---|\n| disc | pass |\n")
     (reports / "bench.md").write_text("# Benchmarks\n\n## Speed\n\n| x |\n")
     (reports / "open.md").write_text("| omni3 | torque rotate | open |\n")
     _complete(reports)
-    assert sync(readme, reports) == list(SECTIONS)
-    text = readme.read_text()
+    assert sync(tmp_path, reports) == list(SECTIONS)
+    text = _text(tmp_path)
     assert "old" not in text and "| disc | pass |" in text and "#### Speed" in text
     assert "| omni3 | torque rotate | open |" in text
 
 
 def test_missing_report_names_the_command(tmp_path, capsys):
-    readme = tmp_path / "README.md"
-    readme.write_text("")
     with pytest.raises(FileNotFoundError, match="`make demo` writes it"):
-        sync(readme, tmp_path)
-    assert main(["--readme", str(readme), "--reports", str(tmp_path)]) == 2
+        sync(tmp_path, tmp_path)
+    assert main(["--root", str(tmp_path), "--reports", str(tmp_path)]) == 2
     assert "summary.md not found" in capsys.readouterr().err
 
 
 def test_only_the_sections_asked_for_and_nothing_when_one_is_missing(tmp_path):
-    readme = tmp_path / "README.md"
-    original = "\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS))
-    readme.write_text(original)
+    _pages(tmp_path)
+    original = _text(tmp_path)
     (tmp_path / "summary.md").write_text("| new |\n")
     (tmp_path / "open.md").write_text("No open targets.\n")
     _complete(tmp_path)
     with pytest.raises(FileNotFoundError, match="`make bench` writes it"):
-        sync(readme, tmp_path)
-    assert readme.read_text() == original  # nothing written when a report is missing
-    assert sync(readme, tmp_path, ["validation results"]) == ["validation results"]
-    assert readme.read_text().count("old") == 2 and "| new |" in readme.read_text()
-    with pytest.raises(ValueError, match="unknown README sections"):
-        sync(readme, tmp_path, ["results"])
+        sync(tmp_path, tmp_path)
+    assert _text(tmp_path) == original  # nothing written when a report is missing
+    assert sync(tmp_path, tmp_path, ["validation results"]) == ["validation results"]
+    assert _text(tmp_path).count("old") == 2 and "| new |" in _text(tmp_path)
+    with pytest.raises(ValueError, match="unknown sections"):
+        sync(tmp_path, tmp_path, ["results"])
 
 
 def _refused(tmp_path, capsys):
-    readme = tmp_path / "README.md"
-    original = "\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS))
-    readme.write_text(original)
-    assert main(["--readme", str(readme), "--reports", str(tmp_path)]) == 2
-    assert readme.read_text() == original
+    _pages(tmp_path)
+    original = _text(tmp_path)
+    assert main(["--root", str(tmp_path), "--reports", str(tmp_path)]) == 2
+    assert _text(tmp_path) == original
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1
     return err
@@ -120,6 +127,5 @@ def test_a_report_with_a_path_of_this_machine_is_refused(tmp_path, capsys):
 def test_units_with_slashes_are_not_paths(tmp_path):
     _reports(tmp_path, bench="1.5 m/s, 3 rad/s, N·m·s/rad, steps/s\n")
     _complete(tmp_path)
-    readme = tmp_path / "README.md"
-    readme.write_text("\n".join(f"{b}\nold\n{e}" for b, e in map(markers, SECTIONS)))
-    assert sync(readme, tmp_path) == list(SECTIONS)
+    _pages(tmp_path)
+    assert sync(tmp_path, tmp_path) == list(SECTIONS)

@@ -6,7 +6,7 @@ import pytest
 from dm_control import mjcf
 
 import wmr_mujoco as wmr
-from wmr_mujoco.api import attach
+from wmr_mujoco.lookup import attach
 from wmr_mujoco.models.attach import attach_robot
 
 #: Wheel-rate controls (rad/s) that drive each robot straight: omni3's wheels 2 and 3 in

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.analytic import campion
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models import classify
-from wmr_mujoco.models.loading import load
 
 #: Campion, Bastin & d'Andréa-Novel (1996) / Siegwart & Nourbakhsh §3.3: the class of
 #: each robot from its wheel set, by hand: three Swedish wheels (3,0); a fixed axle plus

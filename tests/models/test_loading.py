@@ -1,7 +1,7 @@
 import mujoco
 import pytest
 
-import wmr_mujoco.robots.spec
+import wmr_mujoco.validation.spec
 from wmr_mujoco import ROBOTS, load
 from wmr_mujoco.models.params import TricycleParams, WheelParams
 
@@ -41,7 +41,7 @@ def test_wrong_params_type_is_clear():
 
 
 def test_missing_model_file_names_path(tmp_path, monkeypatch):
-    monkeypatch.setattr(wmr_mujoco.robots.spec, "MODELS_DIR", tmp_path)
+    monkeypatch.setattr(wmr_mujoco.validation.spec, "MODELS_DIR", tmp_path)
     with pytest.raises(FileNotFoundError, match=str(tmp_path / "bicycle" / "scene.xml")):
         load("bicycle")
 

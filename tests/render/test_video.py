@@ -136,7 +136,7 @@ def test_coinciding_trails_both_show(tmp_path):
     """Two identical trails: the model's (red) shows as a rim around the simulated (green)."""
     import mujoco
 
-    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.lookup import load
     from wmr_mujoco.render import rendering
 
     model = load("disc")

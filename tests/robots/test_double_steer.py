@@ -6,7 +6,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.params_wheeled import DoubleSteerParams
 from wmr_mujoco.robots import double_steer
 

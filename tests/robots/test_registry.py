@@ -15,7 +15,7 @@ from wmr_mujoco.models.builders import disc as disc_builder
 from wmr_mujoco.models.params import DiscParams, WheelParams, params_or_default
 from wmr_mujoco.robots import ROBOTS, RobotSpec, disc, get_spec, register, registered
 from wmr_mujoco.validation.metrics import Metric, Series
-from wmr_mujoco.validation.runner import run_all
+from wmr_mujoco.validation.runner import jobs, run_all
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
 
@@ -77,8 +77,8 @@ def test_a_new_robot_runs_through_validate_report_and_render(tmp_path):
     spec = wide_disc_spec()
     with registered(spec):
         assert NAME in ROBOTS
-        results = run_all(spec.scenarios)
-        path = write_report(results, tmp_path)
+        results = run_all(jobs([spec]))
+        path = write_report(results, tmp_path, robots=ROBOTS)
         frames = render_scenario(dataclasses.replace(spec.scenarios[0], duration=0.3),
                                  width=64, height=48, fps=10)
     assert NAME not in ROBOTS

@@ -4,7 +4,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.params_wheeled import SingleSteerParams
 from wmr_mujoco.robots import single_steer
 

@@ -2,6 +2,7 @@ import json
 
 import pytest
 
+from wmr_mujoco.robots import ROBOTS, get_spec
 from wmr_mujoco.validation.report import slug, text_table, write_report
 from wmr_mujoco.validation.runner import run_all
 from wmr_mujoco.validation.scenarios import Scenario
@@ -10,16 +11,17 @@ from wmr_mujoco.validation.signals import Piecewise, const
 
 @pytest.fixture(scope="module")
 def results():
+    disc = get_spec("disc")
     return run_all([
-        Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=1.0),
+        (disc, Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=1.0)),
         # const refuses NaN; a signal that yields one mid-run still must become a failed row.
-        Scenario("disc", "nan input", (Piecewise(((0.0, float("nan")),)), const(0.0)),
-                 duration=0.1),
+        (disc, Scenario("disc", "nan input", (Piecewise(((0.0, float("nan")),)), const(0.0)),
+                        duration=0.1)),
     ])
 
 
 def test_report_files(results, tmp_path):
-    path = write_report(results, tmp_path)
+    path = write_report(results, tmp_path, robots=ROBOTS)
     text = path.read_text()
     assert "1 of 2 scenarios pass" in text and "disc/nan input" in text
     doc = json.loads((tmp_path / "validation.json").read_text())
@@ -36,7 +38,7 @@ def test_failed_report_write_leaves_no_file(results, tmp_path, monkeypatch):
 
     monkeypatch.setattr(rep, "markdown_table", boom)
     with pytest.raises(RuntimeError):
-        write_report(results, tmp_path)
+        write_report(results, tmp_path, robots=ROBOTS)
     assert not (tmp_path / "validation.md").exists()
     assert not list(tmp_path.glob(".*"))
 
@@ -119,9 +121,9 @@ def _every_result(value):
 
 def test_a_partial_run_is_merged_into_the_full_report(tmp_path):
     full = _every_result(0.1)
-    write_report(full, tmp_path)
+    write_report(full, tmp_path, robots=ROBOTS)
     assert json.loads((tmp_path / "validation.json").read_text())["complete"] is True
-    write_report([_result("omni3", "rotate", 0.3)], tmp_path)
+    write_report([_result("omni3", "rotate", 0.3)], tmp_path, robots=ROBOTS)
     doc = json.loads((tmp_path / "validation.json").read_text())
     assert doc["complete"] is True and len(doc["scenarios"]) == len(full)
     values = {(r["robot"], r["scenario"]): r["metrics"][0]["value"] for r in doc["scenarios"]}
@@ -134,7 +136,7 @@ def test_a_partial_run_is_merged_into_the_full_report(tmp_path):
 
 
 def test_a_first_partial_run_says_what_is_missing(tmp_path):
-    write_report([_result("disc", "straight", 0.1)], tmp_path)
+    write_report([_result("disc", "straight", 0.1)], tmp_path, robots=ROBOTS)
     doc = json.loads((tmp_path / "validation.json").read_text())
     assert doc["complete"] is False and "omni3/rotate" in doc["missing"]
     assert "Not run yet: " in (tmp_path / "validation.md").read_text()
@@ -145,14 +147,14 @@ def test_a_run_removes_its_own_stale_plots_only(tmp_path):
     for robot in ("disc", "omni3"):
         (plots / robot).mkdir(parents=True)
         (plots / robot / "renamed-scenario.png").write_bytes(b"png")
-    write_report([_result("disc", "straight", 0.1)], tmp_path)
+    write_report([_result("disc", "straight", 0.1)], tmp_path, robots=ROBOTS)
     assert not (plots / "disc" / "renamed-scenario.png").exists()
     assert (plots / "omni3" / "renamed-scenario.png").exists()
 
 
 def test_a_corrupt_earlier_report_counts_as_none(tmp_path):
     (tmp_path / "validation.json").write_text("{not json")
-    write_report([_result("disc", "straight", 0.1)], tmp_path)
+    write_report([_result("disc", "straight", 0.1)], tmp_path, robots=ROBOTS)
     doc = json.loads((tmp_path / "validation.json").read_text())
     assert [r["scenario"] for r in doc["scenarios"]] == ["straight"]
 

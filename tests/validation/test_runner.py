@@ -1,41 +1,29 @@
-"""Every validation scenario through the same code as `wmr validate`, judged on its targets.
+"""The one runner: failures become rows, stepping engines agree, progress counts results.
 
-The targets are each robot's (``wmr_mujoco.robots.<robot>.TARGETS``, with their basis):
-worst position error over the run ≤ 0.5 % of path (disc, bicycle, tricycle) and ≤ 1 %
-(omni3); lateral slip RMS ≤ 1 mm/s; omni heading ≤ 1° over the run, roller rates within
-5 %; single-wheel acceleration within 1 % of τR/(J + mR²); omni traction below μN.
+Every registered scenario judged on its targets is ``wmr validate``'s job (``make demo``,
+run by CI); ``tests/robots/test_smoke.py`` runs every registry entry briefly.
 """
 
 import numpy as np
 import pytest
 
+from wmr_mujoco.robots import ROBOTS, get_spec
 from wmr_mujoco.validation.metrics import lateral_slip
-from wmr_mujoco.validation.runner import run_all, run_scenario
-from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, scenarios_for
+from wmr_mujoco.validation.runner import jobs, run_all, run_scenario
+from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
 
-SCENARIOS = scenarios_for()
-
-
-@pytest.mark.parametrize("scenario", SCENARIOS, ids=[s.key for s in SCENARIOS])
-def test_scenario_meets_its_targets(scenario):
-    result = run_scenario(scenario)
-    assert result.error is None, result.error
-    judged = [r for r in result.rows if r.passed is not None]
-    assert judged, "every scenario is judged on at least one target"
-    failed = [f"{r.metric} = {r.value:.4g} {r.unit} (target {r.target})" for r in judged
-              if not r.passed]
-    assert not failed, failed
+SCENARIOS = [s for _, s in jobs(list(ROBOTS.values()))]
 
 
 def test_diverging_scenario_is_a_failed_row_and_the_rest_still_run(monkeypatch):
     import wmr_mujoco.validation.runner as validation
     from wmr_mujoco import load
 
-    def unstable_load(robot, params=None):
+    def unstable_load(spec, params=None):
         """Negative damping and a 0.2 s step: the simulation must blow up."""
-        model = load(robot, params)
-        if robot == "bicycle":
+        model = load(spec, params)
+        if spec.name == "bicycle":
             model.opt.timestep = 0.2
             model.dof_damping[:] = -1e6
         return model
@@ -43,22 +31,28 @@ def test_diverging_scenario_is_a_failed_row_and_the_rest_still_run(monkeypatch):
     monkeypatch.setattr(validation, "load", unstable_load)
     bad = Scenario("bicycle", "unstable", (const(1.0), const(0.0)), duration=1.0)
     good = Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=1.0)
-    results = run_all([bad, good])
+    messages = []
+    results = run_all([(get_spec("bicycle"), bad), (get_spec("disc"), good)], messages.append)
     assert results[0].error is not None and "diverged" in results[0].error
     assert results[0].rows[0].passed is False and "mjWARN" in results[0].rows[0].note
     assert results[1].error is None and results[1].passed
+    # One line per result, numbered by completion (the failure's traceback comes first).
+    assert [m for m in messages if m.startswith("[")] == ["[1/2] bicycle/unstable",
+                                                          "[2/2] disc/short"]
 
 
 def test_bad_input_values_are_a_failed_row():
     from wmr_mujoco.validation.signals import Piecewise
 
     nan = Piecewise(((0.0, float("nan")),))  # const() refuses NaN itself
-    result = run_scenario(Scenario("disc", "nan", (nan, const(0.0)), duration=0.1))
+    result = run_scenario(get_spec("disc"),
+                          Scenario("disc", "nan", (nan, const(0.0)), duration=0.1))
     assert result.error is not None and not result.passed
 
 
 def test_unknown_model_kind_is_a_failed_row():
-    result = run_scenario(Scenario("bicycle", "torque", (const(1.0), const(0.0)),
+    result = run_scenario(get_spec("bicycle"),
+                          Scenario("bicycle", "torque", (const(1.0), const(0.0)),
                                    kind="dynamic", duration=0.1))
     assert result.error and "no dynamic model for robot 'bicycle'" in result.error
 
@@ -89,8 +83,9 @@ def test_rollout_and_step_loop_are_identical(key):
     from wmr_mujoco.validation.runner import make_adapter, schedule
 
     scenario = next(s for s in SCENARIOS if s.key == key)
-    model = load(scenario.robot)
-    adapter = make_adapter(scenario, model)
+    spec = get_spec(scenario.robot)
+    model = load(spec)
+    adapter = make_adapter(spec, scenario, model)
     set_actuation_mode(model, adapter.mode)
     data = mujoco.MjData(model)
     for _ in range(100):
@@ -104,8 +99,8 @@ def test_rollout_and_step_loop_are_identical(key):
     assert by_loop.shape == (501, mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_FULLPHYSICS))
     assert np.array_equal(by_loop, by_rollout)
 
-    loop_rows = run_scenario(scenario, engine="loop").rows
-    rollout_rows = run_scenario(scenario, engine="rollout").rows
+    loop_rows = run_scenario(spec, scenario, engine="loop").rows
+    rollout_rows = run_scenario(spec, scenario, engine="rollout").rows
     assert [(r.metric, r.value) for r in loop_rows] == [(r.metric, r.value) for r in rollout_rows]
 
 
@@ -120,60 +115,6 @@ def test_unknown_engine():
         simulate(model, mujoco.MjData(model), np.zeros((3, 2)), engine="gpu")
 
 
-def test_batched_run_all_matches_the_step_loop():
-    """Scenarios of one robot share one threaded rollout; the metrics do not change."""
-    from wmr_mujoco.validation.scenarios import scenarios_for
-
-    scenarios = scenarios_for(["disc"])
-    batched = run_all(scenarios, engine="rollout")
-    looped = run_all(scenarios, engine="loop")
-    for a, b in zip(batched, looped, strict=True):
-        assert [(r.metric, r.value) for r in a.rows] == [(r.metric, r.value) for r in b.rows]
-
-
-def test_batches_split_by_robot_kind_and_settle():
-    """Only scenarios with one model and one settled start may share a rollout."""
-    from wmr_mujoco.validation.runner import batch_key
-
-    a = Scenario("disc", "a", (const(1.0), const(0.0)))
-    assert batch_key(a) == batch_key(Scenario("disc", "b", (const(0.5), const(0.1))))
-    assert batch_key(a) != batch_key(Scenario("disc", "c", a.inputs, settle=0.2))
-    assert batch_key(a) != batch_key(Scenario("disc", "d", a.inputs, kind="dynamic"))
-    assert batch_key(a) != batch_key(Scenario("bicycle", "a", a.inputs))
-
-
-def test_run_all_unknown_engine():
-    with pytest.raises(ValueError, match="unknown engine 'gpu'; valid engines are: rollout, loop"):
-        run_all([], engine="gpu")
-
-
-def test_pipelined_batches_with_different_settles_match_the_loop():
-    """Two batches of one robot (different settles) go through the pipeline; each keeps
-    its own start state, so the metrics equal the step loop's."""
-    scenarios = [Scenario("disc", "settle 0.5", (const(1.0, 0.5), const(0.3)), duration=1.0),
-                 Scenario("disc", "settle 0.2", (const(1.0, 0.5), const(0.3)), duration=1.0,
-                          settle=0.2)]
-    batched = run_all(scenarios, engine="rollout")
-    looped = run_all(scenarios, engine="loop")
-    for a, b in zip(batched, looped, strict=True):
-        assert a.error is None
-        assert [(r.metric, r.value) for r in a.rows] == [(r.metric, r.value) for r in b.rows]
-
-
-def test_work_units_batches_then_measurements():
-    from wmr_mujoco.robots import get_spec
-    from wmr_mujoco.validation.runner import batch_key, work_units
-
-    scenarios = get_spec("disc").scenarios
-    units = work_units(scenarios)
-    assert sorted(i for u in units for i in u) == list(range(len(scenarios)))
-    for unit in units:  # one batch key per unit; a measurement always alone
-        assert len({batch_key(scenarios[i]) for i in unit}) == 1
-        kinds = {scenarios[i].kind for i in unit}
-        assert ScenarioKind.MEASUREMENT not in kinds or len(unit) == 1
-    assert all(len(u) == 1 for u in work_units(scenarios, "loop"))
-
-
 def test_a_kind_without_a_judge_is_refused_before_any_simulation(monkeypatch):
     """A robot with a dynamic adapter but no dynamic judge: prepare() says so before
     loading or stepping anything (the judge used to be looked up after the run)."""
@@ -181,7 +122,6 @@ def test_a_kind_without_a_judge_is_refused_before_any_simulation(monkeypatch):
 
     import mujoco
 
-    from wmr_mujoco.robots import get_spec, registered
     from wmr_mujoco.validation.runner import prepare
 
     disc = get_spec("disc")
@@ -195,10 +135,17 @@ def test_a_kind_without_a_judge_is_refused_before_any_simulation(monkeypatch):
     monkeypatch.setattr(mujoco, "mj_step", stepped)
     scenario = Scenario("disc_unjudged", "push", (const(0.1), const(0.0)), 0.5,
                         ScenarioKind.DYNAMIC)
-    with registered(spec):
-        with pytest.raises(ValueError, match="robot 'disc_unjudged' has no judge for dynamic "
-                           "scenarios; kinds it judges: kinematic"):
-            prepare(scenario)
+    with pytest.raises(ValueError, match="robot 'disc_unjudged' has no judge for dynamic "
+                       "scenarios; kinds it judges: kinematic"):
+        prepare(spec, scenario)
+
+
+def test_a_scenario_given_with_another_robots_spec_is_refused():
+    from wmr_mujoco.validation.runner import prepare
+
+    with pytest.raises(ValueError, match="a scenario of robot 'disc' given with the spec of "
+                       "'bicycle'"):
+        prepare(get_spec("bicycle"), Scenario("disc", "a", (const(1.0), const(0.0))))
 
 
 def test_schedule_uses_an_adapters_exact_step_and_else_rk4():

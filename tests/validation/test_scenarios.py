@@ -9,7 +9,6 @@ from wmr_mujoco.validation.scenarios import (
     Scenario,
     ScenarioKind,
     free_run,
-    scenarios_for,
 )
 from wmr_mujoco.validation.signals import const
 
@@ -23,7 +22,9 @@ def film(scenario, params):
 
 
 def test_every_robot_has_its_scenarios():
-    scenarios = scenarios_for()
+    from wmr_mujoco.lookup import validation_jobs
+
+    scenarios = [s for _, s in validation_jobs()]
     names = {s.key for s in scenarios}
     assert len(names) == len(scenarios), "scenario names must be unique per robot"
     # The robots validated since the first release keep their scenarios; every robot added
@@ -37,9 +38,14 @@ def test_every_robot_has_its_scenarios():
 
 
 def test_selection_and_bad_robot():
-    assert all(s.robot == "bicycle" for s in scenarios_for(["bicycle"]))
+    from wmr_mujoco.lookup import validation_jobs
+
+    assert all(s.robot == "bicycle" for _, s in validation_jobs(["bicycle"]))
+    assert [s.name for _, s in validation_jobs(["disc"], ["torque"])] == ["torque"]
     with pytest.raises(ValueError, match="unknown robot 'tank'"):
-        scenarios_for(["tank"])
+        validation_jobs(["tank"])
+    with pytest.raises(ValueError, match="no scenario 'fly' for disc; valid: "):
+        validation_jobs(["disc"], ["fly"])
 
 
 def test_kind_from_its_string_and_bad_kind():
@@ -76,13 +82,16 @@ def test_free_run_films_one_uncontrolled_run_from_its_start_state():
     """A free body thrown upwards at 1 m/s (the free disc, set above the floor): the film
     steps it for the scenario's duration with the controls at zero, one frame per step,
     and its height follows z0 + v t − g t²/2 until it lands (no contact before)."""
+    from wmr_mujoco import load
+
     def start(model, data, params):
         data.qpos[2] = 1.0
         data.qvel[2] = 1.0
         mujoco.mj_forward(model, data)
 
     s = Scenario("disc_free", "throw", kind=ScenarioKind.MEASUREMENT, evaluate=evaluate,
-                 film=free_run(start), duration=0.2, settle=0.0)
+                 film=free_run(start, lambda p: load("disc_free", p)), duration=0.2,
+                 settle=0.0)
     frames = list(s.film(s, None))
     model = frames[0].model
     assert len(frames) == round(0.2 / model.opt.timestep)

@@ -41,9 +41,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from wmr_mujoco.analytic.checks import as_array, positive
-from wmr_mujoco.models.builders.common import box_inertia
-from wmr_mujoco.models.builders.steered import fork_yaw_inertia
 from wmr_mujoco.models.params_wheeled import SingleSteerParams
+from wmr_mujoco.models.solids import box_inertia, fork_yaw_inertia
 
 
 def _rot(psi: float) -> np.ndarray:

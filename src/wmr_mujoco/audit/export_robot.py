@@ -2,7 +2,7 @@
 
 Writes a Menagerie-style folder: the robot file, ``scene.xml`` (the robot included, with
 floor and light) and a README with the parameter table, through the robot's own builder
-and parameter dataclass (the same writers as :mod:`wmr_mujoco.models.export`). Every
+and parameter dataclass (the same writers as :mod:`wmr_mujoco.docs_sync.export`). Every
 ``--set`` is checked before anything is written: an unknown field names the valid ones,
 a bad value the field's type and the dataclass's own range check.
 """
@@ -15,9 +15,9 @@ from pathlib import Path
 
 from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.audit.errors import AuditInputError
+from wmr_mujoco.docs_sync.export import scene_xml
 from wmr_mujoco.info import used_params
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.export import scene_xml
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import ROBOTS, RobotSpec
 

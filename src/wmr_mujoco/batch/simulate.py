@@ -24,6 +24,8 @@ from wmr_mujoco.batch.trajectory import BatchTrajectory
 from wmr_mujoco.batch.warp_backend import WarpBackend
 from wmr_mujoco.models.actuation import set_actuation_mode
 from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots import get_spec
+from wmr_mujoco.run_limits import check_frame, warn_clipped
 from wmr_mujoco.sim.engine import STATE_SPEC
 from wmr_mujoco.validation.runner import (
     Prepared,
@@ -33,6 +35,7 @@ from wmr_mujoco.validation.runner import (
     schedule,
 )
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.spec import RobotSpec
 
 #: The batched engines by name.
 BACKENDS: dict[str, type[Backend]] = {b.name: b for b in (RolloutBackend, WarpBackend)}
@@ -138,7 +141,8 @@ def _check_memory(members: int, nstep: int, model: mujoco.MjModel, nu: int) -> N
                          "use fewer members or a shorter duration, in several calls")
 
 
-def prepare_members(scenarios: Sequence[Scenario], params: Sequence[RobotParams | None],
+def prepare_members(spec: RobotSpec, scenarios: Sequence[Scenario],
+                    params: Sequence[RobotParams | None],
                     backend: Backend) -> list[Prepared]:
     """Load, check, settle and schedule every member (equal parameters: shared model).
 
@@ -165,17 +169,17 @@ def prepare_members(scenarios: Sequence[Scenario], params: Sequence[RobotParams 
     backend.check(scenarios[0].robot, list(models.values()))
     out: list[Prepared | None] = [None] * len(scenarios)
     for key, idx in groups.items():
-        lead = prepare(scenarios[idx[0]], params[idx[0]], models[key])
+        lead = prepare(spec, scenarios[idx[0]], params[idx[0]], models[key])
         out[idx[0]] = lead
         x0 = lead.adapter.sim_state(lead.model, lead.data)
         for i in idx[1:]:
-            adapter = make_adapter(scenarios[i], lead.model, params[i])
+            adapter = make_adapter(spec, scenarios[i], lead.model, params[i])
             if adapter.mode is not None:
                 set_actuation_mode(lead.model, adapter.mode)
             inputs, controls, analytic = schedule(scenarios[i], adapter, x0,
                                                   lead.model.opt.timestep, nstep)
-            out[i] = Prepared(scenarios[i], lead.model, lead.data, adapter, inputs, controls,
-                              analytic)
+            out[i] = Prepared(spec, scenarios[i], lead.model, lead.data, adapter, inputs,
+                              controls, analytic)
     return out  # type: ignore[return-value]
 
 
@@ -215,19 +219,23 @@ def simulate_batch(robot: str, inputs: Sequence[Sequence[Input]] | np.ndarray,
         RuntimeError: a Warp buffer overflowed (named).
     """
     engine = make_backend(backend, **options)
+    spec = get_spec(robot)
     per_member = member_inputs(inputs)
     scenarios = []
     for i, member in enumerate(per_member):
         try:
-            scenarios.append(_scenario(robot, member, duration, kind, settle, world_frame))
+            scenarios.append(_scenario(spec.name, member, duration, kind, settle, world_frame))
         except ValueError as err:
             raise ValueError(f"member {i}: {err}") from None
     for i, s in enumerate(scenarios):
         try:
-            check_runnable(s)
+            check_runnable(spec, s)
         except ValueError as err:
             raise ValueError(f"member {i}: {err}") from None
-    preps = prepare_members(scenarios, member_params(params, len(scenarios)), engine)
+    preps = prepare_members(spec, scenarios, member_params(params, len(scenarios)), engine)
+    for prep in preps:
+        check_frame(prep.scenario, prep.adapter)
+        warn_clipped(prep)
     states = engine.run(preps)
     members = [_sim_trajectory(p, s) for p, s in zip(preps, states, strict=True)]
     return BatchTrajectory(members[0].time, np.stack([t.states for t in members]),

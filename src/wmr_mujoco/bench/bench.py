@@ -14,21 +14,21 @@ import os
 import subprocess
 import sys
 import tempfile
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 import mujoco
 
 from wmr_mujoco.atomic import write_text_atomic
-from wmr_mujoco.bench.trials import PeerModel, find_peer
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.bench.thread_scaling import TARGET_S, driving_controls, scaling
+from wmr_mujoco.lookup import load
 from wmr_mujoco.progress import bar
 from wmr_mujoco.robots import ROBOTS, get_spec
-from wmr_mujoco.sim.thread_scaling import TARGET_S, driving_controls, scaling
+from wmr_mujoco.robots.roller_wheels.trials import PeerModel, find_peer
 from wmr_mujoco.sim.timing import median_time, paired_ratio, step_loop_time
 from wmr_mujoco.validation.report import check_report_folder
-from wmr_mujoco.validation.runner import Prepared, run_scenario
-from wmr_mujoco.validation.scenarios import ScenarioKind, scenarios_for
+from wmr_mujoco.validation.runner import run_scenario
+from wmr_mujoco.validation.scenarios import ScenarioKind
 
 #: Timesteps of the accuracy-against-cost study, s.
 TIMESTEPS = (0.0005, 0.001, 0.002, 0.004)
@@ -52,7 +52,7 @@ def step_speed(robots: Sequence[str], rounds: int, nstep: int = 2000,
     The loop time is the median of ``rounds`` runs of ``nstep`` steps. The rollout speedup
     is the median of ``rounds`` one-thread/all-core pairs, beside the machine's ceiling
     measured in the same rounds with processes
-    (:func:`wmr_mujoco.sim.thread_scaling.scaling`).
+    (:func:`wmr_mujoco.bench.thread_scaling.scaling`).
     """
     out = {}
     for robot in robots:
@@ -80,7 +80,7 @@ def accuracy_vs_timestep(robot: str, repeats: int) -> list[dict[str, float]]:
     rows = []
     for dt in TIMESTEPS:
         params = dataclasses.replace(default, sim=dataclasses.replace(default.sim, timestep=dt))
-        result = run_scenario(scenario, params=params)
+        result = run_scenario(spec, scenario, params=params)
         err = next((r.value for r in result.rows if r.metric == "worst position error"
                     and r.unit == "% of path"), float("nan"))
         model = load(robot, params)
@@ -129,45 +129,40 @@ def validate_wall_time(repeats: int) -> float:
 
 
 def validation_engines(repeats: int) -> dict[str, float]:
-    """Wall time of all validation scenarios (no report) through each engine.
+    """Wall time of all validation scenarios (no report) through the one runner.
 
     Also times the simulation stage alone (scenarios prepared beforehand): every
-    kinematic and dynamic scenario through the Python ``mj_step`` loop, against one
-    threaded rollout per batch (a measurement scenario steps its own runs, the same under
-    either engine). Medians of ``repeats`` alternating runs.
+    kinematic and dynamic scenario stepped by the Python ``mj_step`` loop against one
+    ``mujoco.rollout`` call each (the runner's stepping; a measurement scenario steps its
+    own runs). Medians of ``repeats`` alternating runs.
     """
-    from wmr_mujoco.sim.engine import simulate, simulate_batch
-    from wmr_mujoco.validation.runner import batch_key, prepare, run_all
+    from wmr_mujoco.lookup import validation_jobs
+    from wmr_mujoco.sim.engine import simulate
+    from wmr_mujoco.validation.runner import prepare, run_all
 
-    scenarios = scenarios_for()
-    t_loop, t_rollout, ratio = paired_ratio(lambda: run_all(scenarios, engine="loop"),
-                                            lambda: run_all(scenarios, engine="rollout"),
-                                            repeats, warmup=False)
-    prepared = [prepare(s) for s in scenarios if s.kind is not ScenarioKind.MEASUREMENT]
-    groups: dict[tuple[str, str, float], list[Prepared]] = {}
-    for p in prepared:
-        groups.setdefault(batch_key(p.scenario), []).append(p)
+    work = validation_jobs()
+    t_all = median_time(lambda: run_all(work), repeats, warmup=False)
+    prepared = [prepare(spec, s) for spec, s in work if s.kind is not ScenarioKind.MEASUREMENT]
 
-    def loop_stage() -> None:
-        for p in prepared:
-            data = mujoco.MjData(p.model)
-            mujoco.mj_copyData(data, p.model, p.data)
-            simulate(p.model, data, p.controls, engine="loop")
+    def stage(engine: str) -> Callable[[], None]:
+        def run() -> None:
+            for p in prepared:
+                data = mujoco.MjData(p.model)
+                mujoco.mj_copyData(data, p.model, p.data)
+                simulate(p.model, data, p.controls, engine=engine)
+        return run
 
-    def rollout_stage() -> None:
-        for members in groups.values():
-            simulate_batch(members[0].model, members[0].data, [p.controls for p in members])
-
-    s_loop, s_rollout, s_ratio = paired_ratio(loop_stage, rollout_stage, repeats)
-    return {"loop": t_loop, "rollout": t_rollout, "speedup": ratio,
-            "sim_loop": s_loop, "sim_rollout": s_rollout, "sim_speedup": s_ratio}
+    s_loop, s_rollout, s_ratio = paired_ratio(stage("loop"), stage("rollout"), repeats)
+    return {"all": t_all, "sim_loop": s_loop, "sim_rollout": s_rollout,
+            "sim_speedup": s_ratio}
 
 
 def peer_side_by_side(quick: bool = False, scene: Path | None = None
                       ) -> list[dict[str, object]] | None:
     """Every robot with a peer (its registry entry's ``peer``) beside the peer, same run.
 
-    ``scene`` None: wherever :func:`~wmr_mujoco.bench.trials.find_peer` finds it. None
+    ``scene`` None: wherever :func:`~wmr_mujoco.robots.roller_wheels.trials.find_peer` finds
+    it. None
     without the peer's scene or a robot that compares with it.
     """
     if scene is None:
@@ -276,15 +271,11 @@ def main(args: argparse.Namespace) -> int:
         f"({ren['backend']} backend; {ren['robot']}, the scene with the most geoms).",
         "## Validation",
         f"Whole `wmr validate`: {results['validate_wall_s']:.1f} s wall time (median of "
-        f"{1 if args.quick else 3} runs; report included; scenarios and plots spread "
-        f"over {os.cpu_count()} worker processes). All "
-        f"scenarios without the report: {engines['rollout']:.1f} s through batched, "
-        "threaded `mujoco.rollout` (one batch per robot, actuation mode and settle "
-        "time, simulated while Python schedules and measures the others), "
-        f"{engines['loop']:.1f} s through a Python `mj_step` loop "
-        f"({engines['speedup']:.2f}× faster, median of paired runs), with identical "
-        "metrics (tested). The simulation stage alone: "
-        f"{engines['sim_rollout']:.2f} s batched, {engines['sim_loop']:.2f} s looped "
+        f"{1 if args.quick else 3} runs; report included). All scenarios without the "
+        f"report, one after the other through the one runner: {engines['all']:.1f} s. The "
+        "simulation stage alone: "
+        f"{engines['sim_rollout']:.2f} s through one `mujoco.rollout` per scenario, "
+        f"{engines['sim_loop']:.2f} s through a Python `mj_step` loop "
         f"({engines['sim_speedup']:.1f}×)."]) + "\n"
     print(text)
     out.mkdir(exist_ok=True)

@@ -25,8 +25,8 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.lookup import build_scene
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.loading import build_scene
 from wmr_mujoco.models.params import DiscParams, FreeDiscParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import disc, disc_free
@@ -218,9 +218,9 @@ def validation_table() -> str:
 
     Run through the validation runner, tabulated as in the validation report.
     """
-    scenarios = [s for spec in (disc_free.SPEC, disc.SPEC) for s in spec.scenarios
-                 if s.kind is ScenarioKind.MEASUREMENT]
-    return markdown_table(run_all(scenarios))
+    work = [(spec, s) for spec in (disc_free.SPEC, disc.SPEC) for s in spec.scenarios
+            if s.kind is ScenarioKind.MEASUREMENT]
+    return markdown_table(run_all(work))
 
 
 def main(argv: list[str] | None = None) -> None:

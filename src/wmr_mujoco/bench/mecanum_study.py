@@ -1,8 +1,8 @@
 """The mecanum roller design study: ``python -m wmr_mujoco.bench.mecanum_study``.
 
 Roller colliders × roller counts, each measured in one run on this machine through the
-validation runner (:func:`wmr_mujoco.bench.trials.run_trial`, judged by ``mecanum4``'s
-registry entry): the rolling-radius ripple on the collision geometry
+validation runner (:func:`wmr_mujoco.robots.roller_wheels.trials.run_trial`, judged by
+``mecanum4``'s registry entry): the rolling-radius ripple on the collision geometry
 (:func:`wmr_mujoco.robots.mecanum4.ripple.ripple`); open-loop tracking of the robot's
 kinematic scenarios (8 translations, rotation, translation+rotation; 0.5 s ramps and
 steps), shortened to :data:`STUDY_DURATION` so that the study stays a few minutes, worst
@@ -26,15 +26,15 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import pitch_averaged as pa
-from wmr_mujoco.bench.trials import TrialRun, run_trial
+from wmr_mujoco.bench.thread_scaling import driving_controls
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
+from wmr_mujoco.lookup import build_scene, load
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.loading import build_scene, load
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.models.paths import MODELS_DIR
-from wmr_mujoco.robots import mecanum4, omni3
+from wmr_mujoco.robots import get_spec, mecanum4, omni3
 from wmr_mujoco.robots.mecanum4 import kinematics, ripple
-from wmr_mujoco.sim.thread_scaling import driving_controls
+from wmr_mujoco.robots.roller_wheels.trials import TrialRun, run_trial
 from wmr_mujoco.validation.scenarios import Scenario
 
 README = MODELS_DIR / mecanum4.NAME / "README.md"
@@ -100,7 +100,7 @@ def measure(params: MecanumParams, scenarios: Sequence[Scenario], label: str) ->
     runs = {"ramp": [], "step": []}
     rtf = []
     for s in scenarios:
-        run = run_trial(s, params)
+        run = run_trial(get_spec(s.robot), s, params)
         if run.result.error:
             raise RuntimeError(f"{label}, {s.name}: {run.result.error}")
         runs["step" if kinematics.is_step(s) else "ramp"].append(run)
@@ -148,8 +148,8 @@ def timing_table(params: MecanumParams, rounds: int = 3,
     omni_s = dataclasses.replace(omni3.SPEC.scenario(TIMED), duration=duration)
     ours, omni = [], []
     for _ in range(rounds):
-        ours.append(run_trial(ours_s, params).real_time_factor)
-        omni.append(run_trial(omni_s).real_time_factor)
+        ours.append(run_trial(get_spec(ours_s.robot), ours_s, params).real_time_factor)
+        omni.append(run_trial(get_spec(omni_s.robot), omni_s).real_time_factor)
     label = f"{params.roller_shape}, {params.rollers_per_wheel}"
     return "\n".join([
         f"| model (best of {rounds} interleaved runs, {TIMED}, {duration:g} s) | "
@@ -202,7 +202,7 @@ def cost_table(rounds: int = 7) -> str:
 
     The default parameters with contacts from bits or pairs and the Newton or PGS solver,
     and ``omni3``'s default model, each on its cruising controls
-    (:func:`~wmr_mujoco.sim.thread_scaling.driving_controls`); ``rounds`` interleaved
+    (:func:`~wmr_mujoco.bench.thread_scaling.driving_controls`); ``rounds`` interleaved
     rounds of :data:`COST_STEPS` steps on one thread; median and range over the rounds.
     The stage columns (MuJoCo's own timers, median) show where the time goes.
     """
@@ -244,7 +244,7 @@ def long_runs_table(params: MecanumParams, duration: float = LONG_DURATION) -> s
     for name in LONG_RUNS:
         s = dataclasses.replace(next(k for k in mecanum4.kinematic_runs() if k.name == name),
                                 duration=duration)
-        rows = run_trial(s, params).result.rows
+        rows = run_trial(get_spec(s.robot), s, params).result.rows
         for metric, unit in (POSITION, HEADING):
             judged = next((r for r in rows if (r.metric, r.unit) == (metric, unit)), None)
             ideal = next((r for r in rows if (r.metric, r.unit) == _ideal((metric, unit))),

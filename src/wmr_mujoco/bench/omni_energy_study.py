@@ -128,9 +128,10 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - a few min
                f"(0.3, 0, 1), solref {1000 * STIFF:g} ms": coast_energy_budget(
                    contact_timeconst=STIFF, duration=2.0),
                f"(0.3, 0, 0), {default}": coast_energy_budget((0.3, 0.0, 0.0))}
-    scenarios = [s for s in get_spec("omni3").scenarios if s.kind is ScenarioKind.MEASUREMENT]
+    spec = get_spec("omni3")
+    work = [(spec, s) for s in spec.scenarios if s.kind is ScenarioKind.MEASUREMENT]
     publish(DOC, {
-        "omni dynamics: results": markdown_table(run_all(scenarios)),
+        "omni dynamics: results": markdown_table(run_all(work)),
         "omni dynamics: energy budget": budget_table(budgets),
         "omni dynamics: time step": omni_timestep.table(omni_timestep.convergence()),
         "omni dynamics: coast time step": omni_timestep.coast_table(

@@ -43,7 +43,7 @@ from wmr_mujoco.robots.omni3.dynamics import (
     pose_metrics,
 )
 from wmr_mujoco.robots.omni3.runs import hybrid, settled, simulate_runs
-from wmr_mujoco.validation.metrics import twist_metrics
+from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 
 #: (contact time constant, step), s: the shipped setting (:data:`SHIPPED`) first, then
 #: the softer one shipped before it and a stiffer one.
@@ -132,13 +132,14 @@ def other_figures(params: OmniParams) -> dict[str, float]:
     from wmr_mujoco.validation.scenarios import ScenarioKind
 
     worst, slip = 0.0, math.nan
-    for s in get_spec("omni3").scenarios:
+    spec = get_spec("omni3")
+    for s in spec.scenarios:
         if s.kind is ScenarioKind.KINEMATIC:
-            rows = run_scenario(s, params=params).rows
+            rows = run_scenario(spec, s, params=params).rows
             worst = max([worst] + [r.value for r in rows
                                    if r.metric == "worst position error"])
         elif s.name == "slip onset":
-            rows = run_scenario(s, params=params).rows
+            rows = run_scenario(spec, s, params=params).rows
             slip = next(r.value for r in rows if r.passed is not None)
     return {"kinematic position": worst, "slip": slip}
 

@@ -3,8 +3,8 @@
 ``python -m wmr_mujoco.bench.omni_study`` runs both and writes their tables into
 ``models/omni3/README.md`` (between marker comments). Everything is measured in one run
 on this machine: rolling-radius ripple on the collision geometry, open-loop tracking of
-:func:`wmr_mujoco.bench.trials.standard_trials` through the validation runner (worst
-position and heading error over each run), yaw-rate ripple, roller spin rates, and the
+:func:`wmr_mujoco.robots.roller_wheels.trials.standard_trials` through the validation
+runner (worst position and heading error over each run), yaw-rate ripple, roller spin rates, and the
 real-time factor of the ``mj_step`` loop.
 """
 
@@ -12,94 +12,16 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Sequence
-from dataclasses import dataclass
-from pathlib import Path
 
-import numpy as np
-
-from wmr_mujoco.bench.trials import (
-    PEER_NAME,
-    TrialRun,
-    peer_spec,
-    run_trial,
-    standard_trials,
-)
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.models.paths import MODELS_DIR
-from wmr_mujoco.robots import omni3, registered
-from wmr_mujoco.validation.omni_wheels import rolling_radius_profile
-from wmr_mujoco.validation.scenarios import Scenario
+from wmr_mujoco.robots import omni3
+from wmr_mujoco.robots.omni3.peer import Summary, measure_omni, measure_peer
 
 #: The robot this study is about (its own study: it names its model and wheels).
 ROBOT = omni3.NAME
 README = MODELS_DIR / ROBOT / "README.md"
-
-
-@dataclass(frozen=True)
-class Summary:
-    """Worst cases over a set of trials, and the median real-time factor.
-
-    Position and heading are the worst over each whole run (not its last instant), then
-    the worst over the trials.
-    """
-
-    label: str
-    ripple_pct: float
-    worst_position_pct: float
-    worst_heading_deg: float
-    yaw_ripple_pct: float
-    roller_rate_err_pct: float
-    real_time_factor: float
-
-
-def summarise(label: str, runs: Sequence[TrialRun], ripple_pct: float) -> Summary:
-    """Reduce trial runs to worst cases (NaNs ignored) and the median real-time factor.
-
-    Raises:
-        RuntimeError: a trial failed (its reason is named).
-    """
-    failed = [f"{r.result.scenario.key}: {r.result.error}" for r in runs if r.result.error]
-    if failed:
-        raise RuntimeError(f"trials failed: {failed}")
-
-    def worst(metric: str, unit: str) -> float:
-        vals = [abs(v) for r in runs if np.isfinite(v := r.value(metric, unit))]
-        return max(vals) if vals else float("nan")
-
-    return Summary(
-        label=label, ripple_pct=ripple_pct,
-        worst_position_pct=worst("worst position error", "% of path"),
-        worst_heading_deg=worst("worst heading error", "deg"),
-        yaw_ripple_pct=worst("yaw-rate ripple", "% of commanded"),
-        roller_rate_err_pct=worst("roller rate error (median)", "%"),
-        real_time_factor=float(np.median([r.real_time_factor for r in runs])))
-
-
-def _pick(trials: Sequence[Scenario], names: Sequence[str] | None) -> list[Scenario]:
-    return [t for t in trials if names is None or t.name in names]
-
-
-def measure_omni(params: OmniParams, label: str, names: Sequence[str] | None = None
-                 ) -> Summary:
-    """Ripple and trials (all, or those named) of the robot built from ``params``."""
-    model = load(ROBOT, params)
-    profile = rolling_radius_profile(model, "wheel1", "wheel1_roller")
-    ripple = 100.0 * float(np.ptp(profile) / np.mean(profile))
-    trials = _pick(standard_trials(ROBOT), names)
-    return summarise(label, [run_trial(t, params) for t in trials], ripple)
-
-
-def measure_peer(names: Sequence[str] | None = None, scene: Path | None = None) -> Summary:
-    """The peer model on the same trials (its ripple is not measured: cylinder rollers).
-
-    Raises:
-        FileNotFoundError: the peer's scene is missing (the message says how to set it).
-    """
-    with registered(peer_spec(scene)) as spec:
-        runs = [run_trial(t) for t in _pick(spec.scenarios, names)]
-    return summarise(f"{PEER_NAME} (peer, as published)", runs, float("nan"))
 
 
 def study_configs() -> list[tuple[str, OmniParams]]:

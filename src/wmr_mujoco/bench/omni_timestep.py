@@ -13,7 +13,7 @@ finer steps and reports, per run and step,
    roller hand-over is a velocity jump the simulator resolves on its step grid);
    each figure twice: the same samples at the same instant, and with jumps allowed one
    sample of the coarse grid apart
-   (:func:`~wmr_mujoco.validation.metrics.event_aligned_error`);
+   (:func:`~wmr_mujoco.robots.roller_wheels.twist_errors.event_aligned_error`);
 2. the hybrid model against the physics at that step (the judged figures at the model's
    own step), sample by sample and with jumps allowed one sample apart (judged where the
    model's wheel phase stays within one step's turn); as judged (the weight's moment
@@ -37,7 +37,7 @@ finer steps and reports, per run and step,
    per second) of the physics and of the hybrid model, and their relative difference as
    judged (the hybrid model as judged).
 
-Scales as the judged metrics (:func:`~wmr_mujoco.validation.metrics.twist_metrics`,
+Scales as the judged metrics (:func:`~wmr_mujoco.robots.roller_wheels.twist_errors.twist_metrics`,
 :func:`~wmr_mujoco.robots.omni3.dynamics.pose_metrics`).
 """
 
@@ -59,7 +59,7 @@ from wmr_mujoco.robots.omni3.dynamics import (
     pose_metrics,
 )
 from wmr_mujoco.robots.omni3.runs import hybrid, hybrid_at, phase_lag_steps, simulate_runs
-from wmr_mujoco.validation.metrics import twist_metrics
+from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 
 #: Steps compared, s (the first is the model's own, as ``wmr validate`` runs it; then
 #: half and a quarter of it), and the reference step (a quarter of it).

@@ -97,8 +97,8 @@ def evaluations_per_second(params: WhippleParams) -> float:
 def measure(params: WhippleParams | None = None) -> list[ScenarioResult]:
     """Every validation scenario of the robot at ``params`` (None: the checked-in model)."""
     if params is None:
-        return run_all(whipple.SCENARIOS)
-    return [run_scenario(s, params=params) for s in whipple.SCENARIOS]
+        return run_all([(whipple.SPEC, s) for s in whipple.SCENARIOS])
+    return [run_scenario(whipple.SPEC, s, params=params) for s in whipple.SCENARIOS]
 
 
 @dataclass(frozen=True)

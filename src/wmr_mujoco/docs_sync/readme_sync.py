@@ -1,10 +1,11 @@
-"""Paste the latest reports into the README: ``python -m wmr_mujoco.docs_sync.readme_sync``.
+"""Paste the latest reports into the docs: ``python -m wmr_mujoco.docs_sync.readme_sync``.
 
 ``make demo`` writes ``reports/summary.md`` and ``reports/open.md`` (the open targets) and
-``make bench`` writes ``reports/bench.md``; this copies them between the README's
-``validation results``, ``open targets`` and ``benchmarks`` markers
-(:mod:`wmr_mujoco.docs_sync.markers`), so that every figure in the README comes from a run of the
-code, never from typing. ``make readme`` runs it.
+``make bench`` writes ``reports/bench.md``; this copies them between the ``validation
+results`` and ``open targets`` markers of ``docs/results.md`` and the ``benchmarks``
+markers of ``docs/benchmarks.md`` (:mod:`wmr_mujoco.docs_sync.markers`), so that every
+figure in the docs comes from a run of the code, never from typing. ``make readme`` runs
+it.
 """
 
 from __future__ import annotations
@@ -17,16 +18,18 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from wmr_mujoco.docs_sync.markers import replace_between
-from wmr_mujoco.models.paths import README_PATH
-from wmr_mujoco.validation.report import REPORTS_DIR
+from wmr_mujoco.models.paths import REPO_ROOT, REPORTS_DIR
 
-#: README marker key -> (report file, command that writes it).
+#: Marker key -> (report file, command that writes it).
 SECTIONS = {"validation results": ("summary.md", "make demo"),
             "open targets": ("open.md", "make demo"),
             "benchmarks": ("bench.md", "make bench")}
+#: Marker key -> the page that holds the section, relative to the repository root.
+PAGES = {"validation results": "docs/results.md", "open targets": "docs/results.md",
+         "benchmarks": "docs/benchmarks.md"}
 
 
-#: An absolute path of this machine in a report (``/home/...``, ``C:\\...``): not for the README.
+#: An absolute path of this machine in a report (``/home/...``, ``C:\\...``): not for the docs.
 LOCAL_PATH = re.compile(r"(?:^|[\s`'\"(=])(?:/[\w.-]+){2,}|[A-Za-z]:\\\\")
 
 
@@ -39,7 +42,7 @@ def _json(path: Path) -> dict:
 
 
 def refusal(key: str, reports: Path, text: str) -> str | None:
-    """Why a report must not go into the README (one line), or None if it may.
+    """Why a report must not go into the docs (one line), or None if it may.
 
     Refused: a partial validation report (not every registered scenario, see
     ``validation.json``'s ``complete``), a ``--quick`` or partial bench (the peer model
@@ -70,19 +73,19 @@ def refusal(key: str, reports: Path, text: str) -> str | None:
 
 
 def section_text(report: str) -> str:
-    """A report as a README section: its ``#`` title dropped, its ``##`` headings as ``####``."""
+    """A report as a docs section: its ``#`` title dropped, its ``##`` headings as ``####``."""
     lines = report.strip().splitlines()
     if lines and lines[0].startswith("# "):
         lines = lines[1:]
     return re.sub(r"^## ", "#### ", "\n".join(lines).strip(), flags=re.MULTILINE)
 
 
-def sync(readme: Path = README_PATH, reports: Path = REPORTS_DIR,
+def sync(root: Path = REPO_ROOT, reports: Path = REPORTS_DIR,
          keys: Sequence[str] | None = None) -> list[str]:
-    """Replace each README section (all, or those in ``keys``) with its report.
+    """Replace each section (all, or those in ``keys``) of the pages under ``root``.
 
     Every requested report is checked before anything is written, so a missing one
-    leaves the README as it was.
+    leaves the pages as they were.
 
     Returns:
         The keys updated.
@@ -90,12 +93,12 @@ def sync(readme: Path = README_PATH, reports: Path = REPORTS_DIR,
     Raises:
         FileNotFoundError: a report is missing; the message says which command writes it.
         ValueError: an unknown key, a report :func:`refusal` refuses (one line saying
-            why), or the README lacks a section's markers.
+            why), or a page lacks a section's markers.
     """
     keys = list(SECTIONS) if keys is None else list(keys)
     unknown = [k for k in keys if k not in SECTIONS]
     if unknown:
-        raise ValueError(f"unknown README sections {unknown}; valid: {', '.join(SECTIONS)}")
+        raise ValueError(f"unknown sections {unknown}; valid: {', '.join(SECTIONS)}")
     texts = {}
     for key in keys:
         name, command = SECTIONS[key]
@@ -108,24 +111,25 @@ def sync(readme: Path = README_PATH, reports: Path = REPORTS_DIR,
             raise ValueError(f"not pasted: {reason}")
         texts[key] = section_text(text)
     for key, text in texts.items():
-        replace_between(readme, key, text)
+        replace_between(Path(root) / PAGES[key], key, text)
     return keys
 
 
 def main(argv: list[str] | None = None) -> int:
     """Command-line entry point."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--readme", type=Path, default=README_PATH)
+    parser.add_argument("--root", type=Path, default=REPO_ROOT,
+                        help="the repository whose docs/ pages are written")
     parser.add_argument("--reports", type=Path, default=REPORTS_DIR)
     parser.add_argument("--only", action="append", choices=list(SECTIONS),
                         help="paste only this section (repeatable; default: all)")
     args = parser.parse_args(argv)
     try:
-        keys = sync(args.readme, args.reports, args.only)
+        keys = sync(args.root, args.reports, args.only)
     except (FileNotFoundError, ValueError) as err:
         print(f"error: {err}", file=sys.stderr)
         return 2
-    print(f"updated {args.readme}: {', '.join(keys)}")
+    print(f"updated {', '.join(sorted({PAGES[k] for k in keys}))}: {', '.join(keys)}")
     return 0
 
 

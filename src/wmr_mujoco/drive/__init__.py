@@ -11,7 +11,7 @@
 Backends: ``"mujoco"`` (contact physics, :mod:`.physics`) and ``"kinematic"`` (the robot's
 analytic kinematic model under the same commands, :mod:`.kinematic`). Each robot's
 command space and wheels come from its registry entry
-(:class:`~wmr_mujoco.robots.command.CommandMap`), never from its name.
+(:class:`~wmr_mujoco.validation.command.CommandMap`), never from its name.
 """
 
 from wmr_mujoco.drive.make import drivable, make

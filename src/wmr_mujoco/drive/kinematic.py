@@ -29,10 +29,10 @@ from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.drive.readout import place
 from wmr_mujoco.drive.robot import Robot, substeps
 from wmr_mujoco.drive.state import CommandSpace, RobotState
-from wmr_mujoco.robots.command import RateCommand
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.sim.stepping import SimulationDivergedError
 from wmr_mujoco.validation.adapters import Adapter
+from wmr_mujoco.validation.command import RateCommand
 
 
 class WheelGeometry:
@@ -92,7 +92,7 @@ class KinematicRobot(Robot):
     """The analytic kinematic model driven like the robot (see :func:`~wmr_mujoco.drive.make`).
 
     Args:
-        spec: the robot's registry entry (a :class:`~wmr_mujoco.robots.command.RateCommand`).
+        spec: the robot's registry entry (a :class:`~wmr_mujoco.validation.command.RateCommand`).
         model: its compiled scene, read for timestep, limits and geometry (not stepped).
         adapter: the kinematic model.
         control_period: s, a multiple of the model's timestep.

@@ -13,8 +13,8 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.drive.state import RobotState
-from wmr_mujoco.robots.command import CommandMap
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
+from wmr_mujoco.validation.command import CommandMap
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 #: The ``steer_angles`` of a robot without steering joints (read-only).

@@ -1,6 +1,16 @@
-"""Loading robots: the checked-in scene files, or a scene built from parameters."""
+"""Loading robots: the checked-in scene files, or a scene built from parameters.
+
+These functions receive the robot's description (a
+:class:`~wmr_mujoco.validation.spec.RobotSpec`, or anything with the fields of
+:class:`SceneSource`), never a name: looking a name up in the registry is the
+application's job (:func:`wmr_mujoco.load`).
+"""
 
 from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any, Protocol
 
 import mujoco
 from dm_control import mjcf
@@ -8,28 +18,47 @@ from dm_control import mjcf
 from wmr_mujoco.models.builders import common
 from wmr_mujoco.models.builders.scene import add_scene
 from wmr_mujoco.models.params import RobotParams, params_or_default
-from wmr_mujoco.robots import get_spec
 
 
-def build_scene(robot: str, params: RobotParams | None = None) -> mjcf.RootElement:
+class SceneSource(Protocol):
+    """What loading needs to know of a robot (a ``RobotSpec`` has all of it).
+
+    Attributes:
+        name: the robot's name, for messages.
+        params_type: its parameter dataclass (None: a foreign model file).
+        build: ``params -> mjcf.RootElement`` of the robot alone (None: foreign).
+        scene_extras: ``(scene root, params) -> None``, scene elements after the floor.
+        has_files: whether checked-in MJCF files (or a foreign scene) exist.
+        scene_path: the scene file.
+        robot_path: the robot-only file.
+    """
+
+    name: str
+    params_type: type[Any] | None
+    build: Callable[[Any], mjcf.RootElement] | None
+    scene_extras: Callable[[mjcf.RootElement, Any], None] | None
+    has_files: bool
+    scene_path: Path
+    robot_path: Path
+
+
+def build_scene(spec: SceneSource, params: RobotParams | None = None) -> mjcf.RootElement:
     """Build the robot from ``params`` (its defaults if None) and add floor and light.
 
     The result compiles to the same model as the checked-in ``scene.xml``, which
     ``<include>``s the robot file and then declares the same scene elements.
 
     Raises:
-        ValueError: unknown robot, a robot without a builder (a foreign model file), or
-            ``params`` of the wrong type.
-
+        ValueError: a robot without a builder (a foreign model file), or ``params`` of
+            the wrong type.
     """
-    spec = get_spec(robot)
     if spec.build is None or spec.params_type is None:
-        raise ValueError(f"robot {robot!r} is a model file ({spec.scene_path}) without a "
-                         "builder; it takes no parameters")
+        raise ValueError(f"robot {spec.name!r} is a model file ({spec.scene_path}) without "
+                         "a builder; it takes no parameters")
     try:
         params = params_or_default(params, spec.params_type)
     except ValueError as err:
-        raise ValueError(f"params for {robot!r}: {err}") from None
+        raise ValueError(f"params for {spec.name!r}: {err}") from None
     root = spec.build(params)
     root.model = f"{root.model} scene"
     add_scene(root)
@@ -38,29 +67,26 @@ def build_scene(robot: str, params: RobotParams | None = None) -> mjcf.RootEleme
     return root
 
 
-def load(robot: str, params: RobotParams | None = None) -> mujoco.MjModel:
-    """Return the compiled scene of ``robot``.
+def load(spec: SceneSource, params: RobotParams | None = None) -> mujoco.MjModel:
+    """Return the compiled scene of the robot ``spec`` describes.
 
     Args:
-        robot: a name from :data:`wmr_mujoco.robots.ROBOTS`.
+        spec: the robot.
         params: None to load the checked-in ``scene.xml`` (a robot without files is built
             from its defaults); otherwise an instance of the robot's parameter
             dataclass, built with dm_control ``mjcf``.
 
     Raises:
-        ValueError: unknown robot name (the message lists the valid ones) or wrong
-            parameter type.
+        ValueError: wrong parameter type.
         FileNotFoundError: the scene file is missing (the message names the path).
-
     """
-    spec = get_spec(robot)
     if params is not None or not spec.has_files:
-        return mujoco.MjModel.from_xml_string(common.to_xml(build_scene(robot, params)))
+        return mujoco.MjModel.from_xml_string(common.to_xml(build_scene(spec, params)))
     path = spec.scene_path
     for needed in (path, spec.robot_path):
         if not needed.is_file():
             raise FileNotFoundError(
-                f"model file for {robot!r} not found: {needed} "
-                f"(regenerate with `python -m wmr_mujoco.models.export`)"
+                f"model file for {spec.name!r} not found: {needed} "
+                f"(regenerate with `make models`)"
             )
     return mujoco.MjModel.from_xml_path(str(path))

@@ -64,3 +64,10 @@ except FileNotFoundError:
 
 #: The repository README, whose result and benchmark tables ``make readme`` regenerates.
 README_PATH: Path = REPO_ROOT / "README.md"
+
+
+#: Default output folder of ``wmr validate`` (and of the reports ``make readme`` reads).
+REPORTS_DIR = Path("reports")
+
+#: The documentation pages, some with generated sections (``make readme``, ``make models``).
+DOCS_DIR: Path = REPO_ROOT / "docs"

@@ -18,7 +18,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.progress import bar
 from wmr_mujoco.render import rendering
 from wmr_mujoco.robots import get_spec
@@ -139,7 +139,7 @@ def film_scenario(scenario: Scenario, on_frame: Callable[[np.ndarray], None],
         progress_bar.update()
 
     try:
-        prep = prepare(scenario, model=model)
+        prep = prepare(get_spec(scenario.robot), scenario, model=model)
 
         def on_step(k: int) -> None:
             observe(prep.model, prep.data, prep.analytic[k + 1], prep.adapter)

@@ -7,9 +7,10 @@ import time
 import mujoco
 import mujoco.viewer
 
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.actuation import set_actuation_mode
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.render.video import pick_scenario
+from wmr_mujoco.robots import get_spec
 from wmr_mujoco.validation.runner import make_adapter
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 
@@ -24,7 +25,7 @@ def view(robot: str, scenario: str | None = None) -> None:
         _play_film(s)
         return
     model = load(robot)
-    adapter = make_adapter(s, model)
+    adapter = make_adapter(get_spec(s.robot), s, model)
     if adapter.mode is not None:
         set_actuation_mode(model, adapter.mode)
     data = mujoco.MjData(model)

@@ -17,9 +17,9 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import bicycle as builder
 from wmr_mujoco.models.params import BicycleParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.command import RateCommand, Servo
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.command import RateCommand, Servo
 from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const, pulses, steer_to

@@ -23,9 +23,9 @@ from wmr_mujoco.models.builders import steered as builder
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import SingleSteerParams
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.command import RateCommand, Servo
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.command import RateCommand, Servo
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Sine, const, steer_to
 

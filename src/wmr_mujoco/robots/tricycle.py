@@ -21,9 +21,9 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import tricycle as builder
 from wmr_mujoco.models.params import RobotParams, TricycleParams, params_or_default
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.command import RateCommand, Servo
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose
+from wmr_mujoco.validation.command import RateCommand, Servo
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const, pulses, steer_to

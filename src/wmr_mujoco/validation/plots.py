@@ -1,8 +1,8 @@
 """The report's figures: a scenario's states against the model, or a measurement's curves.
 
 Drawing only (matplotlib's Agg backend, imported when a figure is drawn); every file is
-written atomically. `wmr validate` draws them (:mod:`wmr_mujoco.validation.pool`) in worker
-processes while the scenarios still run.
+written atomically. `wmr validate` draws them when it writes the report
+(:func:`wmr_mujoco.validation.report.write_report`).
 """
 
 from __future__ import annotations

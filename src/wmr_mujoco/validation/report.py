@@ -14,13 +14,15 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from wmr_mujoco.atomic import write_text_atomic
+from wmr_mujoco.models.paths import REPORTS_DIR
 from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace
 from wmr_mujoco.validation.plots import plot_trace
 from wmr_mujoco.validation.runner import ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
+from wmr_mujoco.validation.spec import RobotSpec
 
-#: Default output folder of ``wmr validate``.
-REPORTS_DIR = Path("reports")
+#: The robots a report covers, by name, in report order (the registry's ``ROBOTS``).
+Robots = Mapping[str, RobotSpec]
 
 
 def check_report_folder(folder: Path) -> Path:
@@ -230,11 +232,9 @@ def _record(r: ScenarioResult) -> dict[str, object]:
                          "open": m.open, "note": m.note} for m in r.rows]}
 
 
-def _restore(record: dict) -> ScenarioResult | None:
+def _restore(record: dict, robots: Robots) -> ScenarioResult | None:
     """A result from a JSON record of an earlier run; None if its scenario is gone."""
-    from wmr_mujoco.robots import ROBOTS
-
-    spec = ROBOTS.get(str(record.get("robot")))
+    spec = robots.get(str(record.get("robot")))
     scenario = next((s for s in (spec.scenarios if spec else ())
                      if s.name == record.get("scenario")), None)
     if scenario is None or scenario.kind.value != record.get("kind"):
@@ -246,24 +246,22 @@ def _restore(record: dict) -> ScenarioResult | None:
     return ScenarioResult(scenario, rows, Trace(), record.get("error"))
 
 
-def _order(results: Sequence[ScenarioResult]) -> list[ScenarioResult]:
+def _order(results: Sequence[ScenarioResult], robots: Robots) -> list[ScenarioResult]:
     """Registry order: robots as registered, each robot's scenarios as listed."""
-    from wmr_mujoco.robots import ROBOTS
-
-    robots = list(ROBOTS)
+    order = list(robots)
 
     def key(item: tuple[int, ScenarioResult]) -> tuple[int, int, int]:
         i, r = item
-        spec = ROBOTS.get(r.scenario.robot)
+        spec = robots.get(r.scenario.robot)
         names = [s.name for s in spec.scenarios] if spec else []
-        return (robots.index(r.scenario.robot) if spec else len(robots),
+        return (order.index(r.scenario.robot) if spec else len(order),
                 names.index(r.scenario.name) if r.scenario.name in names else len(names), i)
 
     return [r for _, r in sorted(enumerate(results), key=key)]
 
 
-def merge_results(new: Sequence[ScenarioResult], folder: Path = REPORTS_DIR
-                  ) -> list[ScenarioResult]:
+def merge_results(new: Sequence[ScenarioResult], robots: Robots,
+                  folder: Path = REPORTS_DIR) -> list[ScenarioResult]:
     """Merge this run's results into the report already in ``folder``.
 
     A scenario of this run replaces its earlier result; earlier results of the other
@@ -277,21 +275,19 @@ def merge_results(new: Sequence[ScenarioResult], folder: Path = REPORTS_DIR
         old = []
     ran = {r.scenario.key for r in new}
     kept = [res for rec in old if isinstance(rec, dict)
-            and (res := _restore(rec)) is not None and res.scenario.key not in ran]
-    return _order([*new, *kept])
+            and (res := _restore(rec, robots)) is not None and res.scenario.key not in ran]
+    return _order([*new, *kept], robots)
 
 
-def missing_scenarios(results: Sequence[ScenarioResult]) -> list[str]:
-    """Registered scenarios without a result (empty: the report is complete)."""
-    from wmr_mujoco.robots import ROBOTS
-
+def missing_scenarios(results: Sequence[ScenarioResult], robots: Robots) -> list[str]:
+    """Scenarios of ``robots`` without a result (empty: the report is complete)."""
     have = {r.scenario.key for r in results}
-    return [s.key for spec in ROBOTS.values() for s in spec.scenarios if s.key not in have]
+    return [s.key for spec in robots.values() for s in spec.scenarios if s.key not in have]
 
 
-def to_json(results: Sequence[ScenarioResult]) -> str:
+def to_json(results: Sequence[ScenarioResult], robots: Robots) -> str:
     """Every metric of every scenario as JSON, with whether every scenario is there."""
-    missing = missing_scenarios(results)
+    missing = missing_scenarios(results, robots)
     doc = {"passed": all(r.passed for r in results), "complete": not missing,
            "missing": missing, "scenarios": [_record(r) for r in results]}
     return json.dumps(doc, indent=2)
@@ -312,40 +308,26 @@ def _remove_stale_plots(folder: Path, robots: set[str], results: Sequence[Scenar
                 png.unlink(missing_ok=True)
 
 
-def _place_plot(result: ScenarioResult, png: Path, drawn: Mapping[str, Path | None]
-                ) -> Path | None:
-    """Move an already drawn figure to ``png``, or draw it there now."""
-    key = result.scenario.key
-    if key not in drawn:
-        return plot_scenario(result, png)
-    staged = drawn[key]
-    if staged is None:
-        return None
-    os.replace(staged, png)
-    return png
-
-
-def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR,
-                 plots: Mapping[str, Path | None] | None = None) -> Path:
+def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, *,
+                 robots: Robots) -> Path:
     """Merge this run into ``folder``'s report; write the Markdown, JSON and PNG plots.
 
     ``validation.md``, ``validation.json`` and ``summary.md`` cover this run's scenarios
     and the earlier results of the others (:func:`merge_results`); the JSON says whether
     every registered scenario is there (``complete``), which ``make readme`` requires.
     Each scenario of this run gets a fresh plot; plots of the covered robots' scenarios
-    that are no longer reported are removed, nobody else's. ``plots`` holds figures
-    already drawn (by scenario key: a finished file to rename into place, or None for
-    nothing to plot; see :class:`~wmr_mujoco.validation.pool.ValidationPool`); the
-    scenarios it lacks are drawn here.
+    that are no longer reported are removed, nobody else's. ``robots`` are the
+    registered robots (which scenarios a complete report has, and their order).
 
     Returns:
         Path of the Markdown report.
     """
     folder = Path(folder)
-    merged = merge_results(results, folder)
+    folder.mkdir(exist_ok=True)
+    merged = merge_results(results, robots, folder)
     fresh = {r.scenario.key for r in results}
     failed = [r for r in merged if not r.passed]
-    missing = missing_scenarios(merged)
+    missing = missing_scenarios(merged, robots)
     lines = ["# Validation: MuJoCo contact physics against the analytic models", "",
              "Generated by `wmr validate`; every figure below comes from a run of it "
              f"({len(fresh)} scenarios from the latest run, the others from earlier runs).",
@@ -365,12 +347,12 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR,
         png = plot_path(folder, r.scenario)
         if r.scenario.key in fresh:
             png.parent.mkdir(parents=True, exist_ok=True)
-            png = _place_plot(r, png, plots or {})
+            png = plot_scenario(r, png)
         if png is not None and png.is_file():
             rel = png.relative_to(folder).as_posix()
             lines += [f"### {r.scenario.key}", "", f"![{r.scenario.key}]({rel})", ""]
     _remove_stale_plots(folder, {r.scenario.robot for r in results}, merged)
-    write_text_atomic(folder / "validation.json", to_json(merged))
+    write_text_atomic(folder / "validation.json", to_json(merged, robots))
     write_text_atomic(folder / "summary.md", summary_table(merged) + "\n")
     write_text_atomic(folder / "open.md", (open_table(merged) or "No open targets.") + "\n")
     return write_text_atomic(folder / "validation.md", "\n".join(lines) + "\n")

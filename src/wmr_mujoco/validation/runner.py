@@ -4,9 +4,15 @@ For each kinematic or dynamic :class:`~wmr_mujoco.validation.scenarios.Scenario`
 simulation and the analytic model advance together on MuJoCo's time grid: at step k the
 input ``u(t_k)`` becomes actuator controls and is held over the step in the analytic
 model's RK4 step (:func:`wmr_mujoco.analytic.integrate.rk4_step`), from the same settled
-initial state. The robot's adapter, judge, probes and targets come from its registry entry
-(:mod:`wmr_mujoco.robots`); nothing here knows a robot by name. A measurement scenario's
-own ``evaluate`` runs instead, and its metrics are judged the same way.
+initial state. The robot's adapter, judge, probes and targets come from the
+:class:`~wmr_mujoco.validation.spec.RobotSpec` the caller passes with the scenario; nothing
+here looks a robot up or knows one by name. A measurement scenario's own ``evaluate``
+runs instead, and its metrics are judged the same way.
+
+One execution path: :func:`run_all` runs the scenarios one after the other through
+:func:`run_scenario` (each simulated by one ``mujoco.rollout`` call). Batching scenarios
+into one multi-threaded rollout and a process pool were measured against it and gave
+nothing on the machines this runs on (``docs/architecture.md``).
 
 Metrics are in :mod:`wmr_mujoco.validation.metrics` (pose tracking: worst, RMS and final
 errors over the whole run; lateral slip) and in each robot's module (dynamic judges,
@@ -15,23 +21,18 @@ probes).
 
 from __future__ import annotations
 
-import copy
-import os
 import traceback
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ThreadPoolExecutor, as_completed
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic.integrate import rk4_step
-from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.models.actuation import set_actuation_mode
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
-from wmr_mujoco.robots import get_spec
-from wmr_mujoco.sim.engine import STATE_SPEC, Engine, simulate, simulate_batch
+from wmr_mujoco.sim.engine import STATE_SPEC, Engine, simulate
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 from wmr_mujoco.validation.adapters import Adapter, AdapterFactory
 from wmr_mujoco.validation.metrics import (
@@ -45,6 +46,15 @@ from wmr_mujoco.validation.metrics import (
     slip_metrics,
 )
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.spec import RobotSpec
+
+#: A scenario with the robot it runs on.
+Job = tuple[RobotSpec, Scenario]
+
+
+def jobs(specs: Sequence[RobotSpec]) -> list[Job]:
+    """Every scenario of ``specs``, each with its robot, in the given order."""
+    return [(spec, s) for spec in specs for s in spec.scenarios]
 
 
 @dataclass
@@ -62,23 +72,22 @@ class ScenarioResult:
         return self.error is None and all(r.passed is not False for r in self.rows)
 
 
-def make_adapter(scenario: Scenario, model: mujoco.MjModel,
+def make_adapter(spec: RobotSpec, scenario: Scenario, model: mujoco.MjModel,
                  params: RobotParams | None = None) -> Adapter:
-    """The adapter of a scenario's robot and kind (default parameters if None).
+    """The adapter of the robot ``spec`` for the scenario's kind (default parameters if None).
 
     Raises:
         ValueError: the robot has no analytic model of that kind.
     """
-    return _adapter_factory(scenario)(scenario, model, params)
+    return _adapter_factory(spec, scenario)(scenario, model, params)
 
 
-def _adapter_factory(scenario: Scenario) -> AdapterFactory:
+def _adapter_factory(spec: RobotSpec, scenario: Scenario) -> AdapterFactory:
     """The robot's adapter factory for the scenario's kind.
 
     Raises:
         ValueError: the robot has no analytic model of that kind.
     """
-    spec = get_spec(scenario.robot)
     factory = spec.adapters.get(scenario.kind)
     if factory is None:
         have = ", ".join(k.value for k in spec.adapters) or "none"
@@ -87,18 +96,12 @@ def _adapter_factory(scenario: Scenario) -> AdapterFactory:
     return factory
 
 
-#: A scenario's result as it travels between processes: rows, trace, error.
-Outcome = tuple[list[Row], Trace, str | None]
-#: Starts scenarios elsewhere: a future of their outcomes and progress messages;
-#: None: run them here.
-Offload = Callable[[Sequence[Scenario], Engine],
-                   Future[tuple[list[Outcome], list[str]]] | None]
-
 #: Called after every step with ``(model, data, analytic_state, adapter)``.
 Observer = Callable[[mujoco.MjModel, mujoco.MjData, np.ndarray, Adapter], None]
 
 
-def run_scenario(s: Scenario, progress: Callable[[str], None] | None = None,
+def run_scenario(spec: RobotSpec, s: Scenario,
+                 progress: Callable[[str], None] | None = None,
                  observer: Observer | None = None, params: RobotParams | None = None,
                  engine: Engine | str = Engine.ROLLOUT) -> ScenarioResult:
     """Run one scenario; never raises.
@@ -113,7 +116,7 @@ def run_scenario(s: Scenario, progress: Callable[[str], None] | None = None,
     try:
         if s.kind is ScenarioKind.MEASUREMENT:
             return _evaluate(s, params)
-        prep = prepare(s, params)
+        prep = prepare(spec, s, params)
         on_step = None
         if observer is not None:
             def on_step(k: int) -> None:
@@ -162,8 +165,8 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     return np.asarray(inputs), np.asarray(controls), np.asarray(states)
 
 
-def check_runnable(s: Scenario) -> None:
-    """Check that ``s`` can be run and judged, before any work.
+def check_runnable(spec: RobotSpec, s: Scenario) -> None:
+    """Check that ``s`` can be run and judged on the robot ``spec``, before any work.
 
     The input count is the one of the robot's own scenarios of the same kind and frame
     (the adapter's channels); a robot without such a scenario is not checked here.
@@ -172,8 +175,10 @@ def check_runnable(s: Scenario) -> None:
         ValueError: the robot has no analytic model or no judge for the scenario's kind
             (the message lists the kinds it has), or a wrong number of input channels.
     """
-    spec = get_spec(s.robot)
-    _adapter_factory(s)
+    if s.robot != spec.name:
+        raise ValueError(f"{s.key}: a scenario of robot {s.robot!r} given with the spec of "
+                         f"{spec.name!r}")
+    _adapter_factory(spec, s)
     if spec.judge(s.kind) is None:
         have = [k.value for k in ScenarioKind if k is not ScenarioKind.MEASUREMENT
                 and spec.judge(k) is not None]
@@ -191,6 +196,7 @@ def check_runnable(s: Scenario) -> None:
 class Prepared:
     """A scenario ready to simulate: settled model and data, and its open-loop schedule."""
 
+    spec: RobotSpec
     scenario: Scenario
     model: mujoco.MjModel
     data: mujoco.MjData
@@ -200,7 +206,7 @@ class Prepared:
     analytic: np.ndarray
 
 
-def prepare(s: Scenario, params: RobotParams | None = None,
+def prepare(spec: RobotSpec, s: Scenario, params: RobotParams | None = None,
             model: mujoco.MjModel | None = None) -> Prepared:
     """Load, settle at rest for ``s.settle`` seconds, and compute the schedule.
 
@@ -211,10 +217,10 @@ def prepare(s: Scenario, params: RobotParams | None = None,
         ValueError: the robot has no judge for the scenario's kind, or the scenario's
             input count is not the one the robot's analytic model of that kind takes.
     """
-    check_runnable(s)
+    check_runnable(spec, s)
     if model is None:
-        model = load(s.robot, params)
-    adapter = make_adapter(s, model, params)
+        model = load(spec, params)
+    adapter = make_adapter(spec, s, model, params)
     if adapter.mode is not None:
         set_actuation_mode(model, adapter.mode)
     data = mujoco.MjData(model)
@@ -224,7 +230,7 @@ def prepare(s: Scenario, params: RobotParams | None = None,
     check_healthy(model, data)
     nstep = round(s.duration / dt)
     inputs, controls, analytic = schedule(s, adapter, adapter.sim_state(model, data), dt, nstep)
-    return Prepared(s, model, data, adapter, inputs, controls, analytic)
+    return Prepared(spec, s, model, data, adapter, inputs, controls, analytic)
 
 
 def measure(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Row]:
@@ -245,7 +251,7 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
         ValueError: the robot has no judge for the scenario's kind.
     """
     s, model, data, adapter = prep.scenario, prep.model, prep.data, prep.adapter
-    spec = get_spec(s.robot)
+    spec = prep.spec
     judge = spec.judge(s.kind)
     if judge is None:
         raise ValueError(f"robot {s.robot!r} has no judge for {s.kind.value} scenarios")
@@ -282,164 +288,21 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     return metrics
 
 
-def batch_key(s: Scenario) -> tuple[str, str, float]:
-    """Scenarios with equal keys share one model and settled start: one rollout batch."""
-    return s.robot, s.kind.value, s.settle
+def run_all(work: Sequence[Job], progress: Callable[[str], None] | None = None,
+            on_result: Callable[[ScenarioResult], None] | None = None
+            ) -> list[ScenarioResult]:
+    """Run every scenario, one after the other; a failure does not stop the others.
 
-
-def run_all(scenarios: Sequence[Scenario], progress: Callable[[str], None] | None = None,
-            engine: Engine | str = Engine.ROLLOUT,
-            on_result: Callable[[ScenarioResult], None] | None = None,
-            offload: Offload | None = None) -> list[ScenarioResult]:
-    """Run every scenario; a failure does not stop the others.
-
-    With ``engine="rollout"``, kinematic and dynamic scenarios with the same
-    :func:`batch_key` are simulated together in one multi-threaded ``mujoco.rollout``,
-    and the batches are pipelined: while MuJoCo's threads (which release the GIL)
-    simulate one batch, Python computes the next batch's analytic schedule, then measures
-    the finished ones. A batch that fails is rerun one scenario at a time so that each
-    failure is attributed. ``"loop"`` steps each scenario in Python, one after the other.
-    Measurement scenarios run through their own ``evaluate``.
-
-    ``offload`` may run units of work elsewhere (e.g.
-    :meth:`~wmr_mujoco.validation.pool.ValidationPool.run`: worker processes running
-    this same function): each batch, largest first, then each measurement scenario;
-    what it declines runs here. ``on_result`` sees each scenario's final result as soon
-    as it is there (e.g. to start drawing its plot).
+    ``progress`` gets one line ``"[k/n] robot/scenario"`` as the k-th result is there
+    (numbered by completion), besides the tracebacks of failed runs; ``on_result`` sees
+    each result as soon as it is there.
     """
-    engine = parse_choice(Engine, engine, "engine")
-    n = len(scenarios)
-    results: dict[int, ScenarioResult] = {}
-
-    def done(i: int, result: ScenarioResult) -> None:
+    results = []
+    for spec, s in work:
+        result = run_scenario(spec, s, progress)
+        results.append(result)
         if progress:
-            progress(f"[{i + 1}/{n}] {result.scenario.key}")
-        results[i] = result
+            progress(f"[{len(results)}/{len(work)}] {s.key}")
         if on_result:
             on_result(result)
-
-    def run_here(unit: list[int]) -> None:
-        # Not ``progress`` itself: its "[i/n]" lines would count within the unit.
-        def passing(msg: str) -> None:
-            if progress and not msg.startswith("["):
-                progress(msg)
-
-        for i, result in zip(unit, run_all([scenarios[i] for i in unit], passing, engine),
-                             strict=True):
-            done(i, result)
-
-    away: dict[Future[tuple[list[Outcome], list[str]]], list[int]] = {}
-    here: list[list[int]] = []
-    for unit in work_units(scenarios, engine) if offload is not None else []:
-        future = offload([scenarios[i] for i in unit], engine)
-        if future is None:
-            here.append(unit)
-        else:
-            away[future] = unit
-
-    def harvest(future: Future[tuple[list[Outcome], list[str]]]) -> None:
-        outcomes, messages = future.result()
-        if progress:
-            for msg in messages:
-                progress(msg)
-        for i, (rows, trace, error) in zip(away.pop(future), outcomes, strict=True):
-            done(i, ScenarioResult(scenarios[i], rows, trace, error))
-
-    if offload is None:
-        if engine is Engine.ROLLOUT:
-            for i, result in sorted(_run_batched(scenarios).items()):
-                done(i, result)
-        for i in range(n):
-            if i not in results:
-                results[i] = run_scenario(scenarios[i], progress, engine=engine)
-                done(i, results[i])
-    else:
-        for unit in here:
-            run_here(unit)
-        # While the workers are busy (or still starting), this process takes the units
-        # they have not started yet, smallest (last) first.
-        for future, unit in reversed(list(away.items())):
-            for finished in [f for f in away if f.done()]:
-                harvest(finished)
-            if future.cancel():
-                del away[future]
-                run_here(unit)
-        for future in as_completed(list(away)):
-            harvest(future)
-    return [results[i] for i in range(n)]
-
-
-def work_units(scenarios: Sequence[Scenario], engine: Engine | str = Engine.ROLLOUT
-               ) -> list[list[int]]:
-    """Indices of independent units of work.
-
-    The batches of :func:`batch_key` (most simulated time first), then the measurement
-    scenarios one by one; with ``"loop"``, every scenario alone.
-    """
-    engine = parse_choice(Engine, engine, "engine")
-    groups: dict[tuple[str, str, float], list[int]] = {}
-    alone: list[list[int]] = []
-    for i, s in enumerate(scenarios):
-        if s.kind is ScenarioKind.MEASUREMENT or engine is Engine.LOOP:
-            alone.append([i])
-        else:
-            groups.setdefault(batch_key(s), []).append(i)
-    batches = sorted(groups.values(), key=lambda u: -sum(scenarios[i].duration for i in u))
-    return batches + alone
-
-
-def _simulate_prepared(prepared: list[Prepared], nthread: int) -> list[np.ndarray]:
-    first = prepared[0]
-    return simulate_batch(first.model, first.data, [p.controls for p in prepared], nthread)
-
-
-def _run_batched(scenarios: Sequence[Scenario]) -> dict[int, ScenarioResult]:
-    """The scenarios that ran cleanly in batches, by index; failures are left out."""
-    groups: dict[tuple[str, str, float], list[int]] = {}
-    for i, s in enumerate(scenarios):
-        if s.kind is not ScenarioKind.MEASUREMENT:
-            groups.setdefault(batch_key(s), []).append(i)
-    # One core stays with the Python thread that schedules and measures.
-    nthread = max(1, (os.cpu_count() or 1) - 1)
-    results: dict[int, ScenarioResult] = {}
-    # Each robot is compiled once; every scenario gets its own copy (adapters set the
-    # actuation mode on it), identical to a fresh load.
-    compiled: dict[str, mujoco.MjModel] = {}
-    pending: list[tuple[list[tuple[int, Prepared]], Future[list[np.ndarray]]]] = []
-
-    def finish(prepared: list[tuple[int, Prepared]], future: Future[list[np.ndarray]]
-               ) -> None:
-        try:
-            batch = future.result()
-        except Exception:
-            return
-        for (i, prep), states in zip(prepared, batch, strict=True):
-            trace = Trace()
-            try:
-                results[i] = ScenarioResult(prep.scenario, measure(prep, states, trace),
-                                            trace)
-            except Exception:
-                continue
-
-    with ThreadPoolExecutor(max_workers=1, thread_name_prefix="wmr-rollout") as pool:
-        for members in groups.values():
-            prepared = []
-            for i in members:
-                robot = scenarios[i].robot
-                try:
-                    if robot not in compiled:
-                        compiled[robot] = load(robot)
-                    model = copy.copy(compiled[robot])
-                    prepared.append((i, prepare(scenarios[i], model=model)))
-                except Exception:  # reported by the one-at-a-time rerun
-                    continue
-            # The batch before the one just submitted has had a batch's scheduling time
-            # to simulate: measure it now, so that results come out steadily.
-            if len(pending) > 1:
-                finish(*pending.pop(0))
-            if prepared:
-                pending.append((prepared, pool.submit(_simulate_prepared,
-                                                      [p for _, p in prepared], nthread)))
-        for prepared, future in pending:
-            finish(prepared, future)
     return results

@@ -16,7 +16,7 @@ of three kinds (:class:`ScenarioKind`):
 from __future__ import annotations
 
 import enum
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -80,13 +80,13 @@ class FilmFrame:
 Film = Callable[["Scenario", "RobotParams | None"], Iterator[FilmFrame]]
 
 
-def free_run(start: Start) -> Film:
+def free_run(start: Start, model_of: Callable[[RobotParams | None], mujoco.MjModel]) -> Film:
     """The :data:`Film` of one uncontrolled run from ``start``'s state.
 
     For a measurement whose physics is a single free run (a push, a release): the robot's
-    model is loaded, ``start`` puts ``data`` in the run's first state, the controls stay
-    at zero, and ``mj_step`` advances it over the scenario's ``duration``; every step is
-    one :class:`FilmFrame` (no analytic path).
+    model is compiled (``model_of(params)``), ``start`` puts ``data`` in the run's first
+    state, the controls stay at zero, and ``mj_step`` advances it over the scenario's
+    ``duration``; every step is one :class:`FilmFrame` (no analytic path).
 
     Raises:
         SimulationDivergedError: (while iterating) the run diverged.
@@ -94,10 +94,9 @@ def free_run(start: Start) -> Film:
     def film(scenario: Scenario, params: RobotParams | None) -> Iterator[FilmFrame]:
         import mujoco
 
-        from wmr_mujoco.models.loading import load
         from wmr_mujoco.sim.stepping import check_healthy
 
-        model = load(scenario.robot, params)
+        model = model_of(params)
         data = mujoco.MjData(model)
         start(model, data, params)
         data.ctrl[:] = 0.0
@@ -158,24 +157,3 @@ class Scenario:
     def input_at(self, t: float) -> np.ndarray:
         """Input vector at time ``t`` after the settle."""
         return np.array([s(t) for s in self.inputs])
-
-
-def scenarios_for(robots: Sequence[str] | None = None) -> list[Scenario]:
-    """Scenarios of the given robots (all registered if None), in registry order.
-
-    Raises:
-        ValueError: an unknown robot or one without scenarios; the message lists those
-            with some.
-    """
-    from wmr_mujoco.robots import ROBOTS, get_spec
-
-    if robots is None:
-        return [s for spec in ROBOTS.values() for s in spec.scenarios]
-    have = [name for name, spec in ROBOTS.items() if spec.scenarios]
-    out = []
-    for r in robots:
-        if not get_spec(r).scenarios:
-            raise ValueError(f"no validation scenarios for robot {r!r}; robots with "
-                             f"scenarios: {', '.join(have)}")
-        out += list(get_spec(r).scenarios)
-    return out

@@ -5,7 +5,7 @@ import dataclasses
 import mujoco
 import pytest
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.params_wheeled import DiffDriveParams
 
 CASTER_ROBOTS = ("diffdrive", "single_steer", "double_steer")

@@ -72,7 +72,7 @@ COLLIDER_ARRAYS = ("geom_type", "geom_bodyid", "geom_size", "geom_pos", "geom_qu
 
 
 def _compile(robot: str, strip_visual: bool) -> mujoco.MjModel:
-    from wmr_mujoco.models.loading import build_scene
+    from wmr_mujoco.lookup import build_scene
 
     root = build_scene(robot)
     if strip_visual:

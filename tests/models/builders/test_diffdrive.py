@@ -4,8 +4,8 @@ import mujoco
 import numpy as np
 import pytest
 
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params_wheeled import DiffDriveParams
 
 

@@ -7,12 +7,12 @@ import mujoco
 import numpy as np
 import pytest
 
+from wmr_mujoco.bench.thread_scaling import driving_controls
+from wmr_mujoco.lookup import build_scene, load
 from wmr_mujoco.models.actuation import set_actuation_mode
 from wmr_mujoco.models.builders import common, mecanum4
-from wmr_mujoco.models.loading import build_scene, load
 from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.sim.thread_scaling import driving_controls
-from wmr_mujoco.validation.omni_wheels import rolling_radius_profile
+from wmr_mujoco.robots.roller_wheels import rolling_radius_profile
 
 
 def load_mecanum(params=None):

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.analytic import diffdrive
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots.diffdrive import caster_drag
 

@@ -4,7 +4,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots import diffdrive
 from wmr_mujoco.validation import metrics as mt

@@ -5,7 +5,7 @@ import math
 import mujoco
 import pytest
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.robots.disc import sliding
 
 

@@ -4,7 +4,7 @@ from dataclasses import replace
 
 import pytest
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.params import DiscParams
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.robots.disc.wheel import mounted_wheel
@@ -29,8 +29,8 @@ def test_mounted_wheel_constants(geared):
 
 def test_torque_scenario_with_armature_passes(geared):
     """wheel_armature = 0.01 gave a false 13.9 % acceleration error when J ignored it."""
-    scenario = get_spec("disc").scenario("torque")
-    result = run_scenario(scenario, params=geared)
+    spec = get_spec("disc")
+    result = run_scenario(spec, spec.scenario("torque"), params=geared)
     row = next(r for r in result.rows if r.metric == "rolling acceleration error")
     assert result.passed, [(r.metric, r.value) for r in result.rows if r.passed is False]
     # The error a J without the armature would show: (J + A + mR²)/(J + mR²) − 1.

@@ -9,7 +9,7 @@ import math
 import mujoco
 import pytest
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.robots.disc_free import measurements as ms
 
 

@@ -15,7 +15,7 @@ def test_forward_torques_follow_the_reduced_equations():
     # omni3's): each body-velocity component within 3 % of its peak of the reduced
     # Lagrange model, worst over the whole run.
     s = dataclasses.replace(SPEC.scenario(JUDGED_PREFIX), duration=1.0)
-    res = run_scenario(s)
+    res = run_scenario(SPEC, s)
     worst = {r.metric: r for r in res.rows if r.metric.startswith("Lagrange: worst")}
     assert sorted(worst) == [f"Lagrange: worst {c} error" for c in "ruv"]
     assert all(r.target == 3.0 and r.passed
@@ -30,7 +30,7 @@ def test_forward_torques_follow_the_reduced_equations():
 
 def test_mixed_torques_judge_only_the_friction_bound():
     s = dataclasses.replace(SPEC.scenario("torque mixed"), duration=0.6)
-    res = run_scenario(s)
+    res = run_scenario(SPEC, s)
     assert res.error is None
     judged = [r for r in res.rows if r.target is not None]
     assert [r.metric for r in judged] == ["largest roller-axis force / μN"]
@@ -39,7 +39,7 @@ def test_mixed_torques_judge_only_the_friction_bound():
 def test_roller_force_ratio_of_equal_torques_by_hand():
     # Equal torques τ straight ahead: each wheel's drive force F_t = (τ − I_w θ̈)/R with
     # θ̈ = u̇/R and u̇ = 4τ/R / (M + 4 I_w/R²); roller-axis force F_t / cos 45°.
-    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.lookup import load
     from wmr_mujoco.robots.mecanum4.dynamics import dynamic_adapter
     from wmr_mujoco.validation.metrics import Trace
 

@@ -2,11 +2,11 @@
 
 import numpy as np
 
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4.geometry import layout
-from wmr_mujoco.validation.omni_wheels import layout_from_model
+from wmr_mujoco.robots.roller_wheels import layout_from_model
 
 
 def test_layout_matches_the_compiled_model():

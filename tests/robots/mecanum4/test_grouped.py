@@ -18,7 +18,7 @@ def test_group_metrics_equal_the_runs_alone():
     assert [s.label for s in res.series] == [m.name for m in members]
     got = {m.name: m for m in res.metrics}
     for member in members:
-        alone = run_scenario(member)
+        alone = run_scenario(SPEC, member)
         for row in alone.rows:
             if row.target is None:
                 continue

@@ -8,7 +8,7 @@ import pytest
 
 from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.robots.mecanum4 import kinematic_runs
+from wmr_mujoco.robots.mecanum4 import SPEC, kinematic_runs
 from wmr_mujoco.robots.mecanum4.collider import realised_twist
 from wmr_mujoco.robots.mecanum4.kinematics import MecanumKinematics, is_step
 from wmr_mujoco.validation.runner import run_scenario
@@ -68,7 +68,7 @@ def test_steady_shortfall_is_the_pitch_averaged_one(name, pose, derived):
     # ±25 %: the hand-over impacts and the four wheels' different roller phases are not
     # in the averaged model.
     s = dataclasses.replace(run(name), duration=2.0)
-    tr = run_scenario(s).trace.arrays()
+    tr = run_scenario(SPEC, s).trace.arrays()
     i = np.searchsorted(tr["time"], 1.0)
     moved = _advance(tr["sim"], i, pose)
     ideal = _advance(tr["analytic"][:, 3:], i, pose)
@@ -77,7 +77,7 @@ def test_steady_shortfall_is_the_pitch_averaged_one(name, pose, derived):
 
 def test_step_run_is_judged_on_the_requirement_against_the_step_model():
     s = dataclasses.replace(run("translate 0° (step)"), duration=1.0)
-    r = rows(run_scenario(s))
+    r = rows(run_scenario(SPEC, s))
     pos = r[("worst position error", "% of path")]
     assert pos.basis.startswith("requirement") and pos.target == pytest.approx(1.0)
     # The chassis cannot beat friction: against the instant step of the kinematics it

@@ -7,7 +7,7 @@ import pytest
 
 from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.analytic.roller_stick_slip import step_response
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4.collider import realised_twist
 from wmr_mujoco.robots.mecanum4.traction import step_acceleration_time, step_platform

@@ -20,8 +20,8 @@ from wmr_mujoco.robots.omni3.runs import (
     simulate_runs,
     wheels_off_floor,
 )
+from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 from wmr_mujoco.sim.engine import STATE_SPEC
-from wmr_mujoco.validation.metrics import twist_metrics
 
 
 def _metrics(name, evaluate):

@@ -20,7 +20,7 @@ from wmr_mujoco.models.params import OmniParams, SimParams
 from wmr_mujoco.robots.omni3.coasting import COAST_SPEC, coast_figures
 from wmr_mujoco.robots.omni3.dynamics import path_length
 from wmr_mujoco.robots.omni3.runs import RunSpec, hybrid, simulate_runs
-from wmr_mujoco.validation.metrics import twist_metrics
+from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 
 STIFF = OmniParams(sim=SimParams(timestep=0.0005, contact_timeconst=0.001))
 PUSH = RunSpec("push", ActuationMode.TORQUE, (0.04, -0.03, 0.01), 1.0)

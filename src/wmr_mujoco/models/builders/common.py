@@ -20,6 +20,7 @@ from dm_control import mjcf
 from lxml import etree
 
 from wmr_mujoco.models.params import DriveParams, SimParams, WheelParams
+from wmr_mujoco.models.solids import box_inertia  # noqa: F401  (re-exported)
 
 #: Actuator ``user[0]`` codes.
 KIND_WHEEL = 0
@@ -130,16 +131,6 @@ def add_hub(wheel: mjcf.Element, mass: float, radius: float, width: float) -> No
               zaxis=(0, 1, 0), rgba=WHEEL_RGBA)
     wheel.add("geom", dclass="visual", type="box", size=(0.9 * radius, width / 2 + 0.001,
                                                            0.1 * radius), rgba=MARK_RGBA)
-
-
-def box_inertia(mass: float, size: Sequence[float]) -> tuple[float, float, float]:
-    """Principal inertia of a uniform box of full edge lengths ``(a, b, c)``.
-
-    ``I_x = m (b² + c²)/12``, ``I_y = m (a² + c²)/12``, ``I_z = m (a² + b²)/12``.
-    """
-    a, b, c = size
-    return (mass * (b * b + c * c) / 12.0, mass * (a * a + c * c) / 12.0,
-            mass * (a * a + b * b) / 12.0)
 
 
 def add_box_body_geoms(body: mjcf.Element, size: Sequence[float],

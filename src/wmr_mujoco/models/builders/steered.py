@@ -20,16 +20,12 @@ from wmr_mujoco.models.params_wheeled import (
     DoubleSteerParams,
     SingleSteerParams,
 )
+from wmr_mujoco.models.solids import FORK_BOX, fork_yaw_inertia  # noqa: F401  (re-exported)
 
 CHASSIS_COM_HEIGHT = 0.04
-FORK_HEIGHT = 0.12
+FORK_HEIGHT = FORK_BOX[2]
 #: Height of the visual fork crown above the wheel's top, m.
 FORK_CROWN_GAP = 0.02
-
-
-def fork_yaw_inertia(fork_mass: float) -> float:
-    """Yaw inertia of the fork alone (the box of :func:`add_steered_wheel`), kg·m²."""
-    return common.box_inertia(fork_mass, (0.04, 0.06, FORK_HEIGHT))[2]
 
 
 def add_steered_wheel(root: mjcf.RootElement, chassis: mjcf.Element, prefix: str,
@@ -46,7 +42,7 @@ def add_steered_wheel(root: mjcf.RootElement, chassis: mjcf.Element, prefix: str
     steer = fork.add("joint", name=f"{prefix}_steer", type="hinge", axis=(0, 0, 1),
                      range=(-limit, limit))
     fork.add("inertial", pos=(0, 0, FORK_HEIGHT / 2.0), mass=fork_mass,
-             diaginertia=common.box_inertia(fork_mass, (0.04, 0.06, FORK_HEIGHT)))
+             diaginertia=common.box_inertia(fork_mass, FORK_BOX))
     fork.add("geom", dclass="visual", type="capsule", fromto=(0, 0, 0, 0, 0, FORK_HEIGHT),
              size=(0.01,), rgba=common.BODY_RGBA)
     # Blades either side of the wheel up to a crown on the steering column.

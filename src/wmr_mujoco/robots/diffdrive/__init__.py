@@ -24,11 +24,11 @@ from wmr_mujoco.models.builders import diffdrive as builder
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.command import RateCommand
 from wmr_mujoco.robots.diffdrive import caster_drag
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.command import RateCommand
 from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Sine, const

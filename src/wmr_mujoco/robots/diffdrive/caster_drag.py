@@ -139,13 +139,14 @@ def steady_drag(model: mujoco.MjModel, params: DiffDriveParams, v: float, omega:
 
 def evaluate(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
     """Caster drag of every manoeuvre (reported) and with rolling friction (judged)."""
-    from wmr_mujoco.models.loading import load  # loading reads the registry of robots
+    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.robots.diffdrive import SPEC  # the entry imports this module
 
     p = params_or_default(params, DiffDriveParams)
     weight = p.total_mass * GRAVITY
     metrics: list[Metric] = []
     series: list[Series] = []
-    free = load("diffdrive", params)
+    free = load(SPEC, params)
     for name, v, omega in MANOEUVRES:
         rec = steady_drag(free, p, v, omega)
         metrics += [
@@ -158,7 +159,7 @@ def evaluate(scenario: Scenario, params: RobotParams | None) -> MeasurementResul
     rolling = dataclasses.replace(p, caster=dataclasses.replace(p.caster,
                                                                 rolling_friction=True))
     name, v, omega = MANOEUVRES[0]
-    rec = steady_drag(load("diffdrive", rolling), rolling, v, omega)
+    rec = steady_drag(load(SPEC, rolling), rolling, v, omega)
     mean, predicted = float(np.mean(rec.drag)), float(np.mean(rec.predicted))
     metrics += [
         Metric(f"caster drag with rolling friction, {name}, mean", mean, "N",

@@ -21,11 +21,11 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import disc as builder
 from wmr_mujoco.models.params import DiscParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.command import RateCommand
 from wmr_mujoco.robots.disc import sliding
 from wmr_mujoco.robots.disc.wheel import mounted_wheel
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.command import RateCommand
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Sine, const
@@ -108,10 +108,16 @@ def judge_rolling(scenario: Scenario, trace: Trace, adapter: DiscDynamics,
 
     The slope is a least-squares fit over the whole steady part of the run, so it is
     judged on every sample, not on one instant.
+
+    Raises:
+        ValueError: the run ends before two samples of its steady part (duration ≤ 0.5 s).
     """
     tr = trace.arrays()
     t, sim, ana = tr["time"], tr["sim"], tr["analytic"]
     steady = t > 0.5
+    if np.count_nonzero(steady) < 2:
+        raise ValueError(f"{scenario.key}: duration = {scenario.duration:g} s; the rolling "
+                         "acceleration is fitted after 0.5 s, give a longer run")
     measured = float(np.polyfit(t[steady], sim[steady, 1], 1)[0])
     torque = scenario.input_at(0.0)[0]
     expected = adapter.wheel.rolling_acceleration(torque)
@@ -136,9 +142,9 @@ def _on_model(measure: Callable[[mujoco.MjModel], MeasurementResult]
               ) -> Callable[[Scenario, RobotParams | None], MeasurementResult]:
     """A measurement scenario's ``evaluate``: ``measure`` on the disc built from params."""
     def evaluate(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
-        from wmr_mujoco.models.loading import load  # loading reads the registry
+        from wmr_mujoco.models.loading import load
 
-        return measure(load(NAME, params))
+        return measure(load(SPEC, params))
     return evaluate
 
 

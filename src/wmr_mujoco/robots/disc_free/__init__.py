@@ -28,9 +28,9 @@ Runs = Callable[[mujoco.MjModel], list[FreeRun]]
 
 
 def _model(params: RobotParams | None) -> mujoco.MjModel:
-    from wmr_mujoco.models.loading import load  # loading reads the registry
+    from wmr_mujoco.models.loading import load
 
-    return load(NAME, params)
+    return load(SPEC, params)
 
 
 def _evaluate(measure: Measure) -> Callable[[Scenario, RobotParams | None], MeasurementResult]:

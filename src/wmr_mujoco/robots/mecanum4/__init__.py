@@ -18,14 +18,9 @@ from wmr_mujoco.models.builders import mecanum4 as builder
 from wmr_mujoco.models.params import params_or_default
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.command import RateCommand
 from wmr_mujoco.robots.mecanum4 import dynamics, kinematics, ripple
 from wmr_mujoco.robots.mecanum4.grouped import Group
-from wmr_mujoco.robots.spec import RobotSpec
-from wmr_mujoco.validation import metrics as mt
-from wmr_mujoco.validation.adapters import Adapter
-from wmr_mujoco.validation.metrics import Probe, Target
-from wmr_mujoco.validation.omni_wheels import (
+from wmr_mujoco.robots.roller_wheels import (
     DIRECTIONS_DEG,
     RAMP,
     ROLLER_RATE_PCT,
@@ -35,6 +30,11 @@ from wmr_mujoco.validation.omni_wheels import (
     translation,
     twist_inputs,
 )
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation.adapters import Adapter
+from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.metrics import Probe, Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
 

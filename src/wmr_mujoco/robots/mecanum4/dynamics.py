@@ -6,7 +6,7 @@ mecanum included (its derivation uses only ``θ̇ = H ν`` and the virtual power
     (diag(M, M, I_z) + I_w HᵀH) ν̇ + r [−M v, M u, 0]ᵀ = Hᵀ τ,
 
 with M, I_z and I_w read from the compiled model
-(:func:`wmr_mujoco.validation.omni_wheels.dynamics_from_model`); the rollers' own spin
+(:func:`wmr_mujoco.robots.roller_wheels.dynamics_from_model`); the rollers' own spin
 inertia is neglected. Judged (requirement, issue 5's 3 % for omni3) on equal torques,
 straight ahead, where no roller turns. Torques that drive sideways or turn leave the
 chassis slower than the reduced model (roller hand-overs, the pitch effect of
@@ -24,8 +24,9 @@ from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4.geometry import layout
-from wmr_mujoco.validation.metrics import Metric, Target, Trace, twist_metrics
-from wmr_mujoco.validation.omni_wheels import OmniDynamicsAdapter, dynamics_from_model
+from wmr_mujoco.robots.roller_wheels import OmniDynamicsAdapter, dynamics_from_model
+from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
+from wmr_mujoco.validation.metrics import Metric, Target, Trace
 from wmr_mujoco.validation.scenarios import Scenario
 
 #: Gravity, m/s².
@@ -50,7 +51,8 @@ def judge_torques(scenario: Scenario, trace: Trace, adapter: OmniDynamicsAdapter
     """Each body-velocity component against the reduced model, worst and RMS over the run.
 
     ``max_t |x_sim − x_model|`` for x = u, v (m/s) and r (rad/s), each in % of its own
-    scale (:func:`~wmr_mujoco.validation.metrics.twist_metrics`, as omni3's torque runs),
+    scale (:func:`~wmr_mujoco.robots.roller_wheels.twist_errors.twist_metrics`, as
+    omni3's torque runs),
     with the lever of r at the wheels ``L = a + w``: a mecanum wheel turns at
     ``θ̇ = (u ∓ v ∓ (a + w) r) / R``. Judged on the straight-ahead runs only (module
     docstring); the others are reported.

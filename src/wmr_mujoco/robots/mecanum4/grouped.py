@@ -53,6 +53,7 @@ def evaluate_group(members: Sequence[Scenario], params: RobotParams | None
     Raises:
         ValueError: members that differ in robot, kind or settle time.
     """
+    from wmr_mujoco.robots.mecanum4 import SPEC  # the entry imports this module
     from wmr_mujoco.validation.runner import (
         Prepared,
         make_adapter,
@@ -61,7 +62,7 @@ def evaluate_group(members: Sequence[Scenario], params: RobotParams | None
         schedule,
     )
 
-    first = prepare(members[0], params)
+    first = prepare(SPEC, members[0], params)
     model, data = first.model, first.data
     prepared = [first]
     for s in members[1:]:
@@ -69,11 +70,11 @@ def evaluate_group(members: Sequence[Scenario], params: RobotParams | None
                                            first.scenario.settle):
             raise ValueError(f"{s.key}: a group shares one settled start; its members "
                              "need the same robot, kind and settle")
-        adapter = make_adapter(s, model, params)
+        adapter = make_adapter(SPEC, s, model, params)
         nstep = round(s.duration / model.opt.timestep)
         schedule_ = schedule(s, adapter, adapter.sim_state(model, data),
                              model.opt.timestep, nstep)
-        prepared.append(Prepared(s, model, data, adapter, *schedule_))
+        prepared.append(Prepared(SPEC, s, model, data, adapter, *schedule_))
     nthread = max(1, (os.cpu_count() or 1) - 1)
     batch = simulate_batch(model, data, [p.controls for p in prepared], nthread)
     metrics: list[Metric] = []

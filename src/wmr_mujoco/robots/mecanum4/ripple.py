@@ -2,7 +2,7 @@
 
 Measured on the compiled collision geometry: the distance from wheel FL's axle to the
 floor-touching point over one revolution
-(:func:`wmr_mujoco.validation.omni_wheels.rolling_radius_profile`), peak to peak over its
+(:func:`wmr_mujoco.robots.roller_wheels.rolling_radius_profile`), peak to peak over its
 mean. The ideal profile has none (docs/mecanum.md §5); the ellipsoids osculate it at
 each roller's middle and depart from it towards the hand-overs.
 """
@@ -13,8 +13,8 @@ import numpy as np
 
 from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots.roller_wheels import rolling_radius_profile
 from wmr_mujoco.validation.metrics import Metric, Series, Target
-from wmr_mujoco.validation.omni_wheels import rolling_radius_profile
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
 #: Requirement (issue 15) on the rolling-radius ripple, % of the mean radius.
@@ -24,9 +24,10 @@ RIPPLE = Target.requirement(0.3, "smooth rolling asked of the roller envelope: "
 
 def ripple(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
     """Peak-to-peak rolling radius of wheel FL over a revolution, % of its mean."""
-    from wmr_mujoco.models.loading import load  # the registry imports this module
+    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.robots.mecanum4 import SPEC  # the entry imports this module
 
-    model = load(scenario.robot, params)
+    model = load(SPEC, params)
     wheel = WHEEL_NAMES[0]
     profile = rolling_radius_profile(model, wheel, f"{wheel}_roller", samples=721)
     angle = np.degrees(np.linspace(0.0, 2.0 * np.pi, profile.size))

@@ -2,7 +2,7 @@
 
 :func:`step_platform` reads every parameter of
 :class:`wmr_mujoco.analytic.roller_stick_slip.RollerPlatform` from the compiled model:
-mass and yaw inertia (:func:`~wmr_mujoco.validation.omni_wheels.dynamics_from_model`),
+mass and yaw inertia (:func:`~wmr_mujoco.robots.roller_wheels.dynamics_from_model`),
 wheel spin inertia with the rotor armature, the rate servo's gain and torque limit (the
 actuator's user data and ``forcerange``), the contact friction (MuJoCo takes the larger of
 the two geoms' coefficients) and the centre-of-mass height over the floor. The contact
@@ -28,7 +28,7 @@ from wmr_mujoco.models.colliders import colliders, pair_with
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import collider
 from wmr_mujoco.robots.mecanum4.geometry import layout
-from wmr_mujoco.validation.omni_wheels import dynamics_from_model
+from wmr_mujoco.robots.roller_wheels import dynamics_from_model
 
 #: Gravity, m/s².
 GRAVITY = 9.81

@@ -11,12 +11,10 @@ the dynamic runs are simulated together (:mod:`.runs`).
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
-from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -27,14 +25,9 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.command import RateCommand
-from wmr_mujoco.robots.omni3 import coasting, dynamics, traction
+from wmr_mujoco.robots.omni3 import coasting, dynamics, peer, traction
 from wmr_mujoco.robots.omni3.runs import WHEELS
-from wmr_mujoco.robots.spec import Clip, RobotSpec
-from wmr_mujoco.validation import metrics as mt
-from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
-from wmr_mujoco.validation.metrics import Target
-from wmr_mujoco.validation.omni_wheels import (
+from wmr_mujoco.robots.roller_wheels import (
     DIRECTIONS_DEG,
     ROLLER_RATE_PCT,
     SPEED,
@@ -43,6 +36,11 @@ from wmr_mujoco.validation.omni_wheels import (
     translation,
     twist_inputs,
 )
+from wmr_mujoco.robots.spec import Clip, RobotSpec
+from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Piecewise, Signal, const
 
@@ -165,23 +163,6 @@ SCENARIOS = (
                          "slips, against the traction limit μ N with load transfer"),
 )
 
-#: Trials of the peer comparison in a quick bench run.
-QUICK_PEER_TRIALS = ("translate   0°", "rotate", "translate+rotate")
-
-
-def peer_comparison(scene: Path, quick: bool) -> list[Mapping[str, object]]:
-    """omni3 at its defaults and the peer robot_soccer_kit on the same open-loop trials.
-
-    The trials and the summary are the roller study's (:mod:`wmr_mujoco.bench.omni_study`,
-    imported here so the registry does not load the benchmarks).
-    """
-    from wmr_mujoco.bench.omni_study import measure_omni, measure_peer
-
-    names = QUICK_PEER_TRIALS if quick else None
-    return [dataclasses.asdict(s) for s in (
-        measure_omni(OmniParams(), f"{NAME} (default)", names), measure_peer(names, scene))]
-
-
 #: Driven by the body twist ``(u, v, r)``.
 COMMAND = RateCommand(("u", "v", "r"), ("m/s", "m/s", "rad/s"), wheels=WHEELS,
                       kinematics=lambda p: OmniKinematics(params_or_default(p, OmniParams)))
@@ -196,5 +177,5 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="square with rotation",
     bench_scenario="translate+rotate", render_scenario="square with rotation",
     clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
-    peer=peer_comparison, command=COMMAND,
+    peer=peer.peer_comparison, command=COMMAND,
 )

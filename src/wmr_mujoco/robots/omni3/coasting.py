@@ -23,8 +23,8 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots.omni3.dynamics import _run
 from wmr_mujoco.robots.omni3.runs import RunSpec, hybrid
+from wmr_mujoco.robots.roller_wheels import SPEED, YAW_RATE
 from wmr_mujoco.validation.metrics import Metric, Series, Target
-from wmr_mujoco.validation.omni_wheels import SPEED, YAW_RATE
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
 COAST = Target.requirement(5.0, "accuracy asked of the coasting model: within 5 % "

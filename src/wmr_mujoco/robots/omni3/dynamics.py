@@ -13,7 +13,8 @@ the physics, the hybrid model's and the kinematic prediction into metrics and pl
   the twist that the simulator resolves only to its step, so where the model's wheel
   phase stays within one step's turn of the physics' (:func:`event_shift`) the twist
   components are compared with jumps allowed :data:`EVENT_SHIFT` sample apart ((τ,
-  ε)-closeness, :func:`~wmr_mujoco.validation.metrics.event_aligned_error`), else at the
+  ε)-closeness,
+  :func:`~wmr_mujoco.robots.roller_wheels.twist_errors.event_aligned_error`), else at the
   same instant; the same-instant figures are reported beside. Reported too: the reduced
   Lagrange model's windowed errors and the old single-instant figure.
 
@@ -39,14 +40,15 @@ from wmr_mujoco.robots.omni3.runs import (
     hybrid,
     phase_lag_steps,
 )
-from wmr_mujoco.validation.metrics import Metric, Series, Target, rms, twist_metrics
-from wmr_mujoco.validation.omni_wheels import (
+from wmr_mujoco.robots.roller_wheels import (
     DIRECTIONS_DEG,
     SPEED,
     YAW_RATE,
     lagrange_of,
     translation,
 )
+from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
+from wmr_mujoco.validation.metrics import Metric, Series, Target, rms
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
 SOURCE = "accuracy asked of the dynamic models"

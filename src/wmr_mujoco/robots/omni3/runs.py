@@ -24,9 +24,9 @@ from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
 from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.roller_wheels import drive_from_model, hybrid_from_model, roller_rates
 from wmr_mujoco.sim.engine import STATE_SPEC, simulate, simulate_batch
 from wmr_mujoco.sim.stepping import check_healthy
-from wmr_mujoco.validation.omni_wheels import drive_from_model, hybrid_from_model, roller_rates
 
 #: omni3's wheel hinges (and their actuators), in layout order.
 WHEELS = ("wheel1", "wheel2", "wheel3")
@@ -169,11 +169,12 @@ def settled(mode: ActuationMode, params: OmniParams | None = None,
     Raises:
         ValueError: a timestep outside (0, 0.01] s.
     """
-    from wmr_mujoco.models.loading import load  # the registry imports this module
+    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.robots.omni3 import SPEC  # the entry imports this module
 
     if timestep is not None and not (math.isfinite(timestep) and 0 < timestep <= 0.01):
         raise ValueError(f"timestep = {timestep!r} s; valid range is (0, 0.01] s")
-    model = load("omni3", params)
+    model = load(SPEC, params)
     if timestep is not None:
         model.opt.timestep = timestep
     set_actuation_mode(model, mode)
@@ -360,9 +361,10 @@ def hybrid(params: OmniParams | None = None) -> oh.OmniHybrid:
 
 @functools.lru_cache(maxsize=4)
 def _hybrid(params: OmniParams | None) -> oh.OmniHybrid:
-    from wmr_mujoco.models.loading import load  # the registry imports this module
+    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.robots.omni3 import SPEC  # the entry imports this module
 
-    return _read(load("omni3", params), params)
+    return _read(load(SPEC, params), params)
 
 
 def hybrid_at(timestep: float, params: OmniParams | None = None) -> oh.OmniHybrid:
@@ -374,7 +376,7 @@ def hybrid_at(timestep: float, params: OmniParams | None = None) -> oh.OmniHybri
 
 
 def _read(model: mujoco.MjModel, params: OmniParams | None) -> oh.OmniHybrid:
-    """:func:`~wmr_mujoco.validation.omni_wheels.hybrid_from_model` of omni3."""
+    """:func:`~wmr_mujoco.robots.roller_wheels.hybrid_from_model` of omni3."""
     p = params or OmniParams()
     return hybrid_from_model(model, ok.symmetric_layout(p.wheel_radius, p.wheel_distance),
                              CENTRE_BODY, WHEELS)

@@ -16,10 +16,10 @@ from __future__ import annotations
 
 from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.params_whipple import WhippleParams
-from wmr_mujoco.robots.command import TorqueCommand
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.robots.whipple import eigen, stability
-from wmr_mujoco.robots.whipple.rolling import NAME, readings
+from wmr_mujoco.robots.whipple.rolling import NAME, compile_model, readings
+from wmr_mujoco.validation.command import TorqueCommand
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
 
 
@@ -32,7 +32,8 @@ def _push(speed: float, what: str) -> Scenario:
     evaluate, start = stability.push_scenario_parts(speed)
     return Scenario(NAME, push_name(speed), duration=stability.PUSH_DURATION,
                     kind=ScenarioKind.MEASUREMENT, settle=0.0, evaluate=evaluate,
-                    film=free_run(start), description=f"sideways push at {speed:g} m/s: {what}")
+                    film=free_run(start, compile_model),
+                    description=f"sideways push at {speed:g} m/s: {what}")
 
 
 SCENARIOS = (

@@ -37,9 +37,10 @@ MAX_PUSH = 5.0
 
 def compile_model(params: WhippleParams | None = None) -> mujoco.MjModel:
     """The bicycle on the project's floor: the checked-in scene, or built from ``params``."""
-    from wmr_mujoco.models.loading import load  # the registry imports this package
+    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.robots.whipple import SPEC  # the entry imports this module
 
-    return load(NAME, params)
+    return load(SPEC, params)
 
 
 def check_speed(speed: float) -> None:

@@ -1,6 +1,6 @@
 """Write the checked-in MJCF files from the builders' default parameters.
 
-Run ``python -m wmr_mujoco.models.export`` after changing a builder or a default parameter;
+Run ``python -m wmr_mujoco.docs_sync.export`` after changing a builder or a default parameter;
 ``tests/models/test_loading.py`` fails until the files agree with the builders again.
 """
 
@@ -18,7 +18,7 @@ from wmr_mujoco.info import used_params
 from wmr_mujoco.models.builders import common
 from wmr_mujoco.models.builders.scene import add_scene
 from wmr_mujoco.models.params import RobotParams, WheelParams
-from wmr_mujoco.models.paths import README_PATH
+from wmr_mujoco.models.paths import DOCS_DIR
 from wmr_mujoco.robots import ROBOTS, RobotSpec
 
 
@@ -64,23 +64,24 @@ def update_readme(spec: RobotSpec) -> Path | None:
     return readme
 
 
-#: Marker key of the top-level README's class table (:func:`update_class_table`).
+#: Marker key of the class table (:func:`update_class_table`) and the page that holds it.
 CLASS_TABLE_KEY = "campion classes"
+CLASS_TABLE_PAGE = DOCS_DIR / "campion-classes.md"
 
 
-def update_class_table(readme: Path = README_PATH) -> Path | None:
+def update_class_table(readme: Path = CLASS_TABLE_PAGE) -> Path | None:
     """Paste the Campion class of every registered robot, computed from its model."""
     from wmr_mujoco.models.classify import class_table
     from wmr_mujoco.models.loading import load
 
     if not has_markers(readme, CLASS_TABLE_KEY):
         return None
-    replace_between(readme, CLASS_TABLE_KEY, class_table({n: load(n) for n in ROBOTS}))
+    replace_between(readme, CLASS_TABLE_KEY, class_table({n: load(s) for n, s in ROBOTS.items()}))
     return readme
 
 
 def export_all() -> list[Path]:
-    """Write every robot's files and README parameter table, and the README class table."""
+    """Write every robot's files and README parameter table, and the Campion class table."""
     written = []
     for spec in ROBOTS.values():
         if spec.build is None or spec.params_type is None or not spec.has_files:

@@ -1,4 +1,4 @@
-"""The pictures in the model READMEs: ``python -m wmr_mujoco.models.pictures``."""
+"""The pictures in the model READMEs: ``python -m wmr_mujoco.docs_sync.pictures``."""
 
 from __future__ import annotations
 
@@ -45,7 +45,7 @@ def write_pictures(width: int = 640, height: int = 400) -> list[Path]:
     for spec in ROBOTS.values():
         if spec.build is None or not spec.has_files:
             continue
-        model = load(spec.name)
+        model = load(spec)
         data = mujoco.MjData(model)
         pose(model, data, spec.picture)
         mujoco.mj_forward(model, data)

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from wmr_mujoco.sim.thread_scaling import batch_size, make_batch, scaling
+from wmr_mujoco.bench.thread_scaling import batch_size, make_batch, scaling
 
 
 @pytest.mark.parametrize("robot", ["bicycle", "omni3"])
@@ -58,7 +58,7 @@ def test_scaling_reports_threads_beside_processes():
 
 @pytest.mark.parametrize("robot", ["whipple", "disc_free"])
 def test_a_robot_without_a_kinematic_scenario_is_a_value_error(robot):
-    from wmr_mujoco.sim.thread_scaling import driving_controls
+    from wmr_mujoco.bench.thread_scaling import driving_controls
 
     with pytest.raises(ValueError, match=f"robot '{robot}' has no kinematic scenario to "
                        "drive; valid robots: disc, bicycle"):

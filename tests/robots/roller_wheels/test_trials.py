@@ -2,8 +2,14 @@
 
 Targets (omni3's registry entry, issue 3): worst position error over the run ≤ 1 % of
 path, worst heading error ≤ 1°, median roller-rate error ≤ 5 %; a pure rotation keeps the
-centre within 1 % of the wheel distance. Each trial: 5 s from a settled start, reached by
-a 0.5 s ramp that keeps traction below μN.
+centre within 1 % of the wheel distance. Each trial starts settled, reached by a 0.5 s
+ramp that keeps traction below μN.
+
+The translations, the rotation and translate+rotate are omni3's registered scenarios,
+judged over their whole 5 s by ``wmr validate`` (``make demo``). Here four trials, one of
+each kind and the diagonal+rotate trial that only the studies run, shortened to
+:data:`SHORT_S`: the targets are worst-over-the-run bounds, so a shorter run is held to
+the same ones.
 """
 
 import dataclasses
@@ -11,15 +17,20 @@ import dataclasses
 import numpy as np
 import pytest
 
-from wmr_mujoco.bench.trials import peer_spec, run_trial, standard_trials
-from wmr_mujoco.robots import registered
+from wmr_mujoco.robots.roller_wheels.trials import peer_spec, run_trial, standard_trials
 
-TRIALS = standard_trials("omni3")
+#: Seconds each trial runs here: the ramp, then 1.5 s at speed (the roller-rate probe
+#: starts after 1 s).
+SHORT_S = 2.0
+TRIALS = [dataclasses.replace(t, duration=SHORT_S) for t in standard_trials("omni3")
+          if t.name in ("translate   0°", "translate  45°", "rotate", "diagonal+rotate")]
 
 
 @pytest.fixture(scope="module")
 def runs():
-    return {t.name: run_trial(t) for t in TRIALS}
+    from wmr_mujoco.robots import get_spec
+
+    return {t.name: run_trial(get_spec("omni3"), t) for t in TRIALS}
 
 
 @pytest.mark.parametrize("name", [t.name for t in TRIALS])
@@ -35,7 +46,7 @@ def test_tracks_ideal_kinematics(runs, name):
 def test_rollers_turn_at_the_kinematic_rate(runs):
     errors = [run.value("roller rate error (median)", "%") for run in runs.values()]
     measured = [e for e in errors if np.isfinite(e)]
-    assert len(measured) >= 8  # every trial with sideways slide measured rollers
+    assert len(measured) >= 3  # every trial with sideways slide measured rollers
     assert max(measured) <= 5.0
 
 
@@ -44,8 +55,8 @@ def _peer_stand_in(folder):
     with the peer's wheel joint names and, like the peer, one angle servo per wheel."""
     import mujoco
 
-    from wmr_mujoco.bench.trials import PEER_WHEELS
     from wmr_mujoco.robots import get_spec
+    from wmr_mujoco.robots.roller_wheels.trials import PEER_WHEELS
 
     spec = mujoco.MjSpec.from_file(str(get_spec("omni3").scene_path))
     for element in [*spec.actuators, *spec.sensors]:
@@ -67,12 +78,11 @@ def test_peer_runs_through_the_same_runner(tmp_path):
 
     spec = peer_spec(_peer_stand_in(tmp_path))
     trial = dataclasses.replace(spec.scenarios[0], duration=1.0)
-    with registered(spec):
-        import mujoco
+    import mujoco
 
-        adapter = make_adapter(trial, mujoco.MjModel.from_xml_path(str(spec.scene_path)))
-        assert all(adapter.info.angle_servo)  # read from the model: position servos
-        run = run_trial(trial)
+    adapter = make_adapter(spec, trial, mujoco.MjModel.from_xml_path(str(spec.scene_path)))
+    assert all(adapter.info.angle_servo)  # read from the model: position servos
+    run = run_trial(spec, trial)
     assert run.result.error is None, run.result.error
     assert np.isfinite(run.value("worst position error", "% of path"))
     assert any(run.result.trace.state_names[3:])  # the wheel angles are part of the state
@@ -112,7 +122,7 @@ def test_peer_through_the_package_spec_when_its_handle_has_no_path(tmp_path):
     """The documented route: ``spec(entry)`` (a MjSpec) and the file in its folder."""
     import types
 
-    from wmr_mujoco.bench.trials import find_peer
+    from wmr_mujoco.robots.roller_wheels.trials import find_peer
 
     scene = tmp_path / "robot_soccer_kit" / "scene.xml"
     scene.parent.mkdir()
@@ -126,7 +136,7 @@ def test_peer_through_the_package_spec_when_its_handle_has_no_path(tmp_path):
 
 
 def test_peer_order_package_then_variable_then_sibling(tmp_path):
-    from wmr_mujoco.bench.trials import find_peer
+    from wmr_mujoco.robots.roller_wheels.trials import find_peer
 
     files = {}
     for name in ("package", "variable", "sibling"):

@@ -5,7 +5,7 @@ wheel commands from the ideal kinematics ``θ̇ = H ν``. Trials are ordinary ki
 :class:`~wmr_mujoco.validation.scenarios.Scenario` objects, run by the one validation
 runner and judged by the robot's registry entry. A foreign model (the peer) runs through
 the same runner: :func:`peer_spec` wraps its scene file in a
-:class:`~wmr_mujoco.robots.RobotSpec` whose adapter (:class:`ServoOmniKinematics`) reads
+:class:`~wmr_mujoco.validation.spec.RobotSpec` whose adapter (:class:`ServoOmniKinematics`) reads
 the wheel layout from the compiled model and commands its angle (or rate) servos.
 """
 
@@ -25,12 +25,7 @@ import numpy as np
 from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import REPO_ROOT
-from wmr_mujoco.robots import RobotSpec
-from wmr_mujoco.sim.engine import Engine, simulate
-from wmr_mujoco.sim.timing import timed
-from wmr_mujoco.validation.adapters import AdapterFactory, body_pose
-from wmr_mujoco.validation.metrics import Target, Trace, row_value
-from wmr_mujoco.validation.omni_wheels import (
+from wmr_mujoco.robots.roller_wheels import (
     DIRECTIONS_DEG,
     SPEED,
     YAW_RATE,
@@ -40,8 +35,13 @@ from wmr_mujoco.validation.omni_wheels import (
     translation,
     twist_inputs,
 )
+from wmr_mujoco.sim.engine import Engine, simulate
+from wmr_mujoco.sim.timing import timed
+from wmr_mujoco.validation.adapters import AdapterFactory, body_pose
+from wmr_mujoco.validation.metrics import Target, Trace, row_value
 from wmr_mujoco.validation.runner import ScenarioResult, measure, prepare
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
+from wmr_mujoco.validation.spec import RobotSpec
 
 #: Seconds each trial runs after the settle.
 DURATION = 5.0
@@ -222,8 +222,8 @@ class TrialRun:
         return row_value(self.result.rows, metric, unit, float("nan"))
 
 
-def run_trial(s: Scenario, params: RobotParams | None = None) -> TrialRun:
-    """Run one trial through the validation runner, stepping in Python to time it.
+def run_trial(spec: RobotSpec, s: Scenario, params: RobotParams | None = None) -> TrialRun:
+    """Run one trial of ``spec`` through the validation runner, stepping in Python to time it.
 
     The real-time factor is simulated time over the wall time of the step loop alone
     (:func:`wmr_mujoco.sim.engine.simulate`, with its state copies and health checks).
@@ -231,7 +231,7 @@ def run_trial(s: Scenario, params: RobotParams | None = None) -> TrialRun:
     Raises:
         SimulationDivergedError: the run diverged.
     """
-    prep = prepare(s, params)
+    prep = prepare(spec, s, params)
     states: list[np.ndarray] = []
     wall = timed(lambda: states.append(simulate(prep.model, prep.data, prep.controls,
                                                 Engine.LOOP)))

@@ -10,7 +10,7 @@ import pytest
 import wmr_mujoco as wmr
 from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots import ROBOTS, get_spec
-from wmr_mujoco.robots.command import RateCommand, TorqueCommand, servo_rate
+from wmr_mujoco.validation.command import RateCommand, TorqueCommand, servo_rate
 
 
 @pytest.mark.parametrize(("command", "target", "expected"), [

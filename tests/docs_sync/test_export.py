@@ -5,8 +5,8 @@ from pathlib import Path
 import pytest
 
 import wmr_mujoco
+from wmr_mujoco.docs_sync.export import parameter_table, scene_xml
 from wmr_mujoco.docs_sync.markers import has_markers
-from wmr_mujoco.models.export import parameter_table, scene_xml
 from wmr_mujoco.models.paths import README_PATH
 from wmr_mujoco.robots import ROBOTS
 
@@ -55,7 +55,7 @@ def _literal_writers() -> dict[str, set[str]]:
 def test_each_readme_section_has_exactly_one_writer():
     """Two generators writing one section in different forms make ``make models`` and
     ``make study`` undo each other; a section nobody writes goes stale. The parameter
-    tables are :mod:`~wmr_mujoco.models.export`'s (their keys are built from robot names,
+    tables are :mod:`~wmr_mujoco.docs_sync.export`'s (their keys are built from robot names,
     so no literal of them may appear in another writer)."""
     literal = _literal_writers()
     bad = {}
@@ -74,13 +74,12 @@ def test_checked_in_scene_files_are_current(robot):
     assert spec.scene_path.read_text() == scene_xml(spec)
 
 
-def test_readme_class_table_is_current():
+def test_class_table_is_current():
+    from wmr_mujoco.docs_sync.export import CLASS_TABLE_KEY, CLASS_TABLE_PAGE
     from wmr_mujoco.docs_sync.markers import markers
+    from wmr_mujoco.lookup import load
     from wmr_mujoco.models.classify import class_table
-    from wmr_mujoco.models.export import CLASS_TABLE_KEY
-    from wmr_mujoco.models.loading import load
-    from wmr_mujoco.models.paths import README_PATH
 
     begin, end = markers(CLASS_TABLE_KEY)
-    section = README_PATH.read_text().split(begin, 1)[1].split(end, 1)[0].strip()
+    section = CLASS_TABLE_PAGE.read_text().split(begin, 1)[1].split(end, 1)[0].strip()
     assert section == class_table({n: load(n) for n in ROBOTS}), "run `make models`"

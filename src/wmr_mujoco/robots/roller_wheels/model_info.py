@@ -1,17 +1,15 @@
-"""Measurements on omni-wheeled models, for any robot whose wheels carry free rollers.
+"""What a compiled roller-wheeled model says about itself.
+
+Wheel layout, rollers, mass properties, and the analytic models built from them.
 
 The wheel layout is read from a compiled model (:func:`layout_from_model`), so the same
-probes measure this package's models and a foreign (peer) model alike. The probes
-(:class:`RollerRateProbe`, :class:`WheelRateProbe`, :class:`YawRippleProbe`) take an
-:class:`OmniAdapter`: an :class:`~wmr_mujoco.validation.adapters.Adapter` that also
-gives its wheel layout and the body twist its input commands.
+probes measure this package's models and a foreign (peer) model alike.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
-from typing import Protocol, runtime_checkable
+from collections.abc import Sequence
+from dataclasses import dataclass
 
 import mujoco
 import numpy as np
@@ -20,38 +18,8 @@ from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.analytic.omni_hybrid import Drive, OmniHybrid, RollerGeometry
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.colliders import colliders
 from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis, inertia_tensor_about
 from wmr_mujoco.sim.soft_contact import slip_relaxation
-from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose, body_twist
-from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
-from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
-from wmr_mujoco.validation.signals import Signal, const
-
-#: Probes start after this many seconds (ramps done, transients settled).
-STEADY_AFTER = 1.0
-#: Open-loop manoeuvres of omni-wheeled robots: translation directions (degrees in the
-#: body frame), speed (m/s), yaw rate (rad/s) and the ramp from rest (s).
-DIRECTIONS_DEG = tuple(range(0, 360, 45))
-SPEED = 0.3
-YAW_RATE = 1.0
-RAMP = 0.5
-#: Key of the roller-rate target in a robot's target table.
-ROLLER_RATE_PCT = "roller rate error % (median)"
-
-
-@runtime_checkable
-class OmniAdapter(Adapter, Protocol):
-    """An adapter of an omni-wheeled robot."""
-
-    @property
-    def layout(self) -> ok.WheelLayout:
-        """The analytic model's wheel layout."""
-        ...
-
-    def twist(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
-        """Body twist ``ν = (u, v, r)`` commanded by input ``u``."""
-        ...
 
 
 @dataclass(frozen=True)
@@ -258,207 +226,3 @@ def roller_rates(model: mujoco.MjModel, qvel: np.ndarray,
         kids = [b for b in range(model.nbody) if model.body_parentid[b] == wb]
         out.append([qvel[model.jnt_dofadr[model.body_jntadr[b]]] for b in kids])
     return np.asarray(out)
-
-
-@dataclass(frozen=True)
-class OmniDynamicsAdapter:
-    """An omni-wheeled robot under wheel torques: ``x = (X, Y, ψ, u, v, r)``.
-
-    The reduced Lagrange equations
-    (:meth:`~wmr_mujoco.analytic.omni_dynamics.OmniDynamics.state_derivative`) against
-    the ``base`` site's pose and body twist.
-
-    Attributes:
-        dynamics: the reduced model (e.g. from :func:`dynamics_from_model`).
-        wheel_joints: the wheel hinges, in the torques' order.
-        friction: the floor's Coulomb coefficient μ (for traction checks).
-    """
-
-    dynamics: OmniDynamics
-    wheel_joints: tuple[str, ...]
-    friction: float = 1.0
-    mode: ActuationMode = ActuationMode.TORQUE
-    state_names: tuple[str, ...] = ("x", "y", "heading", "u", "v", "r")
-    state_units: tuple[str, ...] = (*POSE_UNITS, "m/s", "m/s", "rad/s")
-    lateral_wheels: tuple[str, ...] = ()
-
-    def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
-        """Torques as given."""
-        return np.asarray(u, float)
-
-    def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
-        """Reduced Lagrange equations with the world pose."""
-        return self.dynamics.state_derivative(x, u)
-
-    def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-        """Pose and body twist of the ``base`` site."""
-        return np.concatenate([base_pose(model, data), body_twist(model, data)])
-
-
-def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelInfo,
-                       slide_speeds: np.ndarray) -> list[float]:
-    """Relative errors ``|ω_r ρ − s| / s`` of the rollers touching the floor now.
-
-    ``s`` is the slide speed along the roller axis at each wheel's contact implied by the
-    commanded twist, ``ρ`` the contact's distance from the roller axis and ``ω_r`` the
-    roller's measured spin rate. Contacts of wheels sliding slower than 1 mm/s are skipped.
-    """
-    if data.ncon == 0:
-        return []
-    wheel_of = np.full(model.nbody, -1)
-    for i, j in enumerate(info.wheel_joints):
-        wheel_of[model.jnt_bodyid[j]] = i
-    g1, g2 = data.contact.geom1[:data.ncon], data.contact.geom2[:data.ncon]
-    geom = np.where(model.geom_bodyid[g1] == 0, g2, g1)
-    body = model.geom_bodyid[geom]
-    wheel = wheel_of[model.body_parentid[body]]
-    roller = (wheel >= 0) & (model.body_jntnum[body] == 1)
-    jnt = model.body_jntadr[body[roller]]
-    axis = data.xaxis[jnt]
-    rel = data.contact.pos[:data.ncon][roller] - data.xanchor[jnt]
-    rho = np.linalg.norm(rel - axis * np.sum(rel * axis, axis=1)[:, None], axis=1)
-    slide = np.abs(np.asarray(slide_speeds, float)[wheel[roller]])
-    omega = np.abs(data.qvel[model.jnt_dofadr[jnt]])
-    keep = (slide >= 1e-3) & (rho >= 1e-6)
-    return (np.abs(omega * rho - slide)[keep] / slide[keep]).tolist()
-
-
-def rolling_radius_profile(model: mujoco.MjModel, wheel_joint: str, roller_prefix: str,
-                           samples: int = 721) -> np.ndarray:
-    """Distance from the wheel axle to the floor-touching point over one revolution.
-
-    Measured on the model's own collision geometry with ``mj_geomDistance`` between the
-    floor and every roller geom (named ``roller_prefix...``), with the wheel axle held
-    horizontal at a fixed height and the wheel turned through 360°.
-
-    Returns:
-        (samples,) rolling radius at wheel angles ``linspace(0, 2π, samples)``.
-    """
-    data = mujoco.MjData(model)
-    floor = model.geom("floor").id
-    jid = model.joint(wheel_joint).id
-    geoms = [g for g in colliders(model) if (model.geom(g).name or "").startswith(roller_prefix)]
-    if not geoms:
-        raise ValueError(f"no collision geoms named {roller_prefix!r}* in the model")
-    fromto = np.zeros(6)
-    out = np.empty(samples)
-    for i, angle in enumerate(np.linspace(0.0, 2.0 * np.pi, samples)):
-        data.qpos[:] = model.qpos0
-        data.qpos[2] += 0.5  # lift the free base clear of the floor
-        data.qpos[model.jnt_qposadr[jid]] = angle
-        mujoco.mj_kinematics(model, data)
-        gap = min(mujoco.mj_geomDistance(model, data, g, floor, 2.0, fromto) for g in geoms)
-        out[i] = data.xanchor[jid][2] - gap
-    return out
-
-
-@dataclass
-class RollerRateProbe:
-    """Contacting rollers' spin rates against slide speed / ρ, after :data:`STEADY_AFTER`."""
-
-    info: OmniModelInfo
-    adapter: OmniAdapter
-    target: Target | None
-    errors: list[float] = field(default_factory=list)
-
-    def observe(self, sample: Sample) -> None:
-        """Errors of the rollers in contact at this step."""
-        if sample.t > STEADY_AFTER:
-            slide = ok.roller_slide_speeds(self.adapter.layout,
-                                           self.adapter.twist(sample.u, sample.x))
-            self.errors += roller_rate_errors(sample.model, sample.data, self.info, slide)
-
-    def metrics(self) -> list[Metric]:
-        """Median (judged) and 95th percentile, in %."""
-        if not self.errors:
-            return []
-        return [Metric("roller rate error (median)", 100.0 * float(np.median(self.errors)),
-                       "%", self.target),
-                Metric("roller rate error (95th percentile)",
-                       100.0 * float(np.percentile(self.errors, 95)), "%")]
-
-
-@dataclass
-class WheelRateProbe:
-    """Measured wheel rates against the commanded ``θ̇ = H ν`` (rate servos only)."""
-
-    wheel_dofs: tuple[int, ...]
-    errors: list[float] = field(default_factory=list)
-
-    def observe(self, sample: Sample) -> None:
-        """``|θ̇ − θ̇_cmd| / |θ̇_cmd|`` at this step, once the commanded rates exceed 0.5."""
-        if sample.t > STEADY_AFTER and np.linalg.norm(sample.ctrl) > 0.5:
-            rates = sample.data.qvel[list(self.wheel_dofs)]
-            self.errors.append(float(np.linalg.norm(rates - sample.ctrl)
-                                     / np.linalg.norm(sample.ctrl)))
-
-    def metrics(self) -> list[Metric]:
-        """RMS relative error, reported."""
-        return [Metric("wheel rate error vs H ν (RMS)", 100.0 * rms(self.errors), "%")
-                ] if self.errors else []
-
-
-@dataclass
-class YawRippleProbe:
-    """Standard deviation of the base's yaw rate over the steady phase, / |commanded|."""
-
-    base_body: int
-    adapter: OmniAdapter
-    rates: list[float] = field(default_factory=list)
-    commanded: list[float] = field(default_factory=list)
-
-    def observe(self, sample: Sample) -> None:
-        """The base's world yaw rate and the commanded one at this step."""
-        if sample.t > STEADY_AFTER:
-            self.rates.append(float(sample.data.cvel[self.base_body][2]))
-            self.commanded.append(float(self.adapter.twist(sample.u, sample.x)[2]))
-
-    def metrics(self) -> list[Metric]:
-        """``std(r) / |r_cmd|`` in %, where a constant yaw rate is commanded."""
-        cmd = np.asarray(self.commanded)
-        if not cmd.size or np.ptp(cmd) > 1e-9 or abs(cmd[0]) < 1e-9:
-            return []
-        return [Metric("yaw-rate ripple", 100.0 * float(np.std(self.rates)) / abs(cmd[0]),
-                       "% of commanded")]
-
-
-def omni_probes(scenario: Scenario, model: mujoco.MjModel, adapter: Adapter,
-                targets: Mapping[str, Target]) -> _OmniProbes | None:
-    """The roller, wheel-rate and yaw-ripple probes of a kinematic omni-wheel run."""
-    if scenario.kind is not ScenarioKind.KINEMATIC or not isinstance(adapter, OmniAdapter):
-        return None
-    info = layout_from_model(model, adapter.wheel_joints)
-    probes: list[RollerRateProbe | WheelRateProbe | YawRippleProbe] = [
-        RollerRateProbe(info, adapter, targets.get(ROLLER_RATE_PCT)),
-        YawRippleProbe(info.base_body, adapter)]
-    if adapter.mode is ActuationMode.RATE:
-        probes.insert(0, WheelRateProbe(tuple(int(model.jnt_dofadr[j])
-                                              for j in info.wheel_joints)))
-    return _OmniProbes(probes)
-
-
-@dataclass
-class _OmniProbes:
-    """Several probes as one."""
-
-    probes: list[RollerRateProbe | WheelRateProbe | YawRippleProbe]
-
-    def observe(self, sample: Sample) -> None:
-        """Pass the sample to each probe."""
-        for p in self.probes:
-            p.observe(sample)
-
-    def metrics(self) -> list[Metric]:
-        """Every probe's metrics, in order."""
-        return [m for p in self.probes for m in p.metrics()]
-
-
-def twist_inputs(twist: tuple[float, float, float], ramp: float = RAMP) -> tuple[Signal, ...]:
-    """Body twist ``(u, v, r)`` inputs, each reached from rest by a linear ramp."""
-    return tuple(const(c, ramp) if c else const(0.0) for c in twist)
-
-
-def translation(deg: float, speed: float = SPEED) -> tuple[float, float, float]:
-    """Body twist ``(s cos α, s sin α, 0)`` of a translation at ``α`` degrees."""
-    a = np.radians(deg)
-    return (speed * float(np.cos(a)), speed * float(np.sin(a)), 0.0)

@@ -27,7 +27,7 @@ import mujoco
 import numpy as np
 from mujoco import rollout
 
-from wmr_mujoco.models.loading import load
+from wmr_mujoco.lookup import load
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.sim.timing import timed
 
@@ -43,16 +43,18 @@ def driving_controls(model: mujoco.MjModel, robot: str) -> np.ndarray:
     Raises:
         ValueError: the robot has no kinematic scenario; the message lists those that do.
     """
+    from wmr_mujoco.robots import ROBOTS
     from wmr_mujoco.validation.runner import make_adapter
-    from wmr_mujoco.validation.scenarios import ScenarioKind, scenarios_for
+    from wmr_mujoco.validation.scenarios import ScenarioKind
 
-    scenario = next((s for s in scenarios_for([robot]) if s.kind is ScenarioKind.KINEMATIC),
-                    None)
+    spec = get_spec(robot)
+    scenario = next((s for s in spec.scenarios if s.kind is ScenarioKind.KINEMATIC), None)
     if scenario is None:
-        valid = [s.robot for s in scenarios_for() if s.kind is ScenarioKind.KINEMATIC]
+        valid = [n for n, sp in ROBOTS.items()
+                 if any(s.kind is ScenarioKind.KINEMATIC for s in sp.scenarios)]
         raise ValueError(f"robot {robot!r} has no kinematic scenario to drive; valid robots: "
-                         f"{', '.join(dict.fromkeys(valid))}")
-    adapter = make_adapter(scenario, model)
+                         f"{', '.join(valid)}")
+    adapter = make_adapter(spec, scenario, model)
     x0 = np.zeros(len(adapter.state_names))
     return np.asarray(adapter.controls(scenario.input_at(scenario.duration), x0))
 
