@@ -185,7 +185,7 @@ def test_validate_scenario_typed_loosely(tmp_path, monkeypatch, capsys):
     chosen = []
 
     def fake_run_all(scenarios, **_):
-        chosen.extend(s.name for s in scenarios)
+        chosen.extend(s.name for _, s in scenarios)
         raise KeyboardInterrupt  # stop before any work
 
     monkeypatch.setattr(runner, "run_all", fake_run_all)

@@ -125,12 +125,13 @@ def test_a_reader_that_goes_away_ends_the_output_quietly(tmp_path):
     assert (proc.returncode, proc.stderr) == (141, "")
 
 
-def test_validate_interrupted_from_a_terminal_leaves_no_file(tmp_path):
-    """Ctrl-C to the whole process group: the worker processes get it too."""
+def test_validate_interrupted_from_a_terminal_leaves_no_file(tmp_path, tmp_path_factory):
+    """Ctrl-C to the whole process group, as a terminal sends it, mid-run."""
     out = tmp_path / "report"
+    log = tmp_path_factory.mktemp("stderr") / "stderr.txt"
     returncode, err = _interrupt(
-        ["validate", "whipple", "disc_free", "--out", str(out), "--quiet"], tmp_path,
-        lambda: bool(list(out.glob(".plots-*/*"))), signal.SIGINT, group=True)
+        ["validate", "whipple", "disc_free", "--out", str(out)], tmp_path,
+        lambda: "[1/" in log.read_text(), signal.SIGINT, group=True, stderr=log)
     assert returncode == 130, err
     assert err.strip().splitlines()[-1] == "wmr validate: interrupted; nothing written"
     assert list(tmp_path.iterdir()) == []

@@ -33,10 +33,10 @@ def test_missing_peer_is_left_out_not_fatal(tmp_path):
 def test_engine_timing_leaves_measurement_scenarios_to_their_own_runs(monkeypatch):
     """The simulation stage times kinematic/dynamic runs; a measurement scenario (which
     has no adapter to prepare) is timed only in the full validation."""
-    import wmr_mujoco.api
+    import wmr_mujoco.lookup
 
     spec = bench.get_spec("disc")
-    monkeypatch.setattr(wmr_mujoco.api, "validation_jobs",
+    monkeypatch.setattr(wmr_mujoco.lookup, "validation_jobs",
                         lambda: [(spec, spec.scenario("torque")),
                                  (spec, spec.scenario("sliding wheel"))])
     res = bench.validation_engines(1)

@@ -45,7 +45,7 @@ def _validate_worst(robot: str, only: Sequence[str] | None = None
     if not scen:
         return None, "no kinematic scenario"
     worst, where = None, ""
-    for res in run_all(scen):
+    for res in run_all([(ROBOTS[robot], s) for s in scen]):
         for r in res.rows:
             if f"{r.metric} {r.unit}" == POSITION_PCT and (worst is None or r.value > worst):
                 worst, where = r.value, r.scenario

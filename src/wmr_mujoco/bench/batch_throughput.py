@@ -70,9 +70,10 @@ def measure(robot: str, backend: str, worlds: int, repeats: int = 3) -> Point:
 
     if worlds < 1 or repeats < 1:
         raise ValueError(f"worlds = {worlds}, repeats = {repeats}; both must be >= 1")
-    scenario = next(s for s in get_spec(robot).scenarios if s.kind is ScenarioKind.KINEMATIC)
+    spec = get_spec(robot)
+    scenario = next(s for s in spec.scenarios if s.kind is ScenarioKind.KINEMATIC)
     steps = int(np.clip(BUDGET[backend] // worlds, MIN_STEPS, MAX_STEPS))
-    prep = prepare(scenario, None)
+    prep = prepare(spec, scenario, None)
     prep.controls = prep.controls[:steps]
     engine = make_backend(backend)
     engine.run([prep] * worlds)  # warm-up (and Warp's kernels)

@@ -287,7 +287,7 @@ def check_traction_limit(torque: object, wheel: WheelDynamics) -> str:
 def omni_dynamics() -> OmniDynamics:
     """omni3's reduced Lagrange model, with M, I_z and I_w read from the compiled model."""
     from wmr_mujoco.robots.omni3.runs import hybrid  # the registry (loads the model)
-    from wmr_mujoco.validation.omni_wheels import lagrange_of
+    from wmr_mujoco.robots.roller_wheels.model_info import lagrange_of
 
     return lagrange_of(hybrid())
 
