@@ -30,6 +30,16 @@ from wmr_mujoco.envs.randomization import Bands
 RENDER_MODES = ("rgb_array", "human")
 
 
+def has_display() -> bool:
+    """Whether a display is set (``DISPLAY`` or ``WAYLAND_DISPLAY``)."""
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+
+
+def render_modes() -> list[str]:
+    """The modes this machine can render: ``"human"`` only with a display."""
+    return ["rgb_array", "human"] if has_display() else ["rgb_array"]
+
+
 class WmrEnv(gym.Env):
     """One robot, one task (see the module docstring and :class:`Episode`).
 
@@ -46,7 +56,7 @@ class WmrEnv(gym.Env):
         height: frame height, pixels.
     """
 
-    metadata: Mapping[str, Any] = {"render_modes": list(RENDER_MODES), "render_fps": 50}
+    metadata: Mapping[str, Any] = {"render_modes": render_modes(), "render_fps": 50}
 
     def __init__(self, robot: str, task: str, mode: str = "command",
                  randomize: bool | Bands = False, task_kwargs: Mapping[str, float] | None = None,
@@ -58,8 +68,7 @@ class WmrEnv(gym.Env):
         for name, px in (("width", width), ("height", height)):
             if not isinstance(px, int) or not 16 <= px <= 4096:
                 raise ValueError(f"{name}={px!r} pixels; valid: an integer in [16, 4096]")
-        if render_mode == "human" and not (os.environ.get("DISPLAY")
-                                           or os.environ.get("WAYLAND_DISPLAY")):
+        if render_mode == "human" and not has_display():
             raise RuntimeError("render_mode='human' needs a display (DISPLAY or "
                                "WAYLAND_DISPLAY is unset); use render_mode='rgb_array'")
         self.episode = Episode(robot, task, mode, randomize, task_kwargs, control_period)

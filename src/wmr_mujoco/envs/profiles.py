@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from wmr_mujoco.envs.randomization import Bands
-from wmr_mujoco.robots import ROBOTS, get_spec
+from wmr_mujoco.robots import get_spec
 
 
 @dataclass(frozen=True)
@@ -58,7 +58,9 @@ DEFAULT = Profile("")
 
 def drivable() -> list[str]:
     """Registered robots that the stepping API can drive (they have actuators)."""
-    return [name for name, spec in ROBOTS.items() if getattr(spec, "command", None) is not None]
+    from wmr_mujoco.drive import drivable as drive_drivable
+
+    return drive_drivable()
 
 
 def profile(robot: str) -> Profile:
