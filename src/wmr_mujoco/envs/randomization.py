@@ -75,11 +75,13 @@ def wheel_geoms(model: mujoco.MjModel, wheels: Sequence[str]) -> list[tuple[int,
     """``(geom id, mask of its size entries that are the radius)`` of each wheel's collider.
 
     Raises:
-        ValueError: a wheel whose colliding geoms are not spheres, cylinders or ellipsoids.
+        ValueError: a wheel whose colliding geoms are not spheres, cylinders or ellipsoids,
+            or that touches the floor through other bodies (rollers).
     """
     out = []
     for name in wheels:
         body = model.jnt_bodyid[model.joint(name).id]
+        n_before = len(out)
         for g in np.flatnonzero(model.geom_bodyid == body):
             if not (model.geom_contype[g] or model.geom_conaffinity[g]):
                 continue
@@ -93,6 +95,10 @@ def wheel_geoms(model: mujoco.MjModel, wheels: Sequence[str]) -> list[tuple[int,
                                  f"{mujoco.mjtGeom(kind).name}; its radius cannot be "
                                  "randomised (set wheel_radius=None)")
             out.append((int(g), mask))
+        if len(out) == n_before:
+            raise ValueError(f"wheel {name!r} has no colliding geom of its own (it rolls on "
+                             "rollers); its radius cannot be randomised (set "
+                             "wheel_radius=None)")
     return out
 
 
