@@ -134,7 +134,7 @@ def test_make_vec(vectorization_mode):
     assert obs.shape == (2, 12)
     assert not np.array_equal(obs[0], obs[1])
     for _ in range(3):
-        obs, reward, term, trunc, info = envs.step(envs.action_space.sample())
+        obs, reward, *_ = envs.step(envs.action_space.sample())
     assert obs.shape == (2, 12) and reward.shape == (2,)
     assert np.all(np.isfinite(obs))
     envs.close()

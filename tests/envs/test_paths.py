@@ -38,7 +38,7 @@ def test_hermite_path_joins_the_two_poses():
     # Heading from finite differences of vertices DS apart: error O(κ DS) ≈ 0.02 rad.
     assert path.heading[path.end_index - 1] == pytest.approx(goal[2], abs=0.05)
     # The run-out continues straight along the goal heading.
-    np.testing.assert_allclose(path.points[-1], goal[:2] + [0.0, 0.5], atol=DS)
+    np.testing.assert_allclose(path.points[-1], goal[:2] + np.array([0.0, 0.5]), atol=DS)
 
 
 def test_projection_cross_track_sign_on_a_straight_path():

@@ -47,7 +47,7 @@ def test_draws_stay_in_their_bands_and_restore():
                                nominal["actuator_biasprm"][:, 2] * factors["servo_gain"])
     ratio = model.body_mass[1:] / nominal["body_mass"][1:]
     assert np.all((ratio >= 1.1 - 1e-12) & (ratio <= 1.2 + 1e-12))
-    (g, mask), _ = wheel_geoms(model, ("left_wheel", "right_wheel"))
+    (g, _mask), _ = wheel_geoms(model, ("left_wheel", "right_wheel"))
     assert model.geom_size[g, 0] == pytest.approx(0.08 * factors["wheel_radius"][0])
     rnd.restore(data)
     for key, value in nominal.items():

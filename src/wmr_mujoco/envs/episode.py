@@ -34,6 +34,9 @@ def check_action(action: Any, n: int) -> np.ndarray:
     Raises:
         ValueError: not numeric, wrong shape, or not finite (before any stepping).
     """
+    if type(action) is np.ndarray and action.shape == (n,) and action.dtype.kind == "f":
+        if np.isfinite(action).all():  # the usual case, checked fast
+            return np.clip(action.astype(float), -1.0, 1.0)
     try:
         a = np.asarray(action, dtype=float)
     except (TypeError, ValueError):

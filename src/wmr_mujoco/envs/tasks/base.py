@@ -32,6 +32,15 @@ class Field:
     unit: str
 
 
+#: Weight of the effort term, ``effort = −EFFORT mean(a²)``.
+EFFORT = 0.01
+
+
+def effort(action: np.ndarray) -> float:
+    """``−EFFORT mean(a²)`` of a normalised action."""
+    return -EFFORT * float(action @ action) / len(action)
+
+
 def wrap(angle: float) -> float:
     """Angle wrapped to ``[-π, π)``, rad."""
     return (angle + math.pi) % (2 * math.pi) - math.pi
@@ -39,8 +48,13 @@ def wrap(angle: float) -> float:
 
 def to_body(pose: np.ndarray, xy: np.ndarray) -> np.ndarray:
     """World points ``xy`` (…, 2) in the body frame of ``pose = (x, y, ψ)``: ``Rᵀ(ψ)(p − p₀)``."""
-    c, s = math.cos(pose[2]), math.sin(pose[2])
-    d = np.asarray(xy, float) - pose[:2]
+    x, y, psi = (float(v) for v in pose[:3])
+    c, s = math.cos(psi), math.sin(psi)
+    xy = np.asarray(xy, float)
+    if xy.ndim == 1:  # one point: plain floats (the environments' hot path)
+        dx, dy = float(xy[0]) - x, float(xy[1]) - y
+        return np.array([c * dx + s * dy, -s * dx + c * dy])
+    d = xy - np.array([x, y])
     return np.stack([c * d[..., 0] + s * d[..., 1], -s * d[..., 0] + c * d[..., 1]], axis=-1)
 
 
@@ -70,7 +84,7 @@ class Task(ABC):
     def sample(self, rng: np.random.Generator) -> np.ndarray:
         """Draw a new episode; return the start pose ``(x, y, ψ)``."""
 
-    def start(self, robot: Any, rng: np.random.Generator) -> None:
+    def start(self, robot: Any, rng: np.random.Generator) -> None:  # noqa: B027
         """Set the robot's initial motion after ``robot.reset`` (default: at rest)."""
 
     @abstractmethod

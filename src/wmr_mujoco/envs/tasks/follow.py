@@ -26,8 +26,8 @@ from typing import Any
 import numpy as np
 
 from wmr_mujoco.envs.paths import Path, Projection, random_path
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options, to_body, wrap
-from wmr_mujoco.envs.tasks.goal import BONUS, EFFORT
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, to_body, wrap
+from wmr_mujoco.envs.tasks.goal import BONUS
 
 #: Look-ahead distances of the observation, in units of the robot's length scale.
 AHEAD = np.array([0.25, 0.5, 0.75, 1.0, 1.5])
@@ -88,7 +88,7 @@ class FollowPath(Task):
         success, failure = self.outcome(state)
         return {"progress": (p.s - s0) / self.scale,
                 "cross_track": -dt * (p.cross_track / self.options["max_deviation"]) ** 2,
-                "effort": -EFFORT * float(np.mean(np.square(action))),
+                "effort": effort(action),
                 "success": BONUS * success, "failure": -BONUS * failure}
 
     def outcome(self, state: Any) -> tuple[bool, bool]:

@@ -25,10 +25,9 @@ from typing import Any
 
 import numpy as np
 
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options, to_body, wrap
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, to_body, wrap
 
 BONUS = 10.0
-EFFORT = 0.01
 
 
 class GoToGoal(Task):
@@ -49,6 +48,7 @@ class GoToGoal(Task):
         self.options = o
         self.time_limit = o["time_limit"]
         self.goal = np.zeros(3)
+        self._cache: tuple[Any, tuple[float, float]] | None = None
 
     def sample(self, rng: np.random.Generator) -> np.ndarray:
         """Goal ahead within ±120°, its heading within ±60° of the bearing (docstring)."""
@@ -58,13 +58,18 @@ class GoToGoal(Task):
         d = rng.uniform(o["min_distance"], o["max_distance"])
         self.goal = np.array([d * math.cos(bearing), d * math.sin(bearing),
                               wrap(bearing + rng.uniform(-math.pi / 3, math.pi / 3))])
+        self._cache = None
         return np.array([0.0, 0.0, heading])
 
     def errors(self, state: Any) -> tuple[float, float]:
         """``(d, e_ψ)``: distance to the goal, m, and heading error, rad."""
-        pose = np.asarray(state.pose)
-        return (float(np.hypot(*(self.goal[:2] - pose[:2]))),
-                wrap(float(self.goal[2] - pose[2])))
+        if self._cache is not None and self._cache[0] is state:
+            return self._cache[1]
+        x, y, psi = state.pose.tolist()
+        gx, gy, gpsi = self.goal.tolist()
+        out = math.hypot(gx - x, gy - y), wrap(gpsi - psi)
+        self._cache = (state, out)
+        return out
 
     def observe(self, state: Any) -> np.ndarray:
         """``(goal_xy, sin e_ψ, cos e_ψ, d)``."""
@@ -82,7 +87,7 @@ class GoToGoal(Task):
         (d0, h0), (d1, h1) = self._potentials(prev), self._potentials(state)
         success, failure = self.outcome(state)
         return {"progress": d1 - d0, "heading": h1 - h0,
-                "effort": -EFFORT * float(np.mean(np.square(action))),
+                "effort": effort(action),
                 "success": BONUS * success, "failure": -BONUS * failure}
 
     def outcome(self, state: Any) -> tuple[bool, bool]:

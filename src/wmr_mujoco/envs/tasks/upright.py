@@ -28,8 +28,8 @@ from typing import Any
 import numpy as np
 
 from wmr_mujoco.analytic import whipple as analytic
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options
-from wmr_mujoco.envs.tasks.goal import BONUS, EFFORT
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort
+from wmr_mujoco.envs.tasks.goal import BONUS
 from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.whipple.rolling import push, roll_steadily
 
@@ -88,7 +88,7 @@ class StayUpright(Task):
         return {"alive": dt,
                 "lean": -dt * (state.extra["lean"] / o["fall_lean"]) ** 2,
                 "speed": -dt * ((float(state.twist[0]) - self.speed) / self.speed) ** 2,
-                "effort": -EFFORT * float(np.mean(np.square(action))),
+                "effort": effort(action),
                 "failure": -BONUS * failure}
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
