@@ -18,7 +18,7 @@ def test_every_drivable_robot_has_its_environments():
 
 # The observations are physical quantities without a hard bound (the Box is ±inf, as in
 # Gymnasium's own MuJoCo environments): check_env's two warnings about that are expected.
-@pytest.mark.filterwarnings("ignore:.*Box observation space m.* infinity")
+@pytest.mark.filterwarnings("ignore:.*Box observation space m.*infinity")
 @pytest.mark.parametrize("env_id", ENV_IDS)
 def test_check_env(env_id):
     env = gym.make(env_id).unwrapped

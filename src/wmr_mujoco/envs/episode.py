@@ -80,8 +80,8 @@ class Episode:
         from wmr_mujoco.drive import make  # the stepping API (application layer)
 
         self.profile = prof
-        self.task: Task = task_class(task)(prof.scale, prof.max_curvature,
-                                           **dict(task_kwargs or {}))
+        options = {**prof.task_options.get(task, {}), **dict(task_kwargs or {})}
+        self.task: Task = task_class(task)(prof.scale, prof.max_curvature, **options)
         self.robot = make(robot, backend="mujoco", mode=mode,
                           control_period=prof.control_period if control_period is None
                           else control_period)

@@ -8,7 +8,8 @@ from the table gets :data:`DEFAULT`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
 
 from wmr_mujoco.envs.randomization import Bands
 from wmr_mujoco.robots import get_spec
@@ -25,6 +26,7 @@ class Profile:
         max_curvature: sharpest turn of a random path, 1/m (within the robot's reach).
         control_period: seconds per environment step.
         bands: domain randomisation bands (:class:`~wmr_mujoco.envs.randomization.Bands`).
+        task_options: per task, defaults of its options that differ for this robot.
     """
 
     stem: str
@@ -33,6 +35,7 @@ class Profile:
     max_curvature: float = 1.0
     control_period: float = 0.02
     bands: Bands = Bands()
+    task_options: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
 
 
 #: Wheels whose rolling radius is set by passive rollers, not one geom: not randomised.
@@ -44,7 +47,10 @@ PROFILES: dict[str, Profile] = {
     "mecanum4": Profile("Mecanum4", scale=1.0, max_curvature=1.5, bands=ROLLER_BANDS),
     "bicycle": Profile("Bicycle", scale=3.0, max_curvature=0.5),
     "tricycle": Profile("Tricycle", scale=1.0, max_curvature=1.0),
-    "single_steer": Profile("SingleSteer", scale=1.0, max_curvature=1.0),
+    # Its yaw is free (a Chaplygin sleigh: the steered wheel's one constraint fixes
+    # neither heading nor yaw rate), so its goal is a position: any heading counts.
+    "single_steer": Profile("SingleSteer", scale=1.0, max_curvature=1.0,
+                            task_options={"GoToGoal": {"heading_tolerance": 4.0}}),
     "double_steer": Profile("DoubleSteer", scale=1.0, max_curvature=1.0),
     "disc": Profile("Disc", scale=1.0, max_curvature=1.0),
     # Knife-edge wheels (no radius band); a balance task at 100 Hz.

@@ -7,8 +7,16 @@ The controller is chosen by the command space's channel names (never by robot na
   ``r = k_ψ e_ψ``. GoToGoal: straight at the goal, ``(u, v) = k_p p_g`` (capped at ``V``).
 * ``(v, omega)`` unicycle: pure pursuit (Coulter 1992) of a look-ahead point ``p_L`` at
   distance ``L_d``: ``κ = 2 y_L / |p_L|²``, ``v = V``, ``ω = V κ``.
-* ``(v, steer)`` car-like: the same ``κ`` through the bicycle's kinematics,
-  ``φ = atan(ℓ κ)`` (``ℓ`` the wheelbase of the robot's parameters).
+* ``(v, steer)`` car-like (parameters with a ``wheelbase`` ℓ): the same ``κ`` through the
+  bicycle's kinematics, ``φ = atan(ℓ κ)``.
+* ``(v, steer)`` with one centred steered wheel (no wheelbase; the yaw is free, a
+  Chaplygin sleigh): steer the wheel at the look-ahead point, ``β = atan2(y_L, x_L)``
+  (clipped to the steering range), ``v = V``; a point behind (``|β| > π/2``) is reached
+  rolling backwards, ``β → β + π``, ``v = −V``. GoToGoal: ``p_L`` is the goal and
+  ``V → min(V, k_p d)``.
+* ``(v, front_steer, rear_steer)``: two steered wheels at ``±h`` along the body, turned
+  symmetrically about the centre, ``δ_f = −δ_r = atan(h κ)``: the centre then moves
+  along the body axis on curvature κ.
 * ``(rear_torque, steer_torque)``-like torques of the Whipple bicycle: discrete LQR on the
   benchmark's linearised equations at the target speed,
   ``x = (φ, δ, φ̇, δ̇)``, ``ẋ = A(v) x + B T_δ``, ``B = [0; M⁻¹ e₂]``,
@@ -53,8 +61,11 @@ class Scripted:
     def __init__(self, episode: Episode) -> None:
         self.ep = episode
         names = tuple(episode.robot.command_space.names)
+        params = (episode.robot.spec.params_type() if episode.robot.spec.params_type
+                  else None)
         self.kind = {("u", "v", "r"): "holonomic", ("v", "omega"): "unicycle",
-                     ("v", "steer"): "carlike"}.get(names)
+                     ("v", "steer"): "carlike" if hasattr(params, "wheelbase") else "wheel",
+                     ("v", "front_steer", "rear_steer"): "double"}.get(names)
         if isinstance(episode.task, StayUpright):
             self.kind = "balance"
         if self.kind is None:
@@ -67,8 +78,10 @@ class Scripted:
         self.path: Path | None = None
         self.index: int | None = None
         if self.kind == "carlike":
-            params = episode.robot.spec.params_type()
             self.wheelbase = float(params.wheelbase)
+        if self.kind == "double":
+            self.wheelbase = float(params.half_wheelbase)
+        self.steer_limit = float(high[1]) if len(high) > 1 else math.pi
         self.gain: np.ndarray | None = None
 
     def reset(self) -> None:
@@ -100,7 +113,19 @@ class Scripted:
         kappa = 2.0 * target[1] / max(float(target @ target), 1e-6)
         if self.kind == "unicycle":
             return np.array([self.speed, self.speed * kappa])
-        return np.array([self.speed, math.atan(self.wheelbase * kappa)])
+        if self.kind == "wheel":
+            speed = self.speed
+            if isinstance(self.ep.task, GoToGoal):  # its goal is a position: head for it
+                target = to_body(pose, self.ep.task.goal[:2])
+                speed = min(speed, K_POSITION * float(np.hypot(*target)))
+            beta, v = math.atan2(target[1], target[0]), speed
+            if abs(beta) > math.pi / 2:  # the point is behind: roll the wheel backwards
+                beta, v = wrap(beta + math.pi), -v
+            return np.array([v, min(self.steer_limit, max(-self.steer_limit, beta))])
+        delta = math.atan(self.wheelbase * kappa)
+        if self.kind == "double":
+            return np.array([self.speed, delta, -delta])
+        return np.array([self.speed, delta])
 
     def _holonomic_goal(self, state: Any) -> np.ndarray:
         pose = np.asarray(state.pose, float)
