@@ -3,6 +3,7 @@ import numpy as np
 import pytest
 
 import wmr_mujoco
+from wmr_mujoco.envs.profiles import drivable, profile
 from wmr_mujoco.envs.randomization import Bands, Randomizer, wheel_geoms
 
 
@@ -68,3 +69,36 @@ def test_roller_wheels_refuse_a_radius_band():
     with pytest.raises(ValueError, match="wheel_radius=None"):
         Randomizer(model, Bands(), ("wheel1",))
     Randomizer(model, Bands(wheel_radius=None), ("wheel1",))
+
+
+class _Extremes(np.random.Generator):
+    """A generator whose wheel-radius draw puts the first wheel at ``first`` and the
+    others at ``rest`` (every other draw as usual)."""
+
+    def __init__(self, band, first, rest):
+        super().__init__(np.random.PCG64(0))
+        self.band, self.first, self.rest = band, first, rest
+
+    def uniform(self, low=0.0, high=1.0, size=None):
+        if (low, high) == self.band and size is not None:
+            return np.array([self.first] + [self.rest] * (size - 1))
+        return super().uniform(low, high, size)
+
+
+@pytest.mark.parametrize("robot", [r for r in drivable() if profile(r).bands.wheel_radius])
+def test_wheels_touch_the_floor_at_the_ends_of_the_radius_band(robot):
+    # Each wheel's radius is drawn on its own: with the first wheel at one end of the band
+    # and the others at the other end, the robot settles so that every wheel still touches
+    # the floor (a chassis that cannot pitch or heave would lift a wheel off).
+    from wmr_mujoco.envs import WmrEnv
+
+    band = profile(robot).bands.wheel_radius
+    for first, rest in (band, band[::-1]):
+        env = WmrEnv(robot, profile(robot).tasks[0],
+                     randomize=Bands(friction=None, mass=None, wheel_radius=band,
+                                     servo_gain=None))
+
+        env.episode.reset(_Extremes(band, first, rest))
+        for _ in range(10):
+            env.step(np.zeros(env.action_space.shape))
+        assert env.episode.state.wheel_contacts.all(), (robot, first, rest)

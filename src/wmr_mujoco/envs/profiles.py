@@ -45,7 +45,10 @@ PROFILES: dict[str, Profile] = {
     "diffdrive": Profile("DiffDrive", scale=1.0, max_curvature=1.5),
     "omni3": Profile("Omni3", scale=0.5, max_curvature=3.0, bands=ROLLER_BANDS),
     "mecanum4": Profile("Mecanum4", scale=1.0, max_curvature=1.5, bands=ROLLER_BANDS),
-    "bicycle": Profile("Bicycle", scale=3.0, max_curvature=0.5),
+    # Planar model: its joints hold the frame level (no pitch), so wheels of different
+    # radii would lift one of them off the floor (test_randomization checks the others).
+    "bicycle": Profile("Bicycle", scale=3.0, max_curvature=0.5,
+                       bands=Bands(wheel_radius=None)),
     "tricycle": Profile("Tricycle", scale=1.0, max_curvature=1.0),
     # Its yaw is free (a Chaplygin sleigh: the steered wheel's one constraint fixes
     # neither heading nor yaw rate), so its goal is a position: any heading counts.
