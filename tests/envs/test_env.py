@@ -138,3 +138,19 @@ def test_make_vec(vectorization_mode):
     assert obs.shape == (2, 12) and reward.shape == (2,)
     assert np.all(np.isfinite(obs))
     envs.close()
+
+
+README_EXAMPLE = """
+import gymnasium as gym
+import wmr_mujoco.envs  # registers wmr/<Robot>-<Task>-v0 for every robot with actuators
+env = gym.make("wmr/DiffDrive-GoToGoal-v0", render_mode="rgb_array", randomize=True)
+obs, info = env.reset(seed=0)
+obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+"""
+
+
+def test_readme_example_runs_as_written():
+    scope = {}
+    exec(compile(README_EXAMPLE, "README", "exec"), scope)
+    assert scope["obs"].shape == (12,) and set(scope["info"]["reward_terms"]) >= {"progress"}
+    scope["env"].close()
