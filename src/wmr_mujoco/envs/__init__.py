@@ -37,8 +37,7 @@ def register_all() -> list[str]:
             name = env_id(robot, task)
             if name not in gym.registry:
                 gym.register(name, entry_point="wmr_mujoco.envs.env:WmrEnv",
-                             kwargs={"robot": robot, "task": task},
-                             disable_env_checker=False)
+                             kwargs={"robot": robot, "task": task})
             ids.append(name)
     return ids
 

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from wmr_mujoco.drive import make
 from wmr_mujoco.envs.profiles import Profile, profile
 from wmr_mujoco.envs.randomization import Bands, Randomizer
 from wmr_mujoco.envs.tasks import Field, Task, task_class
@@ -77,8 +78,6 @@ class Episode:
             raise ValueError(f"unknown mode {mode!r}; valid modes: {', '.join(MODES)}")
         if not isinstance(randomize, (bool, Bands)):
             raise TypeError(f"randomize={randomize!r}: give True, False or a Bands")
-        from wmr_mujoco.drive import make  # the stepping API (application layer)
-
         self.profile = prof
         options = {**prof.task_options.get(task, {}), **dict(task_kwargs or {})}
         self.task: Task = task_class(task)(prof.scale, prof.max_curvature, **options)

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
+from wmr_mujoco import drive
 from wmr_mujoco.envs.randomization import Bands
 from wmr_mujoco.robots import get_spec
 
@@ -67,9 +68,7 @@ DEFAULT = Profile("")
 
 def drivable() -> list[str]:
     """Registered robots that the stepping API can drive (they have actuators)."""
-    from wmr_mujoco.drive import drivable as drive_drivable
-
-    return drive_drivable()
+    return drive.drivable()
 
 
 def profile(robot: str) -> Profile:
