@@ -124,6 +124,11 @@ def test_randomization_is_off_by_default_and_seeded_when_on():
     f3 = env.reset(seed=2)[1]["randomization"]["friction"]
     assert f1 == f2 != f3 and 0.5 <= f1[0] <= 0.6
     assert env.robot.model.geom_friction[0, 0] == pytest.approx(f3[0])
+    mapped = WmrEnv("diffdrive", "GoToGoal", randomize={"friction": (0.5, 0.6), "mass": None})
+    drawn = mapped.reset(seed=1)[1]["randomization"]
+    assert drawn["friction"] == f1 and "mass" not in drawn and "servo_gain" in drawn
+    with pytest.raises(ValueError, match="physical range"):
+        WmrEnv("diffdrive", "GoToGoal", randomize={"friction": (0.0, 0.6)})
 
 
 @pytest.mark.parametrize("vectorization_mode", ["sync", "async"])

@@ -48,7 +48,8 @@ class WmrEnv(gym.Env):
         task: ``"GoToGoal"``, ``"FollowPath"`` or ``"StayUpright"`` (as the robot offers).
         mode: ``"command"`` (natural command, normalised) or ``"wheels"`` (raw wheel
             commands, normalised).
-        randomize: domain randomisation (False, True: the robot's bands, or a Bands).
+        randomize: domain randomisation (False; True: the robot's bands; a Bands, or a
+            mapping of bands replacing the robot's).
         task_kwargs: the task's options.
         control_period: s per step (None: the robot's profile).
         render_mode: None, ``"rgb_array"`` or ``"human"``.
@@ -59,7 +60,8 @@ class WmrEnv(gym.Env):
     metadata: Mapping[str, Any] = {"render_modes": render_modes(), "render_fps": 50}
 
     def __init__(self, robot: str, task: str, mode: str = "command",
-                 randomize: bool | Bands = False, task_kwargs: Mapping[str, float] | None = None,
+                 randomize: bool | Bands | Mapping = False,
+                 task_kwargs: Mapping[str, float] | None = None,
                  control_period: float | None = None, render_mode: str | None = None,
                  width: int = 480, height: int = 360) -> None:
         if render_mode is not None and render_mode not in RENDER_MODES:

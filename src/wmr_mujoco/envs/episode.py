@@ -23,7 +23,7 @@ import numpy as np
 
 from wmr_mujoco.drive import make
 from wmr_mujoco.envs.profiles import Profile, profile
-from wmr_mujoco.envs.randomization import Bands, Randomizer
+from wmr_mujoco.envs.randomization import Band, Bands, Randomizer
 from wmr_mujoco.envs.tasks import Field, Task, task_class
 
 MODES = ("command", "wheels")
@@ -59,7 +59,8 @@ class Episode:
         task: task name (one of the robot's profile's tasks).
         mode: ``"command"`` (natural command) or ``"wheels"`` (raw wheel commands).
         randomize: apply the robot's randomisation bands at each reset (True), bands of
-            your own (a :class:`Bands`), or none (False, the default).
+            your own (a :class:`Bands`, or a mapping of bands that replace the robot's,
+            e.g. ``{"friction": (0.5, 1.0)}``), or none (False, the default).
         task_kwargs: the task's options (see its docstring).
         control_period: s per step (None: the robot's profile).
 
@@ -68,7 +69,8 @@ class Episode:
     """
 
     def __init__(self, robot: str, task: str, mode: str = "command",
-                 randomize: bool | Bands = False, task_kwargs: Mapping[str, float] | None = None,
+                 randomize: bool | Bands | Mapping[str, Band | None] = False,
+                 task_kwargs: Mapping[str, float] | None = None,
                  control_period: float | None = None) -> None:
         prof: Profile = profile(robot)
         if task not in prof.tasks:
@@ -76,8 +78,11 @@ class Episode:
                              f"{', '.join(prof.tasks)}")
         if mode not in MODES:
             raise ValueError(f"unknown mode {mode!r}; valid modes: {', '.join(MODES)}")
+        if isinstance(randomize, Mapping):
+            randomize = prof.bands.replace(**randomize)
         if not isinstance(randomize, (bool, Bands)):
-            raise TypeError(f"randomize={randomize!r}: give True, False or a Bands")
+            raise TypeError(f"randomize={randomize!r}: give True, False, a Bands or a mapping "
+                            "of bands")
         self.profile = prof
         options = {**prof.task_options.get(task, {}), **dict(task_kwargs or {})}
         self.task: Task = task_class(task)(prof.scale, prof.max_curvature, **options)
