@@ -10,18 +10,26 @@ actuators, :mod:`wmr_mujoco.drive`) and task of its profile
     env = gym.make("wmr/DiffDrive-GoToGoal-v0")
     obs, info = env.reset(seed=0)
 
-Needs the optional extra ``rl`` (``pip install wmr-mujoco[rl]``: gymnasium).
+Needs the optional extra ``rl`` (``pip install wmr-mujoco[rl]``: gymnasium). Without it the
+tasks and the dm_control suite (:mod:`wmr_mujoco.suite`) still work; ``WmrEnv`` then
+raises ImportError naming the extra.
 """
 
 from __future__ import annotations
 
-import gymnasium as gym
+from typing import Any
 
-from wmr_mujoco.envs.env import WmrEnv
 from wmr_mujoco.envs.profiles import drivable, profile
 from wmr_mujoco.envs.randomization import Bands
 
-__all__ = ["ENV_IDS", "Bands", "WmrEnv", "env_id", "register_all"]
+try:
+    import gymnasium as gym
+except ModuleNotFoundError:  # the optional extra is not installed
+    gym = None
+
+__all__ = ["ENV_IDS", "Bands", "WmrEnv", "env_id", "profile", "register_all"]
+
+MISSING = "Gymnasium is not installed; install the extra: pip install 'wmr-mujoco[rl]'"
 
 
 def env_id(robot: str, task: str) -> str:
@@ -30,7 +38,13 @@ def env_id(robot: str, task: str) -> str:
 
 
 def register_all() -> list[str]:
-    """Register every (robot, task) pair not yet registered; return all their ids."""
+    """Register every (robot, task) pair not yet registered; return all their ids.
+
+    Raises:
+        ImportError: Gymnasium is not installed.
+    """
+    if gym is None:
+        raise ImportError(MISSING)
     ids = []
     for robot in drivable():
         for task in profile(robot).tasks:
@@ -42,5 +56,15 @@ def register_all() -> list[str]:
     return ids
 
 
-#: Every registered environment id.
-ENV_IDS: tuple[str, ...] = tuple(register_all())
+#: Every registered environment id (empty without Gymnasium).
+ENV_IDS: tuple[str, ...] = tuple(register_all()) if gym is not None else ()
+
+
+def __getattr__(name: str) -> Any:
+    if name == "WmrEnv":
+        if gym is None:
+            raise ImportError(MISSING)
+        from wmr_mujoco.envs.env import WmrEnv
+
+        return WmrEnv
+    raise AttributeError(f"module 'wmr_mujoco.envs' has no attribute {name!r}")
