@@ -36,8 +36,9 @@ def check_action(action: Any, n: int) -> np.ndarray:
         ValueError: not numeric, wrong shape, or not finite (before any stepping).
     """
     if type(action) is np.ndarray and action.shape == (n,) and action.dtype.kind == "f":
-        if np.isfinite(action).all():  # the usual case, checked fast
-            return np.clip(action.astype(float), -1.0, 1.0)
+        a = action.astype(float)
+        if np.isfinite(a).all():  # the usual case, checked fast
+            return np.minimum(np.maximum(a, -1.0, out=a), 1.0, out=a)
     try:
         a = np.asarray(action, dtype=float)
     except (TypeError, ValueError):
@@ -155,9 +156,13 @@ class Episode:
 
     def observe(self) -> np.ndarray:
         """The observation vector (float32; module docstring)."""
-        s = self.state
-        return np.concatenate([self.task.observe(s), s.twist, s.wheel_rates,
-                               self.last_action]).astype(np.float32)
+        s, out = self.state, np.empty(self.size, np.float32)
+        k = self.task.size
+        out[:k] = self.task.observe(s)
+        out[k:k + 3] = s.twist
+        out[k + 3:self.size - self.n_action] = s.wheel_rates
+        out[self.size - self.n_action:] = self.last_action
+        return out
 
     def describe(self) -> str:
         """The observation's blocks with their units, one per line."""
