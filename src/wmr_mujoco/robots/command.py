@@ -82,7 +82,6 @@ class CommandMap(abc.ABC):
         """The command-to-controls map of one compiled model (indices looked up once)."""
 
 
-
 @dataclass(frozen=True)
 class Servo:
     """A command channel that is a steering angle, servoed through a rate input.
