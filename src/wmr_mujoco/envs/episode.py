@@ -1,0 +1,169 @@
+"""One robot and one task stepped together: the core shared by Gymnasium and dm_control.
+
+:class:`Episode` owns a driven robot (:func:`wmr_mujoco.drive.make`, MuJoCo backend), a
+:class:`~wmr_mujoco.envs.tasks.Task` and optional domain randomisation. Actions are the
+robot's command normalised to ``[-1, 1]`` per channel,
+
+    command = c + h a,   c = (high + low) / 2,   h = (high − low) / 2,
+
+(``a`` clipped to ``[-1, 1]``). The observation is the task's block followed by the
+robot's own:
+
+* ``twist`` (3, m/s, m/s, rad/s): body-frame ``(u, v, r)``;
+* ``wheel_rates`` (one per wheel, rad/s);
+* ``last_action`` (one per command channel, 1): the previous normalised action.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from wmr_mujoco.drive import make
+from wmr_mujoco.envs.profiles import Profile, profile
+from wmr_mujoco.envs.randomization import Band, Bands, Randomizer
+from wmr_mujoco.envs.tasks import Field, Task, task_class
+
+MODES = ("command", "wheels")
+
+
+def check_action(action: Any, n: int) -> np.ndarray:
+    """``action`` as a float array of shape ``(n,)``, clipped to ``[-1, 1]``.
+
+    Raises:
+        ValueError: not numeric, wrong shape, or not finite (before any stepping).
+    """
+    if type(action) is np.ndarray and action.shape == (n,) and action.dtype.kind == "f":
+        a = action.astype(float)
+        if np.isfinite(a).all():  # the usual case, checked fast
+            return np.minimum(np.maximum(a, -1.0, out=a), 1.0, out=a)
+    try:
+        a = np.asarray(action, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"action {action!r} is not numeric; expected {n} numbers in "
+                         "[-1, 1]") from None
+    if a.shape != (n,):
+        raise ValueError(f"action has shape {a.shape}; expected ({n},) in [-1, 1]")
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"action {a.tolist()} is not finite; expected {n} finite numbers "
+                         "in [-1, 1]")
+    return np.clip(a, -1.0, 1.0)
+
+
+class Episode:
+    """A robot, a task, and the bookkeeping of one episode (module docstring).
+
+    Args:
+        robot: registry name of a drivable robot.
+        task: task name (one of the robot's profile's tasks).
+        mode: ``"command"`` (natural command) or ``"wheels"`` (raw wheel commands).
+        randomize: apply the robot's randomisation bands at each reset (True), bands of
+            your own (a :class:`Bands`, or a mapping of bands that replace the robot's,
+            e.g. ``{"friction": (0.5, 1.0)}``), or none (False, the default).
+        task_kwargs: the task's options (see its docstring).
+        control_period: s per step (None: the robot's profile).
+
+    Raises:
+        ValueError: unknown robot, task, mode or option; the message lists valid ones.
+    """
+
+    def __init__(self, robot: str, task: str, mode: str = "command",
+                 randomize: bool | Bands | Mapping[str, Band | None] = False,
+                 task_kwargs: Mapping[str, float] | None = None,
+                 control_period: float | None = None) -> None:
+        prof: Profile = profile(robot)
+        if task not in prof.tasks:
+            raise ValueError(f"robot {robot!r} has no task {task!r}; its tasks: "
+                             f"{', '.join(prof.tasks)}")
+        if mode not in MODES:
+            raise ValueError(f"unknown mode {mode!r}; valid modes: {', '.join(MODES)}")
+        if isinstance(randomize, Mapping):
+            randomize = prof.bands.replace(**randomize)
+        if not isinstance(randomize, (bool, Bands)):
+            raise TypeError(f"randomize={randomize!r}: give True, False, a Bands or a mapping "
+                            "of bands")
+        self.profile = prof
+        options = {**prof.task_options.get(task, {}), **dict(task_kwargs or {})}
+        self.task: Task = task_class(task)(prof.scale, prof.max_curvature, **options)
+        self.robot = make(robot, backend="mujoco", mode=mode,
+                          control_period=prof.control_period if control_period is None
+                          else control_period)
+        space = self.robot.command_space
+        self.center = (space.high + space.low) / 2
+        self.half = (space.high - space.low) / 2
+        self.bands = prof.bands if randomize is True else (randomize or None)
+        self.randomizer = (Randomizer(self.robot.model, self.bands, self.robot.wheel_names)
+                           if self.bands is not None else None)
+        self.n_action = space.shape[0]
+        self.fields: tuple[Field, ...] = (
+            *self.task.fields, Field("twist (u, v, r)", 3, "m/s, m/s, rad/s"),
+            Field("wheel_rates", len(self.robot.wheel_names), "rad/s"),
+            Field("last_action", self.n_action, "1"))
+        self.size = sum(f.size for f in self.fields)
+        self.dt = self.robot.control_period
+        self.state: Any = None
+        self.last_action = np.zeros(self.n_action)
+        self.factors: dict[str, np.ndarray] = {}
+
+    def reset(self, rng: np.random.Generator) -> np.ndarray:
+        """Draw the episode (randomisation, task), reset the robot; the first observation."""
+        if self.randomizer is not None:
+            self.factors = self.randomizer.apply(rng, self.robot.data)
+        start = self.task.sample(rng)
+        self.state = self.robot.reset(pose=start, seed=int(rng.integers(2**31)))
+        self.task.start(self.robot, rng)
+        if self.robot.data is not None and hasattr(self.robot, "reader"):
+            # The task may have set the robot in motion: read the state again.
+            self.state = self.robot.reader.read(self.robot.data, 0.0, float(start[2]))
+        self.last_action = np.zeros(self.n_action)
+        return self.observe()
+
+    def command(self, action: np.ndarray) -> np.ndarray:
+        """The robot command of a (checked, clipped) normalised action."""
+        return self.center + self.half * action
+
+    def action(self, command: np.ndarray) -> np.ndarray:
+        """The normalised action of a robot command (the inverse of :meth:`command`)."""
+        return (np.asarray(command, float) - self.center) / np.where(self.half > 0,
+                                                                      self.half, 1.0)
+
+    def step(self, action: Any) -> tuple[np.ndarray, float, bool, bool, dict]:
+        """One control period: ``(observation, reward, terminated, truncated, info)``.
+
+        Raises:
+            ValueError: bad action (:func:`check_action`), before stepping.
+            RuntimeError: no reset yet.
+            SimulationDivergedError: the physics diverged.
+        """
+        if self.state is None:
+            raise RuntimeError("call reset() before step()")
+        a = check_action(action, self.n_action)
+        prev = self.state
+        self.state = self.robot.step(self.command(a))
+        self.last_action = a
+        terms = dict(self.task.reward_terms(prev, self.state, a, self.dt))
+        success, failure = self.task.outcome(self.state)
+        truncated = (not (success or failure)
+                     and float(self.state.time) >= self.task.time_limit - 1e-9)
+        if truncated:
+            success = self.task.succeeded_at_time_limit(self.state)
+        info = {"reward_terms": terms, "is_success": bool(success), "failed": bool(failure),
+                "time": float(self.state.time)}
+        return (self.observe(), float(sum(terms.values())), bool(success or failure)
+                and not truncated, truncated, info)
+
+    def observe(self) -> np.ndarray:
+        """The observation vector (float32; module docstring)."""
+        s, out = self.state, np.empty(self.size, np.float32)
+        k = self.task.size
+        out[:k] = self.task.observe(s)
+        out[k:k + 3] = s.twist
+        out[k + 3:self.size - self.n_action] = s.wheel_rates
+        out[self.size - self.n_action:] = self.last_action
+        return out
+
+    def describe(self) -> str:
+        """The observation's blocks with their units, one per line."""
+        return "\n".join(f"{f.name} ({f.size}): {f.unit}" for f in self.fields)
