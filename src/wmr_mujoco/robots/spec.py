@@ -97,6 +97,9 @@ class RobotSpec(Generic[P]):
         scene_extras: ``(scene root, params) -> None``, elements that name the scene's
             geoms (contact pairs with the ``floor``), added after the floor in the built
             and the checked-in scene (None: nothing).
+        command_range: per kinematic input, the largest magnitude a user commands (the
+            range of the random stepped inputs, :mod:`wmr_mujoco.bench.floor_runs`; None:
+            the largest its kinematic scenarios command).
     """
 
     name: str
@@ -119,6 +122,7 @@ class RobotSpec(Generic[P]):
     clips: tuple[Clip, ...] = (Clip(),)
     peer: PeerComparison | None = None
     scene_extras: Callable[[mjcf.RootElement, P], None] | None = None
+    command_range: tuple[float, ...] | None = None
 
     def __post_init__(self) -> None:
         names = [s.name for s in self.scenarios]
