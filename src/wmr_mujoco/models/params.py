@@ -101,6 +101,13 @@ def _check_types(obj: Any) -> None:
             raise ValueError(f"{type(obj).__name__}.{f.name} = {getattr(obj, f.name)!r} {why}")
 
 
+def _check_floor_pair(obj: Any) -> None:
+    """``floor_impedance`` 0 or in [1e-4, 0.01]; ``floor_impratio`` in [1, 1e6]."""
+    if obj.floor_impedance != 0.0:
+        _check_range(obj, "floor_impedance", 1e-4, 0.01, low_inclusive=True)
+    _check_range(obj, "floor_impratio", 1.0, 1e6, low_inclusive=True)
+
+
 def _check_positive_fields(obj: Any, exclude: tuple[str, ...] = ()) -> None:
     """Check every field's type, then that each number field not in ``exclude`` is > 0."""
     _check_types(obj)
@@ -475,6 +482,13 @@ class OmniParams:
         roller_damping: viscous damping of each roller joint, N·m·s/rad.
         drive: actuator settings (no steering).
         sim: simulation settings.
+        floor_impedance: 0 (contact bits, the collision class's contact) or, in
+            [1e-4, 0.01], the impedance ``d`` of explicit roller-floor pairs with the
+            disc's remedy for a sliding contact that lifts its wheel
+            (``docs/floor-contact.md``; the hybrid model reads the geoms' contact, so the
+            remedy is an option, not the default).
+        floor_impratio: ``impratio`` while ``floor_impedance`` > 0 (replaces
+            ``sim.impratio``), in [1, 1e6]: gripping friction stays stiff.
     """
 
     wheel_radius: float = 0.05
@@ -493,6 +507,8 @@ class OmniParams:
     drive: DriveParams = DriveParams(wheel_kv=2.0, wheel_armature=0.004,
                                      wheel_torque_limit=1.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.001, contact_timeconst=0.002)
+    floor_impedance: float = 0.0
+    floor_impratio: float = 1e4
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
@@ -501,7 +517,8 @@ class OmniParams:
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("roller_armature", "roller_damping",
                                               "row_offset_ratio",
-                                              "rollers_per_row"))
+                                              "rollers_per_row", "floor_impedance"))
+        _check_floor_pair(self)
         _check_range(self, "roller_armature", 0.0, 1e-3, low_inclusive=True)
         _check_range(self, "roller_damping", 0.0, 1e-2, low_inclusive=True)
         _check_range(self, "roller_thickness", 0.05, 0.8)

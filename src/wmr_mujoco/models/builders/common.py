@@ -98,6 +98,39 @@ def contact_pair_kwargs(sim: SimParams) -> dict:
             "margin": 0.0, "gap": 0.0}
 
 
+def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:
+    """A floor pair's attributes with the disc's remedy for a sliding soft contact.
+
+    A frictional contact in its cone state pushes its geom off the floor by
+    ``μ d B_f s`` for slip ``s`` (impedance ``d``, friction reference damping ``B_f``)
+    against the weight's ``(1 − d) g`` (``docs/rolling-disc.md`` § 8,
+    ``docs/floor-contact.md``). For ``impedance`` > 0 the pair of
+    :func:`contact_pair_kwargs` gets
+
+    * ``solimp`` ``d0 = d_width = impedance``: the push ``μ d s / Δt`` stays under ``g``
+      for slips up to ``g Δt / (μ d)``;
+    * ``solreffriction`` ``B_f = 1/Δt`` in MuJoCo's direct form ``(0, −B_f d)`` (MuJoCo
+      divides it by ``d_width``): gripping friction still removes a slip within one step.
+
+    The normal row keeps its ``solref`` (MuJoCo scales ``B`` and ``K`` by ``1/d``, so its
+    time constant and damping do not change); the weight then rests
+    ``(1 − d) g t_c²`` deep. ``impedance`` 0 returns :func:`contact_pair_kwargs` unchanged.
+
+    Raises:
+        ValueError: an impedance that is neither 0 nor in [1e-4, 0.95].
+    """
+    kwargs = contact_pair_kwargs(sim)
+    if impedance == 0.0:
+        return kwargs
+    if not (1e-4 <= impedance <= CONTACT_SOLIMP[0]):
+        raise ValueError(f"impedance = {impedance!r}; valid: 0 (the geoms' contact) or "
+                         f"[1e-4, {CONTACT_SOLIMP[0]}]")
+    d = float(impedance)
+    kwargs["solimp"] = (d, d, *CONTACT_SOLIMP[2:])
+    kwargs["solreffriction"] = (0.0, -d / sim.timestep)
+    return kwargs
+
+
 def add_roller_default(root: mjcf.RootElement, sim: SimParams, damping: float,
                        armature: float) -> mjcf.Element:
     """The ``roller`` default class of passive rollers on free hinges (omni and mecanum).

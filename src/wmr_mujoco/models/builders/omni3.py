@@ -138,6 +138,32 @@ def _add_wheel(platform: mjcf.Element, root: mjcf.RootElement, params: OmniParam
     common.add_wheel_actuator(root, name, p.drive, joint=joint)
 
 
+def roller_collider_names(params: OmniParams) -> list[str]:
+    """Names of every roller collider, wheel by wheel and row by row, as :func:`build` names them."""
+    return [f"wheel{i + 1}_roller{row}{k}_collision" for i in range(3) for row in range(2)
+            for k in range(params.rollers_per_row)]
+
+
+def floor_pairs(scene: mjcf.RootElement, params: OmniParams, plain: bool = False) -> None:
+    """With ``floor_impedance`` > 0, a contact pair of every roller collider with the floor.
+
+    A ``scene_extras``: the contact set contact bits give (the rollers touch the floor
+    only), each pair with the remedy of
+    :func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs`; cheaper, since the
+    broadphase then bounds no roller body. ``plain=True`` gives the collision class's
+    contact instead (the same physics as the bits; what the cost study times). With
+    ``floor_impedance`` 0 the rollers keep their contact bits, which
+    :func:`~wmr_mujoco.validation.omni_wheels.hybrid_from_model` reads the rollers and
+    their contact from.
+    """
+    if params.floor_impedance == 0.0 and not plain:
+        return
+    kwargs = (common.contact_pair_kwargs(params.sim) if plain
+              else common.sliding_pair_kwargs(params.sim, params.floor_impedance))
+    for name in roller_collider_names(params):
+        scene.contact.add("pair", geom1="floor", geom2=name, **kwargs)
+
+
 def build(params: OmniParams) -> mjcf.RootElement:
     """Three-omni-wheel platform on a free joint.
 
@@ -153,7 +179,12 @@ def build(params: OmniParams) -> mjcf.RootElement:
     p = params
     r = p.wheel_radius
     root = common.new_root("omni3", p.sim)
-    common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
+    roller = common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
+    if p.floor_impedance > 0.0:
+        # No contact bits: the scene's explicit pairs (floor_pairs) make the roller
+        # contacts, and the broadphase skips the 36 roller bodies.
+        roller.geom.conaffinity = 0
+        root.option.impratio = p.floor_impratio
     if p.roller_shape == "barrel":
         root.asset.add("mesh", name="barrel", vertex=barrel_vertices(p).ravel())
     platform = root.worldbody.add("body", name="platform", pos=(0, 0, r))
