@@ -123,8 +123,7 @@ def settled(robot: str, params: RobotParams | None = None,
 
 
 def drive(run: Settled, inputs: np.ndarray, period: float) -> FloorReading:
-    """From the settled state, hold each row of ``inputs`` for ``period`` s, reading every
-    step.
+    """From the settled state, hold each row of ``inputs`` for ``period`` s; read each step.
 
     The analytic state that an adapter's controls may depend on (a steering angle) is
     read from the physics at each period's start, as a controller would read it.
@@ -186,8 +185,10 @@ def floor_figures(robot: str, step_count: int, random_seeds: tuple[int, ...],
                   seed: int = 0, params: RobotParams | None = None,
                   setup: Setup | None = None,
                   random_duration: float = RANDOM_DURATION) -> FloorFigures:
-    """Both families for ``robot``: ``step_count`` steps (seeded ``seed``) and one random
-    stepped run per seed of ``random_seeds``.
+    """Both families for ``robot``: steps from rest and random stepped runs.
+
+    ``step_count`` steps (seeded ``seed``) and one random stepped run per seed of
+    ``random_seeds``.
 
     Raises:
         ValueError: an unknown robot, a robot without kinematic scenarios, or bad counts.

@@ -139,7 +139,7 @@ def _add_wheel(platform: mjcf.Element, root: mjcf.RootElement, params: OmniParam
 
 
 def roller_collider_names(params: OmniParams) -> list[str]:
-    """Names of every roller collider, wheel by wheel and row by row, as :func:`build` names them."""
+    """Names of every roller collider, wheel by wheel and row by row (as :func:`build`)."""
     return [f"wheel{i + 1}_roller{row}{k}_collision" for i in range(3) for row in range(2)
             for k in range(params.rollers_per_row)]
 
