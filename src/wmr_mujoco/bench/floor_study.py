@@ -90,7 +90,10 @@ def _settings(robot: str) -> list[tuple[str, RobotParams | None]]:
     spec = get_spec(robot)
     out: list[tuple[str, RobotParams | None]] = [("default", None)]
     ptype = spec.params_type
-    if ptype is not None and "floor_impedance" in {f.name for f in dataclasses.fields(ptype)}:
+    # A row with the remedy where the robot has it as an option, off by default.
+    defaults = ({f.name: f.default for f in dataclasses.fields(ptype)}
+                if ptype is not None else {})
+    if defaults.get("floor_impedance") == 0.0:
         out.append((f"floor pairs d={REMEDY_IMPEDANCE:g}, impratio {REMEDY_IMPRATIO:g}",
                     ptype(floor_impedance=REMEDY_IMPEDANCE, floor_impratio=REMEDY_IMPRATIO)))
     return out
