@@ -119,3 +119,29 @@ def test_visual_geoms_leave_the_physics_bit_identical(robot):
             mujoco.mj_step(model, data)
         runs.append(np.concatenate([data.qpos, data.qvel]))
     np.testing.assert_array_equal(runs[0], runs[1])
+
+
+def test_sliding_pair_kwargs_is_the_disc_remedy():
+    # d0 = d_width = d; friction damping B_f = 1/Δt in MuJoCo's direct form (0, −B_f d);
+    # the rest of the pair is the collision class's (docs/rolling-disc.md § 8).
+    from wmr_mujoco.models.builders.common import contact_pair_kwargs, sliding_pair_kwargs
+    from wmr_mujoco.models.params import SimParams
+
+    sim = SimParams(timestep=0.004, contact_timeconst=0.008)
+    kw = sliding_pair_kwargs(sim, 0.002)
+    assert kw["solimp"][:2] == (0.002, 0.002)
+    assert kw["solreffriction"] == (0.0, -0.002 / 0.004)
+    plain = contact_pair_kwargs(sim)
+    for key in ("condim", "friction", "solref", "margin", "gap"):
+        assert kw[key] == plain[key]
+    assert sliding_pair_kwargs(sim, 0.0) == plain
+
+
+def test_sliding_pair_kwargs_names_a_bad_impedance():
+    import pytest
+
+    from wmr_mujoco.models.builders.common import sliding_pair_kwargs
+    from wmr_mujoco.models.params import SimParams
+
+    with pytest.raises(ValueError, match="impedance"):
+        sliding_pair_kwargs(SimParams(), 2.0)
