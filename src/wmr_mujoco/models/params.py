@@ -485,8 +485,8 @@ class OmniParams:
         floor_impedance: 0 (contact bits, the collision class's contact) or, in
             [1e-4, 0.01], the impedance ``d`` of explicit roller-floor pairs with the
             disc's remedy for a sliding contact that lifts its wheel
-            (``docs/floor-contact.md``; the hybrid model reads the geoms' contact, so the
-            remedy is an option, not the default).
+            (``docs/floor-contact.md``; an option, not the default: the hybrid model's
+            hand-over terms are derived for the collision class's impedance).
         floor_impratio: ``impratio`` while ``floor_impedance`` > 0 (replaces
             ``sim.impratio``), in [1, 1e6]: gripping friction stays stiff.
     """
