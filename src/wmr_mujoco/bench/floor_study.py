@@ -14,15 +14,17 @@ every 0.1 s) and prints, and pastes between the ``floor contact`` markers of
   MuJoCo keeps each contact's time constant at least twice the step), the settings timed
   in alternating rounds of one run, median of the rounds.
 
-Robots with a ``floor_impedance`` parameter (omni3, mecanum4) get a second row with the
-disc's remedy (:func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs`) at
-:data:`REMEDY_IMPEDANCE` and :data:`REMEDY_IMPRATIO`. ``--quick`` judges fewer draws and
+Robots with a ``floor_impedance`` parameter off by default (omni3, mecanum4) get a second
+row with the disc's remedy (:func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs`)
+at :data:`REMEDY_IMPEDANCE` and :data:`REMEDY_IMPRATIO`, at the longest step whose
+contact rests within the depth bound (:func:`remedy_timestep`). ``--quick`` judges fewer draws and
 shorter runs, and its table says so.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import math
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -40,6 +42,7 @@ from wmr_mujoco.bench.floor_runs import (
     settled,
 )
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
+from wmr_mujoco.models.builders.common import SLIDING_STEPS
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import REPO_ROOT
 from wmr_mujoco.robots import ROBOTS, get_spec
@@ -54,12 +57,15 @@ STEP_BOUND_PCT = 1.0
 RANDOM_BOUND_PCT = 0.1
 DEPTH_BOUND_MM = 0.5
 #: The remedy's impedance: the disc's. Its push ``μ d s/Δt`` stays under g up to a slip of
-#: ``g Δt/(μ d)``, 9.8 m/s at omni3's 1 ms step and μ = 1, above the largest slip a
-#: wheel at its rate limit can have against a platform at full speed the other way,
-#: ``2 r ω_max`` = 6 m/s (docs/floor-contact.md).
+#: ``g Δt/(μ d)``, above the largest slip a wheel at its rate limit can have against a
+#: platform at full speed the other way, ``2 r ω_max`` (docs/floor-contact.md).
 REMEDY_IMPEDANCE = 0.001
 #: The remedy's impratio: the disc's (gripping friction stiff, ``impratio · d ≫ 1``).
 REMEDY_IMPRATIO = 1e4
+#: Gravity, m/s².
+GRAVITY = 9.81
+#: Grid of the remedy's timestep, s.
+STEP_GRID = 0.0005
 #: Timestep multiples timed.
 STEP_FACTORS = (1, 2, 4)
 
@@ -94,9 +100,25 @@ def _settings(robot: str) -> list[tuple[str, RobotParams | None]]:
     defaults = ({f.name: f.default for f in dataclasses.fields(ptype)}
                 if ptype is not None else {})
     if defaults.get("floor_impedance") == 0.0:
-        out.append((f"floor pairs d={REMEDY_IMPEDANCE:g}, impratio {REMEDY_IMPRATIO:g}",
-                    ptype(floor_impedance=REMEDY_IMPEDANCE, floor_impratio=REMEDY_IMPRATIO)))
+        sim = defaults["sim"]
+        dt = remedy_timestep(sim.timestep)
+        params = ptype(floor_impedance=REMEDY_IMPEDANCE, floor_impratio=REMEDY_IMPRATIO,
+                       sim=dataclasses.replace(sim, timestep=dt))
+        out.append((f"floor pairs d={REMEDY_IMPEDANCE:g}, impratio {REMEDY_IMPRATIO:g}, "
+                    f"step {1e3 * dt:g} ms", params))
     return out
+
+
+def remedy_timestep(timestep: float) -> float:
+    """The longest step (0.5 ms grid, at most ``timestep``) whose sliding pair rests in bound.
+
+    The remedy's contact rests ``(1 − d) g t_c²`` deep with ``t_c`` =
+    :data:`~wmr_mujoco.models.builders.common.SLIDING_STEPS` ``· Δt``, so
+    ``Δt ≤ √(depth / ((1 − d) g)) / SLIDING_STEPS``.
+    """
+    bound = math.sqrt(DEPTH_BOUND_MM * 1e-3 / ((1.0 - REMEDY_IMPEDANCE) * GRAVITY))
+    longest = bound / SLIDING_STEPS
+    return min(timestep, math.floor(longest / STEP_GRID) * STEP_GRID)
 
 
 def _schedule(run: Settled, inputs: np.ndarray) -> np.ndarray:

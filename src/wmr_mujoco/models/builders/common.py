@@ -98,6 +98,11 @@ def contact_pair_kwargs(sim: SimParams) -> dict:
             "margin": 0.0, "gap": 0.0}
 
 
+#: Time constant of a sliding pair's contact in steps (:func:`sliding_pair_kwargs`): above
+#: the largest normal-mode gain λ of the roller robots (2.2), the bound of stability.
+SLIDING_STEPS = 3
+
+
 def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:
     """A floor pair's attributes with the disc's remedy for a sliding soft contact.
 
@@ -112,9 +117,17 @@ def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:
     * ``solreffriction`` ``B_f = 1/Δt`` in MuJoCo's direct form ``(0, −B_f d)`` (MuJoCo
       divides it by ``d_width``): gripping friction still removes a slip within one step.
 
-    The normal row keeps its ``solref`` (MuJoCo scales ``B`` and ``K`` by ``1/d``, so its
-    time constant and damping do not change); the weight then rests
-    ``(1 − d) g t_c²`` deep. ``impedance`` 0 returns :func:`contact_pair_kwargs` unchanged.
+    * ``solref`` time constant ``t_c = max(sim.contact_timeconst,`` :data:`SLIDING_STEPS`
+      ``· Δt)``. With ``d`` small a contact is a spring-damper (MuJoCo scales ``B`` and
+      ``K`` by ``1/d``) whose gain on the body is ``λ = eig(A (A + R)⁻¹)/d`` over the
+      normal rows; its damping ``2 λ/t_c`` is integrated explicitly, so it is stable only
+      while ``λ < t_c/Δt``. MuJoCo's diagonal estimate in ``R`` undercounts the coupled
+      inverse inertia of several wheels on one body: ``λ`` reaches 1.4 for omni3 and 2.2
+      for mecanum4 at rest (``tests/models/builders/test_common.py`` computes it), above
+      the 2 of the usual ``t_c = 2 Δt``.
+
+    The weight then rests ``(1 − d) g t_c²`` deep. ``impedance`` 0 returns
+    :func:`contact_pair_kwargs` unchanged.
 
     Raises:
         ValueError: an impedance that is neither 0 nor in [1e-4, 0.95].
@@ -127,6 +140,7 @@ def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:
                          f"[1e-4, {CONTACT_SOLIMP[0]}]")
     d = float(impedance)
     kwargs["solimp"] = (d, d, *CONTACT_SOLIMP[2:])
+    kwargs["solref"] = (max(sim.contact_timeconst, SLIDING_STEPS * sim.timestep), 1.0)
     kwargs["solreffriction"] = (0.0, -d / sim.timestep)
     return kwargs
 

@@ -183,10 +183,11 @@ def build(params: OmniParams) -> mjcf.RootElement:
     if p.floor_impedance > 0.0:
         # The scene's explicit pairs (floor_pairs) make the roller contacts (MuJoCo skips
         # a geom pair's bit contact where a <pair> names it). The rollers keep their bits
-        # and take the pairs' solimp, because the hybrid model
+        # and take the pairs' solimp and solref, because the hybrid model
         # (validation.omni_wheels.hybrid_from_model) finds the rollers and reads their
         # contact from the geoms; so the broadphase still bounds the roller bodies.
-        roller.geom.solimp = common.sliding_pair_kwargs(p.sim, p.floor_impedance)["solimp"]
+        pair = common.sliding_pair_kwargs(p.sim, p.floor_impedance)
+        roller.geom.solimp, roller.geom.solref = pair["solimp"], pair["solref"]
         root.option.impratio = p.floor_impratio
     if p.roller_shape == "barrel":
         root.asset.add("mesh", name="barrel", vertex=barrel_vertices(p).ravel())
