@@ -83,7 +83,7 @@ class Settled:
         model, data: the physics (``data`` is reset to ``state`` before every run).
         adapter: its kinematic adapter.
         wheels: its wheel map.
-        state: the settled full-physics state (``mjSTATE_FULLPHYSICS``).
+        state: the settled state with warm start and controls (``mjSTATE_INTEGRATION``).
     """
 
     model: mujoco.MjModel
@@ -93,7 +93,7 @@ class Settled:
     state: np.ndarray
 
 
-STATE = mujoco.mjtState.mjSTATE_FULLPHYSICS
+STATE = mujoco.mjtState.mjSTATE_INTEGRATION
 
 
 def settled(robot: str, params: RobotParams | None = None,

@@ -121,24 +121,25 @@ def remedy_timestep(timestep: float) -> float:
     return min(timestep, math.floor(longest / STEP_GRID) * STEP_GRID)
 
 
-def _schedule(run: Settled, inputs: np.ndarray) -> np.ndarray:
-    """Controls of each period, from the settled state (open loop, for timing)."""
-    x = np.asarray(run.adapter.sim_state(run.model, run.data), float)
-    return np.array([run.adapter.controls(u, x) for u in inputs])
+def _loop(run: Settled, inputs: np.ndarray, factor: int, seconds: float) -> float:
+    """Wall time, s, of ``seconds`` of the run of ``drive`` at ``factor`` × the step.
 
+    The same controls as :func:`~wmr_mujoco.bench.floor_runs.drive`, without its reading.
 
-def _loop(run: Settled, ctrl: np.ndarray, factor: int, seconds: float) -> float:
-    """Wall time of bare ``mj_step`` calls over ``seconds`` at ``factor`` × the step, s."""
-    m, d = run.model, run.data
+    Raises:
+        SimulationDivergedError: the run diverged.
+    """
+    m, ad = run.model, run.adapter
+    d = mujoco.MjData(m)  # fresh: nothing of an earlier (diverged) run carries over
     base = m.opt.timestep
     m.opt.timestep = factor * base
     try:
         mujoco.mj_setState(m, d, run.state, STATE)
+        mujoco.mj_forward(m, d)
         per = max(1, round(CONTROL_PERIOD / m.opt.timestep))
-        n = round(seconds / CONTROL_PERIOD)
         start = time.perf_counter()
-        for c in ctrl[:n]:
-            d.ctrl[:] = c
+        for u in inputs[:round(seconds / CONTROL_PERIOD)]:
+            d.ctrl[:] = ad.controls(u, np.asarray(ad.sim_state(m, d), float))
             for _ in range(per):
                 mujoco.mj_step(m, d)
         wall = time.perf_counter() - start
@@ -153,14 +154,13 @@ def real_time_factors(robot: str, params: RobotParams | None, draws: Draws,
     """Real-time factor at each timestep multiple (NaN where the run diverged)."""
     run = settled(robot, params)
     inputs = random_steps(command_bounds(robot), draws.timed, draws.seeds[0])
-    ctrl = _schedule(run, inputs)
     walls: dict[int, list[float]] = {f: [] for f in factors}
     for _ in range(draws.rounds):
         for f in factors:
             if walls[f] and not np.isfinite(walls[f][0]):
                 continue
             try:
-                walls[f].append(_loop(run, ctrl, f, draws.timed))
+                walls[f].append(_loop(run, inputs, f, draws.timed))
             except SimulationDivergedError:
                 walls[f].append(float("nan"))
     return [draws.timed / float(np.median(walls[f])) for f in factors]
