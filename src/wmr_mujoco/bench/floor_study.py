@@ -103,9 +103,10 @@ def _settings(robot: str) -> list[tuple[str, RobotParams | None]]:
         sim = defaults["sim"]
         dt = remedy_timestep(sim.timestep)
         params = ptype(floor_impedance=REMEDY_IMPEDANCE, floor_impratio=REMEDY_IMPRATIO,
-                       sim=dataclasses.replace(sim, timestep=dt))
+                       sim=dataclasses.replace(sim, timestep=dt,
+                                               contact_timeconst=SLIDING_STEPS * dt))
         out.append((f"floor pairs d={REMEDY_IMPEDANCE:g}, impratio {REMEDY_IMPRATIO:g}, "
-                    f"step {1e3 * dt:g} ms", params))
+                    f"step {1e3 * dt:g} ms, t_c {1e3 * SLIDING_STEPS * dt:g} ms", params))
     return out
 
 
