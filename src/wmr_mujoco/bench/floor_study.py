@@ -16,7 +16,7 @@ every 0.1 s) and prints, and pastes between the ``floor contact`` markers of
 
 Robots with a ``floor_impedance`` parameter off by default (omni3, mecanum4) get a second
 row with the disc's remedy (:func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs`)
-at :data:`REMEDY_IMPEDANCE` and :data:`REMEDY_IMPRATIO`, at the longest step whose
+at :data:`REMEDY_IMPEDANCE`, at the longest step whose
 contact rests within the depth bound (:func:`remedy_timestep`). ``--quick`` judges fewer draws and
 shorter runs, and its table says so.
 """
@@ -42,7 +42,7 @@ from wmr_mujoco.bench.floor_runs import (
     settled,
 )
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
-from wmr_mujoco.models.builders.common import SLIDING_STEPS
+from wmr_mujoco.models.builders.common import SLIDING_STEPS, sliding_impratio
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import REPO_ROOT
 from wmr_mujoco.robots import ROBOTS, get_spec
@@ -60,8 +60,6 @@ DEPTH_BOUND_MM = 0.5
 #: ``g Δt/(μ d)``, above the largest slip a wheel at its rate limit can have against a
 #: platform at full speed the other way, ``2 r ω_max`` (docs/floor-contact.md).
 REMEDY_IMPEDANCE = 0.001
-#: The remedy's impratio: the disc's (gripping friction stiff, ``impratio · d ≫ 1``).
-REMEDY_IMPRATIO = 1e4
 #: Gravity, m/s².
 GRAVITY = 9.81
 #: Grid of the remedy's timestep, s.
@@ -102,10 +100,11 @@ def _settings(robot: str) -> list[tuple[str, RobotParams | None]]:
     if defaults.get("floor_impedance") == 0.0:
         sim = defaults["sim"]
         dt = remedy_timestep(sim.timestep)
-        params = ptype(floor_impedance=REMEDY_IMPEDANCE, floor_impratio=REMEDY_IMPRATIO,
+        params = ptype(floor_impedance=REMEDY_IMPEDANCE,
                        sim=dataclasses.replace(sim, timestep=dt,
                                                contact_timeconst=SLIDING_STEPS * dt))
-        out.append((f"floor pairs d={REMEDY_IMPEDANCE:g}, impratio {REMEDY_IMPRATIO:g}, "
+        out.append((f"floor pairs d={REMEDY_IMPEDANCE:g}, impratio "
+                    f"{sliding_impratio(REMEDY_IMPEDANCE):g}, "
                     f"step {1e3 * dt:g} ms, t_c {1e3 * SLIDING_STEPS * dt:g} ms", params))
     return out
 

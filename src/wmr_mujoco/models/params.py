@@ -102,10 +102,9 @@ def _check_types(obj: Any) -> None:
 
 
 def _check_floor_pair(obj: Any) -> None:
-    """``floor_impedance`` 0 or in [1e-4, 0.01]; ``floor_impratio`` in [1, 1e6]."""
+    """``floor_impedance`` 0 or in [1e-4, 0.01]."""
     if obj.floor_impedance != 0.0:
         _check_range(obj, "floor_impedance", 1e-4, 0.01, low_inclusive=True)
-    _check_range(obj, "floor_impratio", 1.0, 1e6, low_inclusive=True)
 
 
 def _check_positive_fields(obj: Any, exclude: tuple[str, ...] = ()) -> None:
@@ -487,8 +486,6 @@ class OmniParams:
             disc's remedy for a sliding contact that lifts its wheel
             (``docs/floor-contact.md``; an option, not the default: the hybrid model's
             hand-over terms are derived for the collision class's impedance).
-        floor_impratio: ``impratio`` while ``floor_impedance`` > 0 (replaces
-            ``sim.impratio``), in [1, 1e6]: gripping friction stays stiff.
     """
 
     wheel_radius: float = 0.05
@@ -508,7 +505,6 @@ class OmniParams:
                                      wheel_torque_limit=1.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.001, contact_timeconst=0.002)
     floor_impedance: float = 0.0
-    floor_impratio: float = 1e4
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.

@@ -65,8 +65,6 @@ class MecanumParams:
         floor_impedance: impedance ``d`` of the roller-floor pairs: 0 (the collision
             class's contact) or [1e-4, 0.01], the disc's remedy for a sliding contact that
             lifts its wheel (``docs/floor-contact.md``).
-        floor_impratio: ``impratio`` while ``floor_impedance`` > 0 (replaces
-            ``sim.impratio``), in [1, 1e6]: gripping friction stays stiff.
 
     Bounds, physical: ``wheel_radius`` at most
     :data:`~wmr_mujoco.models.params.MAX_WHEEL_RADIUS` = 2.5 m and ``hub_mass`` at most
@@ -101,7 +99,6 @@ class MecanumParams:
         wheel_kv=2.0, wheel_armature=0.004, wheel_torque_limit=3.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
     floor_impedance: float = 0.0
-    floor_impratio: float = 1e4
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
     SOLVERS = ("Newton", "PGS", "CG")

@@ -183,3 +183,16 @@ def test_sliding_steps_exceed_the_normal_gain_of_the_roller_robots():
     gains = {r: _normal_gain(r, _settings(r)[1][1]) for r in ("omni3", "mecanum4")}
     assert gains["mecanum4"] > 2.0, gains
     assert max(gains.values()) < SLIDING_STEPS, gains
+
+
+def test_sliding_impratio_keeps_impratio_times_d():
+    # impratio · d is the friction rows' stiffness gain (docs/rolling-disc.md § 8): the
+    # disc's product, 1e4 · 0.001, at any d.
+    import pytest
+
+    from wmr_mujoco.models.builders.common import sliding_impratio
+
+    assert sliding_impratio(0.001) * 0.001 == pytest.approx(1e4 * 0.001)
+    assert sliding_impratio(0.005) * 0.005 == pytest.approx(1e4 * 0.001)
+    with pytest.raises(ValueError, match="impedance"):
+        sliding_impratio(0.0)

@@ -145,9 +145,9 @@ def test_remedy_pairs_carry_the_derived_impedance_and_friction_damping():
     from wmr_mujoco.models.builders import common
     from wmr_mujoco.models.loading import build_scene
 
-    p = OmniParams(floor_impedance=0.002, floor_impratio=5e3)
+    p = OmniParams(floor_impedance=0.002)
     model = mujoco.MjModel.from_xml_string(common.to_xml(build_scene("omni3", p)))
-    assert model.opt.impratio == 5e3
+    assert model.opt.impratio == pytest.approx(common.SLIDING_GRIP / 0.002)
     np.testing.assert_array_equal(model.pair_solimp[:, :2], 0.002)
     # MuJoCo's direct form (0, −B_f d) with B_f = 1/Δt (docs/rolling-disc.md § 8).
     np.testing.assert_allclose(model.pair_solreffriction[:, 1], -0.002 / p.sim.timestep)

@@ -98,9 +98,27 @@ def contact_pair_kwargs(sim: SimParams) -> dict:
             "margin": 0.0, "gap": 0.0}
 
 
+#: ``impratio · d`` of a sliding pair's model (:func:`sliding_impratio`): the disc's
+#: (``DiscParams``: impratio 1e4 at d = 0.001).
+SLIDING_GRIP = 10.0
 #: Time constant of a sliding pair's contact in steps (:func:`sliding_pair_kwargs`): above
 #: the largest normal-mode gain λ of the roller robots (2.2), the bound of stability.
 SLIDING_STEPS = 3
+
+
+def sliding_impratio(impedance: float) -> float:
+    """``impratio`` of a model whose floor pairs have ``impedance`` d: ``SLIDING_GRIP / d``.
+
+    A friction row's regulariser is the normal row's ``(1 − d)/d`` times its diagonal,
+    over ``impratio``; gripping friction stays stiff while ``impratio · d · A_t/A_n ≫ 1``
+    (``docs/rolling-disc.md`` § 8), so ``impratio`` scales as ``1/d``.
+
+    Raises:
+        ValueError: an impedance outside (0, 1].
+    """
+    if not (0.0 < impedance <= 1.0):
+        raise ValueError(f"impedance = {impedance!r}; valid range is (0, 1]")
+    return SLIDING_GRIP / impedance
 
 
 def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:

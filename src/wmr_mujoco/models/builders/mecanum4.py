@@ -190,7 +190,7 @@ def build(params: MecanumParams) -> mjcf.RootElement:
     root = common.new_root("mecanum4", p.sim)
     root.option.solver = p.solver
     if p.floor_impedance > 0.0:
-        root.option.impratio = p.floor_impratio
+        root.option.impratio = common.sliding_impratio(p.floor_impedance)
     roller = common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
     roller.joint.frictionloss = 0.0
     # No contact bits: the scene's explicit pairs (floor_pairs) make the roller contacts,

@@ -188,7 +188,7 @@ def build(params: OmniParams) -> mjcf.RootElement:
         # contact from the geoms; so the broadphase still bounds the roller bodies.
         pair = common.sliding_pair_kwargs(p.sim, p.floor_impedance)
         roller.geom.solimp, roller.geom.solref = pair["solimp"], pair["solref"]
-        root.option.impratio = p.floor_impratio
+        root.option.impratio = common.sliding_impratio(p.floor_impedance)
     if p.roller_shape == "barrel":
         root.asset.add("mesh", name="barrel", vertex=barrel_vertices(p).ravel())
     platform = root.worldbody.add("body", name="platform", pos=(0, 0, r))
