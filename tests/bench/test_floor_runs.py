@@ -30,13 +30,16 @@ def test_the_disc_keeps_its_wheel_down_under_steps():
     assert f.random_worst == 0.0
 
 
-def test_the_remedy_cuts_omni3s_lift_after_steps():
-    # The push falls from 2 μ s / t_c (the collision class) to μ d s / Δt, a factor
-    # 2 Δt / (d t_c) = 1000 at d = 0.001: the wheels of the plain pairs lift after steps
-    # (the artifact kept in view), the remedy's at least ten times less often.
+def test_the_remedy_keeps_omni3s_wheels_down():
+    # The push falls from 2 μ s / t_c (the collision class) to μ d s / Δt, under g for
+    # every slip a wheel can have (docs/floor-contact.md): the plain contact's wheels lift
+    # after steps (the artifact kept in view), the remedy's meet issue 24's bounds: at
+    # most 1 % of wheel samples off after steps, 0.1 % over random steps, 0.5 mm deep.
     plain = floor_figures("omni3", 4, (1,), params=OmniParams(floor_impedance=0.0),
                           random_duration=1.0)
     remedy = floor_figures("omni3", 4, (1,), params=OmniParams(floor_impedance=0.001),
-                           random_duration=1.0)
+                           random_duration=2.0)
     assert plain.steps.off_floor_share > 0.05
-    assert remedy.steps.off_floor_share < 0.1 * plain.steps.off_floor_share
+    assert remedy.step_worst <= 0.01
+    assert remedy.random_worst <= 0.001
+    assert remedy.max_depth <= 0.5e-3
