@@ -18,6 +18,7 @@ from wmr_mujoco.models.params import (
     SimParams,
     _check_choice,
     _check_count,
+    _check_floor_pair,
     _check_positive_fields,
     _check_range,
     _check_types,
@@ -61,6 +62,9 @@ class MecanumParams:
             measures both.
         drive: actuator settings (no steering).
         sim: simulation settings.
+        floor_impedance: impedance ``d`` of the roller-floor pairs: 0 (the collision
+            class's contact) or [1e-4, 0.01], the disc's remedy for a sliding contact that
+            lifts its wheel (``docs/floor-contact.md``).
 
     Bounds, physical: ``wheel_radius`` at most
     :data:`~wmr_mujoco.models.params.MAX_WHEEL_RADIUS` = 2.5 m and ``hub_mass`` at most
@@ -94,6 +98,7 @@ class MecanumParams:
     drive: DriveParams = DriveParams(
         wheel_kv=2.0, wheel_armature=0.004, wheel_torque_limit=3.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
+    floor_impedance: float = 0.0
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
     SOLVERS = ("Newton", "PGS", "CG")
@@ -105,7 +110,9 @@ class MecanumParams:
         _check_range(self, "wheel_radius", 0.0, MAX_WHEEL_RADIUS)
         _check_range(self, "hub_mass", 0.0, MAX_WHEEL_MASS)
         _check_positive_fields(self, exclude=("roller_armature", "roller_damping",
-                                              "rollers_per_wheel", "roller_overlap"))
+                                              "rollers_per_wheel", "roller_overlap",
+                                              "floor_impedance"))
+        _check_floor_pair(self)
         _check_range(self, "roller_armature", 0.0, 1e-3, low_inclusive=True)
         _check_range(self, "roller_damping", 0.0, 1e-2, low_inclusive=True)
         _check_range(self, "roller_angle", math.pi / 12.0, 5.0 * math.pi / 12.0,

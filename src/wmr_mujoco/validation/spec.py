@@ -100,6 +100,9 @@ class RobotSpec(Generic[P]):
             and the checked-in scene (None: nothing).
         command: how the robot is driven step by step (:mod:`wmr_mujoco.drive`): its
             natural command space and wheels (None: it cannot be driven, no actuators).
+        command_range: per kinematic input, the largest magnitude a user commands (the
+            range of the random stepped inputs, :mod:`wmr_mujoco.bench.floor_runs`; None:
+            the largest its kinematic scenarios command).
     """
 
     name: str
@@ -123,6 +126,7 @@ class RobotSpec(Generic[P]):
     peer: PeerComparison | None = None
     scene_extras: Callable[[mjcf.RootElement, P], None] | None = None
     command: CommandMap | None = None
+    command_range: tuple[float, ...] | None = None
 
     def __post_init__(self) -> None:
         names = [s.name for s in self.scenarios]

@@ -119,3 +119,80 @@ def test_visual_geoms_leave_the_physics_bit_identical(robot):
             mujoco.mj_step(model, data)
         runs.append(np.concatenate([data.qpos, data.qvel]))
     np.testing.assert_array_equal(runs[0], runs[1])
+
+
+def test_sliding_pair_kwargs_is_the_disc_remedy():
+    # d0 = d_width = d; friction damping B_f = 1/Δt in MuJoCo's direct form (0, −B_f d);
+    # the rest of the pair is the collision class's (docs/rolling-disc.md § 8).
+    from wmr_mujoco.models.builders.common import contact_pair_kwargs, sliding_pair_kwargs
+    from wmr_mujoco.models.params import SimParams
+
+    sim = SimParams(timestep=0.004, contact_timeconst=0.008)
+    kw = sliding_pair_kwargs(sim, 0.002)
+    assert kw["solimp"][:2] == (0.002, 0.002)
+    assert kw["solreffriction"] == (0.0, -0.002 / 0.004)
+    assert kw["solref"] == (3 * 0.004, 1.0)  # SLIDING_STEPS · Δt, above 2 Δt
+    plain = contact_pair_kwargs(sim)
+    for key in ("condim", "friction", "margin", "gap"):
+        assert kw[key] == plain[key]
+    assert sliding_pair_kwargs(sim, 0.0) == plain
+
+
+def test_sliding_pair_kwargs_names_a_bad_impedance():
+    import pytest
+
+    from wmr_mujoco.models.builders.common import sliding_pair_kwargs
+    from wmr_mujoco.models.params import SimParams
+
+    with pytest.raises(ValueError, match="impedance"):
+        sliding_pair_kwargs(SimParams(), 2.0)
+
+
+def _normal_gain(robot: str, params) -> float:
+    """Largest eigenvalue of the normal rows' gain ``A (A + R)⁻¹ / d`` at rest."""
+    import mujoco
+    import numpy as np
+
+    from wmr_mujoco.bench.floor_runs import settled
+
+    run = settled(robot, params)
+    m, d = run.model, run.data
+    m.opt.jacobian = mujoco.mjtJacobian.mjJAC_DENSE
+    mujoco.mj_forward(m, d)
+    n = d.nefc
+    jac = np.array(d.efc_J[:n * m.nv]).reshape(n, m.nv)
+    minv_jt = np.zeros((n, m.nv))
+    mujoco.mj_solveM(m, d, minv_jt, jac)
+    a = jac @ minv_jt.T
+    gain = a @ np.linalg.inv(a + np.diag(d.efc_R[:n]))
+    imp = np.array(d.efc_KBIP).reshape(-1, 4)[:n, 2]
+    rows = np.flatnonzero(d.efc_type[:n] == mujoco.mjtConstraint.mjCNSTR_CONTACT_ELLIPTIC)
+    normal = rows[::3]  # condim 3: normal, then two friction rows
+    return float(np.max(np.linalg.eigvals(gain[np.ix_(normal, normal)] / imp[normal]).real))
+
+
+def test_sliding_steps_exceed_the_normal_gain_of_the_roller_robots():
+    # Stability of a soft (d ≪ 1) contact's explicit damping needs λ < t_c/Δt; the usual
+    # t_c = 2Δt is not enough for mecanum4 (λ > 2: it diverged in the study), and
+    # SLIDING_STEPS must exceed λ of every remedy setting the floor study measures (at
+    # mecanum4's own 4 ms step it rests twice as deep, on more rollers, and λ ≈ 5: that
+    # step is not one of them, docs/floor-contact.md).
+    from wmr_mujoco.bench.floor_study import _settings
+    from wmr_mujoco.models.builders.common import SLIDING_STEPS
+
+    gains = {r: _normal_gain(r, _settings(r)[1][1]) for r in ("omni3", "mecanum4")}
+    assert gains["mecanum4"] > 2.0, gains
+    assert max(gains.values()) < SLIDING_STEPS, gains
+
+
+def test_sliding_impratio_keeps_impratio_times_d():
+    # impratio · d is the friction rows' stiffness gain (docs/rolling-disc.md § 8): the
+    # disc's product, 1e4 · 0.001, at any d.
+    import pytest
+
+    from wmr_mujoco.models.builders.common import sliding_impratio
+
+    assert sliding_impratio(0.001) * 0.001 == pytest.approx(1e4 * 0.001)
+    assert sliding_impratio(0.005) * 0.005 == pytest.approx(1e4 * 0.001)
+    with pytest.raises(ValueError, match="impedance"):
+        sliding_impratio(0.0)

@@ -99,6 +99,71 @@ def contact_pair_kwargs(sim: SimParams) -> dict:
             "margin": 0.0, "gap": 0.0}
 
 
+#: ``impratio · d`` of a sliding pair's model (:func:`sliding_impratio`): the disc's
+#: (``DiscParams``: impratio 1e4 at d = 0.001).
+SLIDING_GRIP = 10.0
+#: Time constant of a sliding pair's contact in steps (:func:`sliding_pair_kwargs`): above
+#: the largest normal-mode gain λ of the roller robots (2.2), the bound of stability.
+SLIDING_STEPS = 3
+
+
+def sliding_impratio(impedance: float) -> float:
+    """``impratio`` of a model whose floor pairs have ``impedance`` d: ``SLIDING_GRIP / d``.
+
+    A friction row's regulariser is the normal row's ``(1 − d)/d`` times its diagonal,
+    over ``impratio``; gripping friction stays stiff while ``impratio · d · A_t/A_n ≫ 1``
+    (``docs/rolling-disc.md`` § 8), so ``impratio`` scales as ``1/d``.
+
+    Raises:
+        ValueError: an impedance outside (0, 1].
+    """
+    if not (0.0 < impedance <= 1.0):
+        raise ValueError(f"impedance = {impedance!r}; valid range is (0, 1]")
+    return SLIDING_GRIP / impedance
+
+
+def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:
+    """A floor pair's attributes with the disc's remedy for a sliding soft contact.
+
+    A frictional contact in its cone state pushes its geom off the floor by
+    ``μ d B_f s`` for slip ``s`` (impedance ``d``, friction reference damping ``B_f``)
+    against the weight's ``(1 − d) g`` (``docs/rolling-disc.md`` § 8,
+    ``docs/floor-contact.md``). For ``impedance`` > 0 the pair of
+    :func:`contact_pair_kwargs` gets
+
+    * ``solimp`` ``d0 = d_width = impedance``: the push ``μ d s / Δt`` stays under ``g``
+      for slips up to ``g Δt / (μ d)``;
+    * ``solreffriction`` ``B_f = 1/Δt`` in MuJoCo's direct form ``(0, −B_f d)`` (MuJoCo
+      divides it by ``d_width``): gripping friction still removes a slip within one step.
+
+    * ``solref`` time constant ``t_c = max(sim.contact_timeconst,`` :data:`SLIDING_STEPS`
+      ``· Δt)``. With ``d`` small a contact is a spring-damper (MuJoCo scales ``B`` and
+      ``K`` by ``1/d``) whose gain on the body is ``λ = eig(A (A + R)⁻¹)/d`` over the
+      normal rows; its damping ``2 λ/t_c`` is integrated explicitly, so it is stable only
+      while ``λ < t_c/Δt``. MuJoCo's diagonal estimate in ``R`` undercounts the coupled
+      inverse inertia of several wheels on one body: ``λ`` reaches 1.4 for omni3 and 2.2
+      for mecanum4 at rest (``tests/models/builders/test_common.py`` computes it), above
+      the 2 of the usual ``t_c = 2 Δt``.
+
+    The weight then rests ``(1 − d) g t_c²`` deep. ``impedance`` 0 returns
+    :func:`contact_pair_kwargs` unchanged.
+
+    Raises:
+        ValueError: an impedance that is neither 0 nor in [1e-4, 0.95].
+    """
+    kwargs = contact_pair_kwargs(sim)
+    if impedance == 0.0:
+        return kwargs
+    if not (1e-4 <= impedance <= CONTACT_SOLIMP[0]):
+        raise ValueError(f"impedance = {impedance!r}; valid: 0 (the geoms' contact) or "
+                         f"[1e-4, {CONTACT_SOLIMP[0]}]")
+    d = float(impedance)
+    kwargs["solimp"] = (d, d, *CONTACT_SOLIMP[2:])
+    kwargs["solref"] = (max(sim.contact_timeconst, SLIDING_STEPS * sim.timestep), 1.0)
+    kwargs["solreffriction"] = (0.0, -d / sim.timestep)
+    return kwargs
+
+
 def add_roller_default(root: mjcf.RootElement, sim: SimParams, damping: float,
                        armature: float) -> mjcf.Element:
     """The ``roller`` default class of passive rollers on free hinges (omni and mecanum).

@@ -163,8 +163,10 @@ def floor_pairs(scene: mjcf.RootElement, params: MecanumParams) -> None:
     the same (tested step for step against the bit-filtered model). Cheaper: with no
     bits set, the broadphase bounds no roller body, and each step tests the 4 n pairs
     directly instead of sorting 4 n + 1 bodies' boxes.
+    With ``floor_impedance`` > 0 the pairs carry the remedy of
+    :func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs`.
     """
-    kwargs = common.contact_pair_kwargs(params.sim)
+    kwargs = common.sliding_pair_kwargs(params.sim, params.floor_impedance)
     for name in roller_collider_names(params):
         scene.contact.add("pair", geom1="floor", geom2=name, **kwargs)
 
@@ -187,6 +189,8 @@ def build(params: MecanumParams) -> mjcf.RootElement:
     R = p.wheel_radius
     root = common.new_root("mecanum4", p.sim)
     root.option.solver = p.solver
+    if p.floor_impedance > 0.0:
+        root.option.impratio = common.sliding_impratio(p.floor_impedance)
     roller = common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
     roller.joint.frictionloss = 0.0
     # No contact bits: the scene's explicit pairs (floor_pairs) make the roller contacts,

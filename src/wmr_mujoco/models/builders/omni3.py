@@ -138,6 +138,32 @@ def _add_wheel(platform: mjcf.Element, root: mjcf.RootElement, params: OmniParam
     common.add_wheel_actuator(root, name, p.drive, joint=joint)
 
 
+def roller_collider_names(params: OmniParams) -> list[str]:
+    """Names of every roller collider, wheel by wheel and row by row (as :func:`build`)."""
+    return [f"wheel{i + 1}_roller{row}{k}_collision" for i in range(3) for row in range(2)
+            for k in range(params.rollers_per_row)]
+
+
+def floor_pairs(scene: mjcf.RootElement, params: OmniParams, plain: bool = False) -> None:
+    """With ``floor_impedance`` > 0, a contact pair of every roller collider with the floor.
+
+    A ``scene_extras``: the contact set contact bits give (the rollers touch the floor
+    only), each pair with the remedy of
+    :func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs`; cheaper, since the
+    broadphase then bounds no roller body. ``plain=True`` gives the collision class's
+    contact instead (the same physics as the bits; what the cost study times). With
+    ``floor_impedance`` 0 the rollers keep their contact bits, which
+    :func:`~wmr_mujoco.validation.omni_wheels.hybrid_from_model` reads the rollers and
+    their contact from.
+    """
+    if params.floor_impedance == 0.0 and not plain:
+        return
+    kwargs = (common.contact_pair_kwargs(params.sim) if plain
+              else common.sliding_pair_kwargs(params.sim, params.floor_impedance))
+    for name in roller_collider_names(params):
+        scene.contact.add("pair", geom1="floor", geom2=name, **kwargs)
+
+
 def build(params: OmniParams) -> mjcf.RootElement:
     """Three-omni-wheel platform on a free joint.
 
@@ -153,7 +179,16 @@ def build(params: OmniParams) -> mjcf.RootElement:
     p = params
     r = p.wheel_radius
     root = common.new_root("omni3", p.sim)
-    common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
+    roller = common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
+    if p.floor_impedance > 0.0:
+        # The scene's explicit pairs (floor_pairs) make the roller contacts (MuJoCo skips
+        # a geom pair's bit contact where a <pair> names it). The rollers keep their bits
+        # and take the pairs' solimp and solref, because the hybrid model
+        # (validation.omni_wheels.hybrid_from_model) finds the rollers and reads their
+        # contact from the geoms; so the broadphase still bounds the roller bodies.
+        pair = common.sliding_pair_kwargs(p.sim, p.floor_impedance)
+        roller.geom.solimp, roller.geom.solref = pair["solimp"], pair["solref"]
+        root.option.impratio = common.sliding_impratio(p.floor_impedance)
     if p.roller_shape == "barrel":
         root.asset.add("mesh", name="barrel", vertex=barrel_vertices(p).ravel())
     platform = root.worldbody.add("body", name="platform", pos=(0, 0, r))

@@ -17,6 +17,7 @@ from wmr_mujoco.models.params.disc import FREE_INTEGRATORS, DiscParams, FreeDisc
 from wmr_mujoco.models.params.fields import (
     _check_choice,
     _check_count,
+    _check_floor_pair,
     _check_positive_fields,
     _check_range,
     _check_types,
@@ -41,5 +42,6 @@ __all__ = ["FREE_INTEGRATORS", "MAX_GAIN", "MAX_RATE", "MAX_TORQUE", "MAX_WHEEL_
            "MAX_WHEEL_RADIUS", "STEERING_FIELDS", "BicycleParams", "DiscParams", "DriveParams",
            "FreeDiscParams", "OmniParams", "ParamsT", "RobotParams", "SimParams",
            "TricycleParams", "WheelParams", "_check_choice", "_check_count",
-           "_check_positive_fields", "_check_range", "_check_types", "_is_number",
+           "_check_floor_pair", "_check_positive_fields", "_check_range", "_check_types",
+           "_is_number",
            "params_or_default"]

@@ -100,3 +100,9 @@ def _check_positive_fields(obj: Any, exclude: tuple[str, ...] = ()) -> None:
     for f in fields(obj):
         if f.name not in exclude and _is_number(getattr(obj, f.name)):
             _check_range(obj, f.name, 0.0)
+
+
+def _check_floor_pair(obj: Any) -> None:
+    """``floor_impedance`` 0 or in [1e-4, 0.01]."""
+    if obj.floor_impedance != 0.0:
+        _check_range(obj, "floor_impedance", 1e-4, 0.01, low_inclusive=True)

@@ -9,6 +9,7 @@ from typing import ClassVar
 from wmr_mujoco.models.params.fields import (
     _check_choice,
     _check_count,
+    _check_floor_pair,
     _check_positive_fields,
     _check_range,
 )
@@ -48,6 +49,11 @@ class OmniParams:
         roller_damping: viscous damping of each roller joint, N·m·s/rad.
         drive: actuator settings (no steering).
         sim: simulation settings.
+        floor_impedance: 0 (contact bits, the collision class's contact) or, in
+            [1e-4, 0.01], the impedance ``d`` of explicit roller-floor pairs with the
+            disc's remedy for a sliding contact that lifts its wheel
+            (``docs/floor-contact.md``; an option, not the default: the hybrid model's
+            hand-over terms are derived for the collision class's impedance).
     """
 
     wheel_radius: float = 0.05
@@ -66,6 +72,7 @@ class OmniParams:
     drive: DriveParams = DriveParams(wheel_kv=2.0, wheel_armature=0.004,
                                      wheel_torque_limit=1.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.001, contact_timeconst=0.002)
+    floor_impedance: float = 0.0
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
@@ -74,7 +81,8 @@ class OmniParams:
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("roller_armature", "roller_damping",
                                               "row_offset_ratio",
-                                              "rollers_per_row"))
+                                              "rollers_per_row", "floor_impedance"))
+        _check_floor_pair(self)
         _check_range(self, "roller_armature", 0.0, 1e-3, low_inclusive=True)
         _check_range(self, "roller_damping", 0.0, 1e-2, low_inclusive=True)
         _check_range(self, "roller_thickness", 0.05, 0.8)

@@ -142,4 +142,6 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="translate+rotate (ramp)",
     bench_scenario="translate+rotate (ramp)", render_scenario="translate+rotate (ramp)",
     scene_extras=builder.floor_pairs, command=COMMAND,
+    # Its translations at SPEED in any direction, its turns at up to YAW_RATE.
+    command_range=(SPEED, SPEED, YAW_RATE),
 )

@@ -178,4 +178,5 @@ SPEC = RobotSpec(
     bench_scenario="translate+rotate", render_scenario="square with rotation",
     clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
     peer=peer.peer_comparison, command=COMMAND,
+    scene_extras=builder.floor_pairs,
 )
