@@ -73,7 +73,7 @@ COMPARE_STEPS = 500
 
 
 def _cruise(model: mujoco.MjModel, steps: int) -> mujoco.MjData:
-    from wmr_mujoco.sim.thread_scaling import driving_controls
+    from wmr_mujoco.bench.thread_scaling import driving_controls
 
     data = mujoco.MjData(model)
     data.ctrl[:] = driving_controls(model, "omni3")
@@ -86,7 +86,7 @@ def _plain_paired(params: OmniParams) -> mujoco.MjModel:
     """The scene with plain explicit pairs (``floor_pairs(plain=True)``) and no bits."""
     from wmr_mujoco.models.builders import common
     from wmr_mujoco.models.builders import omni3 as builder
-    from wmr_mujoco.models.loading import build_scene
+    from wmr_mujoco.lookup import build_scene
 
     root = build_scene("omni3", params)
     builder.floor_pairs(root, params, plain=True)
@@ -102,7 +102,7 @@ def test_default_keeps_contact_bits_and_no_pairs():
 @pytest.mark.parametrize("params", [OmniParams(floor_impedance=0.001), None])
 def test_floor_pairs_name_every_roller_collider_once(params):
     from wmr_mujoco.models.builders import common
-    from wmr_mujoco.models.loading import build_scene
+    from wmr_mujoco.lookup import build_scene
 
     if params is None:
         model = _plain_paired(OmniParams())
@@ -143,7 +143,7 @@ def test_plain_pairs_move_the_robot_as_contact_bits():
 
 def test_remedy_pairs_carry_the_derived_impedance_and_friction_damping():
     from wmr_mujoco.models.builders import common
-    from wmr_mujoco.models.loading import build_scene
+    from wmr_mujoco.lookup import build_scene
 
     p = OmniParams(floor_impedance=0.002)
     model = mujoco.MjModel.from_xml_string(common.to_xml(build_scene("omni3", p)))
