@@ -44,6 +44,7 @@ _LAZY = {
     "Piecewise": "wmr_mujoco.validation.signals",
     "Sine": "wmr_mujoco.validation.signals",
     "SimulationDivergedError": "wmr_mujoco.sim.stepping",
+    **dict.fromkeys(("make", "RobotState", "CommandSpace"), "wmr_mujoco.drive"),
 }
 
 __all__ = sorted(_LAZY)

@@ -17,6 +17,7 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import bicycle as builder
 from wmr_mujoco.models.params import BicycleParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.command import RateCommand, Servo
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Target
@@ -66,6 +67,12 @@ SCENARIOS = (
         (2.0, 2.5, 0.4), (2.5, 3.5, -0.4), (3.5, 4.0, 0.4)))),
 )
 
+#: Driven by ``(v_r, φ)``: rear-wheel ground speed and steering angle (servoed).
+COMMAND = RateCommand(("v", "steer"), ("m/s", "rad"), wheels=("rear_wheel", "front_wheel"),
+                      steers=("steer",), servo=(Servo(1, "steer", 3),),
+                      kinematics=lambda p: BicycleKinematics(
+                          params_or_default(p, BicycleParams)))
+
 SPEC = RobotSpec(
     name=NAME,
     description="planar bicycle held upright: driven rear wheel, steered front fork",
@@ -75,4 +82,5 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="lane change",
     bench_scenario="steady turn 0.3 rad", render_scenario="lane change",
     picture=Picture(joint_angles={"steer": 0.35}), clips=(Clip(duration=5.0),),
+    command=COMMAND,
 )

@@ -12,6 +12,7 @@ from dm_control import mjcf
 
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import MODELS_DIR
+from wmr_mujoco.robots.command import CommandMap
 from wmr_mujoco.validation.adapters import AdapterFactory
 from wmr_mujoco.validation.metrics import Judge, ProbeFactory, Target, pose_tracking
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -96,6 +97,8 @@ class RobotSpec(Generic[P]):
         scene_extras: ``(scene root, params) -> None``, elements that name the scene's
             geoms (contact pairs with the ``floor``), added after the floor in the built
             and the checked-in scene (None: nothing).
+        command: how the robot is driven step by step (:mod:`wmr_mujoco.drive`): its
+            natural command space and wheels (None: it cannot be driven, no actuators).
     """
 
     name: str
@@ -118,6 +121,7 @@ class RobotSpec(Generic[P]):
     clips: tuple[Clip, ...] = (Clip(),)
     peer: PeerComparison | None = None
     scene_extras: Callable[[mjcf.RootElement, P], None] | None = None
+    command: CommandMap | None = None
 
     def __post_init__(self) -> None:
         names = [s.name for s in self.scenarios]

@@ -24,6 +24,7 @@ from wmr_mujoco.models.builders import diffdrive as builder
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.command import RateCommand
 from wmr_mujoco.robots.diffdrive import caster_drag
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
@@ -100,6 +101,11 @@ TARGETS: Mapping[str, Target] = {
                            f"arc each wheel rolls, (b/2)∫|ω|dt = {_SPIN_ARC:.3f} m"),
 }
 
+#: Driven by ``(v, ω)``, the unicycle's inputs.
+COMMAND = RateCommand(("v", "omega"), ("m/s", "rad/s"), wheels=("left_wheel", "right_wheel"),
+                      kinematics=lambda p: DiffDriveKinematics(
+                          params_or_default(p, DiffDriveParams)))
+
 SPEC = RobotSpec(
     name=NAME,
     description="differential drive: two driven wheels on one axle and a passive ball "
@@ -107,5 +113,5 @@ SPEC = RobotSpec(
     params_type=DiffDriveParams, build=builder.build, folder=NAME, robot_file="diffdrive.xml",
     adapters={ScenarioKind.KINEMATIC: kinematic_adapter},
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="figure eight",
-    bench_scenario="figure eight", render_scenario="figure eight",
+    bench_scenario="figure eight", render_scenario="figure eight", command=COMMAND,
 )

@@ -27,6 +27,7 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import omni3 as builder
 from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.command import RateCommand
 from wmr_mujoco.robots.omni3 import coasting, dynamics, traction
 from wmr_mujoco.robots.omni3.runs import WHEELS
 from wmr_mujoco.robots.spec import Clip, RobotSpec
@@ -179,6 +180,10 @@ def peer_comparison(scene: Path, quick: bool) -> list[Mapping[str, object]]:
         measure_omni(OmniParams(), f"{NAME} (default)", names), measure_peer(names, scene))]
 
 
+#: Driven by the body twist ``(u, v, r)``.
+COMMAND = RateCommand(("u", "v", "r"), ("m/s", "m/s", "rad/s"), wheels=WHEELS,
+                      kinematics=lambda p: OmniKinematics(params_or_default(p, OmniParams)))
+
 SPEC = RobotSpec(
     name=NAME,
     description="three omni wheels at 120 degrees, each with two staggered rows of "
@@ -189,5 +194,5 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="square with rotation",
     bench_scenario="translate+rotate", render_scenario="square with rotation",
     clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
-    peer=peer_comparison,
+    peer=peer_comparison, command=COMMAND,
 )

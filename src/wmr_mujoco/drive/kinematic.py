@@ -1,0 +1,179 @@
+"""The ``"kinematic"`` backend: the robot's analytic kinematic model under the same commands.
+
+The model is the robot's kinematic validation adapter (``RateCommand.kinematics``): state
+``x`` starting with the pose ``(x, y, ψ)``, inputs ``u`` from the natural command
+(steering angles servoed into rates exactly as on the MuJoCo backend, from the analytic
+steering angle). Over one period ``T`` the input is held and ``x`` advances by the
+adapter's ``exact_step`` where it has one, else by ``n = T/Δt`` classical RK4 steps on the
+model's timestep (global error O(Δt⁴), :mod:`wmr_mujoco.analytic.integrate`).
+
+The state reported: pose ``x[:3]``; twist ``(u, v, r) = (Rot(−ψ)(ẋ, ẏ), ψ̇)`` from
+``rhs(x, u)``; steering angles from ``x``; wheel rates of driven wheels from the adapter's
+controls (its inverse kinematics), of passive wheels from rolling without slip,
+
+    θ̇ = v_c · (a × e_z) / R,    v_c = (u − r c_y, v + r c_x),
+
+with ``c`` the wheel centre and ``a`` its axle in the ``base`` frame (read from the
+compiled model at rest; a steered wheel's axle turned by its steering angle about the
+vertical), ``R`` the centre's height at rest; every wheel is in contact.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.analytic.integrate import rk4_step
+from wmr_mujoco.drive.readout import place
+from wmr_mujoco.drive.robot import Robot, substeps
+from wmr_mujoco.drive.state import CommandSpace, RobotState
+from wmr_mujoco.robots.command import RateCommand
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.sim.stepping import SimulationDivergedError
+from wmr_mujoco.validation.adapters import Adapter
+
+
+class WheelGeometry:
+    """Rolling rates of the wheels under a body twist (module docstring).
+
+    Args:
+        model: the compiled scene (read at its rest pose ``qpos0``).
+        command: the wheels and steering joints.
+        steer_of_wheel: per wheel, the index of the steering joint that turns it, or -1.
+    """
+
+    def __init__(self, model: mujoco.MjModel, command: RateCommand) -> None:
+        data = mujoco.MjData(model)
+        mujoco.mj_kinematics(model, data)
+        site = model.site("base").id
+        rot = data.site_xmat[site].reshape(3, 3)
+        origin = data.site_xpos[site]
+        steer_bodies = {int(model.jnt_bodyid[model.joint(s).id]): k
+                        for k, s in enumerate(command.steers)}
+        centres, axles, radii, steer = [], [], [], []
+        for w in command.wheels:
+            j = model.joint(w).id
+            b = int(model.jnt_bodyid[j])
+            centres.append((rot.T @ (data.xpos[b] - origin))[:2])
+            axle = rot.T @ data.xmat[b].reshape(3, 3) @ model.jnt_axis[j]
+            axles.append(axle[:2])
+            radii.append(data.xpos[b][2])
+            a, k = b, -1
+            while a > 0 and k < 0:
+                k = steer_bodies.get(a, -1)
+                a = int(model.body_parentid[a])
+            steer.append(k)
+        self.centres = np.array(centres)
+        self.axles = np.array(axles)
+        self.radii = np.array(radii)
+        self.steer_of_wheel = np.array(steer, dtype=int)
+
+    def rates(self, twist: np.ndarray, steer_angles: np.ndarray) -> np.ndarray:
+        """``θ̇ = v_c · (a × e_z) / R`` of every wheel."""
+        u, v, r = twist
+        vc = np.column_stack([u - r * self.centres[:, 1], v + r * self.centres[:, 0]])
+        ax = self.axles.copy()
+        for i, k in enumerate(self.steer_of_wheel):
+            if k >= 0:
+                c, s = math.cos(steer_angles[k]), math.sin(steer_angles[k])
+                ax[i] = (c * ax[i, 0] - s * ax[i, 1], s * ax[i, 0] + c * ax[i, 1])
+        # a × e_z = (a_y, −a_x) in the plane.
+        return (vc[:, 0] * ax[:, 1] - vc[:, 1] * ax[:, 0]) / self.radii
+
+
+class KinematicRobot(Robot):
+    """The analytic kinematic model driven like the robot (see :func:`~wmr_mujoco.drive.make`).
+
+    Args:
+        spec: the robot's registry entry (a :class:`~wmr_mujoco.robots.command.RateCommand`).
+        model: its compiled scene, read for timestep, limits and geometry (not stepped).
+        adapter: the kinematic model.
+        control_period: s, a multiple of the model's timestep.
+        command_space: the natural command space.
+    """
+
+    backend = "kinematic"
+
+    def __init__(self, spec: RobotSpec, model: mujoco.MjModel, adapter: Adapter,
+                 control_period: float, command_space: CommandSpace) -> None:
+        self.nstep = substeps(control_period, model.opt.timestep)
+        super().__init__(spec, "command", control_period, command_space)
+        cmap = spec.command
+        assert isinstance(cmap, RateCommand)
+        self.cmap = cmap
+        self.adapter = adapter
+        self._model = model
+        self.dt = control_period / self.nstep
+        self._exact = getattr(adapter, "exact_step", None)
+        self._rate_limits = cmap.rate_limits(model)
+        servo_of_joint = {int(model.actuator_trnid[model.actuator(s.actuator).id, 0]): s.state
+                          for s in cmap.servo}
+        self._steer_states = []
+        for name in cmap.steers:
+            j = model.joint(name).id
+            if j not in servo_of_joint:
+                raise ValueError(f"{spec.name}: steering joint {name!r} has no servo "
+                                 "channel in the command map; the kinematic backend "
+                                 "cannot report its angle")
+            self._steer_states.append(servo_of_joint[j])
+        self._servo_states = [s.state for s in cmap.servo]
+        # Driven wheels: their actuator's control is their rate; the others roll.
+        wheel_joint = {model.joint(w).id: k for k, w in enumerate(cmap.wheels)}
+        self._driven = [(i, wheel_joint[int(model.actuator_trnid[i, 0])])
+                        for i in range(model.nu)
+                        if int(model.actuator_trnid[i, 0]) in wheel_joint]
+        self.geometry = WheelGeometry(model, cmap)
+        self._x = np.zeros(len(adapter.state_names))
+
+    @property
+    def analytic_state(self) -> np.ndarray:
+        """The analytic model's state ``x`` (a copy; names: ``adapter.state_names``)."""
+        return self._x.copy()
+
+    def _reset(self, pose: np.ndarray, seed: int | None) -> RobotState:
+        """The model's state at rest at ``pose`` (read as ``sim_state`` of the placed model)."""
+        data = mujoco.MjData(self._model)
+        if self.cmap.keyframe is not None:
+            mujoco.mj_resetDataKeyframe(self._model, data,
+                                        self._model.keyframe(self.cmap.keyframe).id)
+        place(self._model, data, pose)
+        x = np.array(self.adapter.sim_state(self._model, data), float)
+        x[:3] = pose
+        self._x = x
+        return self._read(0.0, np.zeros(len(self.cmap.names)))
+
+    def _advance(self, command: np.ndarray) -> RobotState:
+        """Hold the inputs for one period: exact step, or RK4 on the timestep."""
+        x = self._x
+        u = self.cmap.inputs(command, x[self._servo_states], self.control_period,
+                             self._rate_limits)
+        if self._exact is not None:
+            x = self._exact(x, u, self.control_period)
+        else:
+            rhs = self.adapter.rhs
+            for _ in range(self.nstep):
+                x = rk4_step(rhs, x, u, self.dt)
+        if not np.all(np.isfinite(x)):
+            raise SimulationDivergedError(f"{self.spec.name}: the kinematic model's state "
+                                          f"became non-finite at t={self.time:.4f} s: {x}")
+        self._x = np.asarray(x, float)
+        return self._read(float(self.state.time) + self.control_period, u)
+
+    def _read(self, time: float, u: np.ndarray) -> RobotState:
+        """The state of ``x`` with input ``u`` held."""
+        x = self._x
+        dx = self.adapter.rhs(x, u)
+        c, s = math.cos(x[2]), math.sin(x[2])
+        twist = np.array((c * dx[0] + s * dx[1], -s * dx[0] + c * dx[1], dx[2]))
+        steer = x[self._steer_states]
+        rates = self.geometry.rates(twist, steer)
+        if self._driven:
+            ctrl = self.adapter.controls(u, x)
+            for i, k in self._driven:
+                rates[k] = ctrl[i]
+        n = len(self.wheel_names)
+        return RobotState(time=np.array(time), pose=np.array(x[:3]), twist=twist,
+                          wheel_rates=rates, steer_angles=np.array(steer),
+                          wheel_contacts=np.ones(n, dtype=bool))

@@ -1,0 +1,103 @@
+"""The ``"mujoco"`` backend: the robot in contact physics, stepped one control period at a time.
+
+A step writes the actuator controls once and advances ``n = T / Δt`` timesteps in one
+``mj_step(model, data, n)`` call (the controls are held over the period, a zero-order hold
+like the validation runner's), then checks the run's health and reads the state.
+
+``mj_step`` leaves the derived quantities (frames, velocities of bodies, contacts) at the
+start of its last timestep; the readout first brings frames and body velocities up to the
+final ``qpos, qvel`` with ``mj_kinematics``, ``mj_comPos`` and ``mj_comVel`` (no collision
+or constraint solve: a fraction of a timestep's cost). Wheel contacts are the last
+timestep's, at most ``Δt`` old.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.drive.readout import Reader, place
+from wmr_mujoco.drive.robot import HISTORY_LIMIT, Robot, substeps
+from wmr_mujoco.drive.state import CommandSpace, RobotState
+from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
+from wmr_mujoco.robots.command import Controller
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.sim.stepping import check_healthy
+
+
+class MujocoRobot(Robot):
+    """A robot in MuJoCo (see :func:`wmr_mujoco.drive.make`).
+
+    Args:
+        spec: the robot's registry entry (with a command map).
+        model: its compiled scene (modified: actuation mode).
+        mode: ``"command"``, ``"wheels"`` or ``"torque"``.
+        control_period: s, a multiple of the model's timestep.
+        command_space: the commands of ``mode``.
+        controller: natural command -> controls (mode ``"command"``; None: the command
+            is the controls).
+        actuation: the actuation mode to switch the model to (None: leave as is).
+    """
+
+    backend = "mujoco"
+
+    def __init__(self, spec: RobotSpec, model: mujoco.MjModel, mode: str,
+                 control_period: float, command_space: CommandSpace,
+                 controller: Controller | None, actuation: ActuationMode | None) -> None:
+        self.nstep = substeps(control_period, model.opt.timestep)
+        super().__init__(spec, mode, control_period, command_space)
+        if actuation is not None:
+            set_actuation_mode(model, actuation)
+        self.model = model
+        self.data = mujoco.MjData(model)
+        self.reader = Reader(model, spec.command)
+        self._controller = controller
+        self._wheel_qpos = np.array([model.jnt_qposadr[model.joint(w).id]
+                                     for w in self.wheel_names], dtype=int)
+        self._t0 = 0.0
+        #: Generalised positions after every period since the reset, for :meth:`film`.
+        self.qpos_history: deque[np.ndarray] = deque(maxlen=HISTORY_LIMIT)
+
+    def _reset(self, pose: np.ndarray, seed: int | None) -> RobotState:
+        """Place at ``pose``, settle on the floor at rest, zero the velocities.
+
+        Like the validation runner: the controls are 0 (wheel-rate servos hold the wheels,
+        steering targets stay at 0) for the command map's ``settle`` seconds.
+        """
+        model, data, cmap = self.model, self.data, self.spec.command
+        if cmap.keyframe is not None:
+            mujoco.mj_resetDataKeyframe(model, data, model.keyframe(cmap.keyframe).id)
+        else:
+            mujoco.mj_resetData(model, data)
+        if seed is not None:
+            rng = np.random.default_rng(seed)
+            data.qpos[self._wheel_qpos] = rng.uniform(0.0, 2 * np.pi, len(self._wheel_qpos))
+        place(model, data, pose)
+        data.ctrl[:] = 0.0
+        nsettle = round(cmap.settle / model.opt.timestep)
+        if nsettle:
+            mujoco.mj_step(model, data, nsettle)
+            check_healthy(model, data)
+            data.qvel[:] = 0.0
+            mujoco.mj_forward(model, data)
+        self._t0 = data.time
+        self.qpos_history.clear()
+        self.qpos_history.append(data.qpos.copy())
+        return self.reader.read(data, 0.0, float(pose[2]))
+
+    def _advance(self, command: np.ndarray) -> RobotState:
+        """Controls held for ``nstep`` timesteps, then the health check and the readout."""
+        model, data = self.model, self.data
+        if self._controller is None:
+            data.ctrl[:] = command
+        else:
+            data.ctrl[:] = self._controller(data, command, self.control_period)
+        mujoco.mj_step(model, data, self.nstep)
+        check_healthy(model, data)
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_comPos(model, data)
+        mujoco.mj_comVel(model, data)
+        self.qpos_history.append(data.qpos.copy())
+        return self.reader.read(data, data.time - self._t0, float(self._state.pose[2]))

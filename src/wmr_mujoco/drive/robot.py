@@ -1,0 +1,197 @@
+"""The steppable robot: :class:`Robot`, the part every backend shares.
+
+A backend implements :meth:`Robot._reset` (start at a pose) and :meth:`Robot._advance`
+(hold a command for one control period); the base class checks inputs before any work,
+clips commands to the command space (one warning per robot), keeps the clock and records
+the history.
+"""
+
+from __future__ import annotations
+
+import abc
+import math
+import warnings
+from collections import deque
+from collections.abc import Sequence
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.drive.state import CommandSpace, RobotState
+from wmr_mujoco.robots.spec import RobotSpec
+
+#: Most states :attr:`Robot.history` keeps (the oldest are dropped): 10⁵ periods, over
+#: half an hour at 20 ms, a few tens of MB.
+HISTORY_LIMIT = 100_000
+#: Relative tolerance of "the control period is a whole number of timesteps".
+PERIOD_RTOL = 1e-9
+
+
+def substeps(control_period: float, timestep: float) -> int:
+    """Number of timesteps in one control period.
+
+    Raises:
+        ValueError: the period is not a positive finite multiple of the timestep
+            (the message names both).
+    """
+    if isinstance(control_period, bool) or not isinstance(control_period, (int, float)):
+        raise TypeError(f"control_period = {control_period!r}; expected a number of "
+                        "seconds")
+    if not (math.isfinite(control_period) and control_period > 0):
+        raise ValueError(f"control_period = {control_period!r} s; must be a finite "
+                         f"number > 0, a multiple of the model timestep {timestep:g} s")
+    n = round(control_period / timestep)
+    if n < 1 or abs(n * timestep - control_period) > PERIOD_RTOL * control_period:
+        raise ValueError(f"control_period = {control_period!r} s is not a multiple of the "
+                         f"model timestep {timestep:g} s (e.g. {max(n, 1) * timestep:g} s)")
+    return n
+
+
+def check_pose(pose: Sequence[float] | np.ndarray | None) -> np.ndarray:
+    """``pose`` as ``(x, y, heading)`` floats (None: the origin, heading 0).
+
+    Raises:
+        ValueError: not three finite numbers.
+    """
+    if pose is None:
+        return np.zeros(3)
+    try:
+        arr = np.asarray(pose, dtype=float)
+    except (TypeError, ValueError):
+        arr = None
+    if arr is None or arr.shape != (3,) or not np.all(np.isfinite(arr)):
+        raise ValueError(f"pose = {pose!r}; expected three finite numbers (x m, y m, "
+                         "heading rad)")
+    return arr
+
+
+def check_seed(seed: int | None) -> int | None:
+    """Raise ``ValueError`` unless ``seed`` is None or an integer >= 0."""
+    if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))
+                             or seed < 0):
+        raise ValueError(f"seed = {seed!r}; expected None or an integer >= 0")
+    return seed
+
+
+class Robot(abc.ABC):
+    """A robot driven one control period at a time (see :func:`wmr_mujoco.drive.make`).
+
+    Attributes:
+        spec: the robot's registry entry.
+        backend: ``"mujoco"``, ``"kinematic"``, ...
+        mode: ``"command"``, ``"wheels"`` or ``"torque"``.
+        control_period: s.
+        command_space: what :meth:`step` accepts.
+        wheel_names: the wheels of ``RobotState.wheel_rates``.
+        steer_names: the steering joints of ``RobotState.steer_angles``.
+        model: the MuJoCo model (None on the analytic backends).
+        data: the MuJoCo data (None on the analytic backends).
+    """
+
+    backend: str = ""
+    model: mujoco.MjModel | None = None
+    data: mujoco.MjData | None = None
+
+    def __init__(self, spec: RobotSpec, mode: str, control_period: float,
+                 command_space: CommandSpace) -> None:
+        assert spec.command is not None
+        self.spec = spec
+        self.mode = mode
+        self.control_period = float(control_period)
+        self.command_space = command_space
+        self.wheel_names = spec.command.wheels
+        self.steer_names = spec.command.steers
+        self._low = command_space.low
+        self._high = command_space.high
+        self._warned = False
+        self._history: deque[RobotState] = deque(maxlen=HISTORY_LIMIT)
+        self._state: RobotState | None = None
+
+    # -- public API ---------------------------------------------------------------
+
+    def reset(self, pose: Sequence[float] | np.ndarray | None = None,
+              seed: int | None = None) -> RobotState:
+        """Start again at ``pose`` = ``(x, y, heading)`` (m, m, rad; None: the origin).
+
+        ``seed``: None starts every wheel at angle 0; an integer draws each wheel's angle
+        uniformly in [0, 2π) (the roller phase of omni and mecanum wheels) from
+        ``numpy.random.default_rng(seed)``; the analytic backends have no wheel angles.
+
+        Raises:
+            ValueError: a bad pose or seed (before anything is changed).
+            SimulationDivergedError: the robot diverged while settling.
+        """
+        pose = check_pose(pose)
+        seed = check_seed(seed)
+        self._history.clear()
+        self._state = self._reset(pose, seed)
+        self._history.append(self._state)
+        return self._state
+
+    def step(self, command: Sequence[float] | np.ndarray) -> RobotState:
+        """Hold ``command`` for one control period; return the state at its end.
+
+        A command outside :attr:`command_space` is clipped to it, with one warning per
+        robot (``warnings.warn``, naming the value and the limits).
+
+        Raises:
+            RuntimeError: :meth:`reset` was not called.
+            ValueError: wrong length, non-numeric or non-finite command (before stepping).
+            SimulationDivergedError: the simulation diverged.
+        """
+        if self._state is None:
+            raise RuntimeError("call robot.reset() before robot.step()")
+        u = self.command_space.check(command)
+        if np.any(u < self._low) or np.any(u > self._high):
+            if not self._warned:
+                self._warned = True
+                warnings.warn(f"{self.spec.name}: command {u.tolist()} outside the command "
+                              f"space ({self.command_space.describe()}); clipped (warned "
+                              "once per robot)", stacklevel=2)
+            u = np.clip(u, self._low, self._high)
+        self._state = self._advance(u)
+        self._history.append(self._state)
+        return self._state
+
+    @property
+    def state(self) -> RobotState:
+        """The current state (after the last reset or step)."""
+        if self._state is None:
+            raise RuntimeError("call robot.reset() first: the robot has no state yet")
+        return self._state
+
+    @property
+    def time(self) -> float:
+        """Seconds since the last reset."""
+        return float(self.state.time)
+
+    @property
+    def history(self) -> list[RobotState]:
+        """The states since the last reset (at most :data:`HISTORY_LIMIT`, newest last)."""
+        return list(self._history)
+
+    def history_arrays(self) -> dict[str, np.ndarray]:
+        """The history as arrays by field, one row per state (``extra`` left out)."""
+        fields = ("time", "pose", "twist", "wheel_rates", "steer_angles", "wheel_contacts")
+        return {f: np.array([getattr(s, f) for s in self._history]) for f in fields}
+
+    def film(self, path: str | Path, **options: object) -> Path:
+        """Film the recorded run (see :func:`wmr_mujoco.drive.film.film`)."""
+        from wmr_mujoco.drive.film import film
+
+        return film(self, path, **options)
+
+    def __repr__(self) -> str:
+        return (f"<{type(self).__name__} {self.spec.name!r} backend={self.backend!r} "
+                f"mode={self.mode!r} control_period={self.control_period:g}>")
+
+    # -- backends -----------------------------------------------------------------
+
+    @abc.abstractmethod
+    def _reset(self, pose: np.ndarray, seed: int | None) -> RobotState:
+        """Start at ``pose`` (checked); return the state at time 0."""
+
+    @abc.abstractmethod
+    def _advance(self, command: np.ndarray) -> RobotState:
+        """Hold ``command`` (checked and clipped) for one period; return the new state."""

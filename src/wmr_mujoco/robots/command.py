@@ -1,0 +1,223 @@
+"""How a robot is driven: its natural command and how it becomes actuator controls.
+
+Each registry entry (:class:`~wmr_mujoco.robots.spec.RobotSpec`) may carry a
+:class:`CommandMap`; the stepping API (:mod:`wmr_mujoco.drive`) reads robots only through
+it. Two implementations:
+
+* :class:`RateCommand`: the command is the input ``u`` of the robot's analytic kinematic
+  model (its validation adapter, :mod:`wmr_mujoco.validation.adapters`): a body twist
+  ``(u, v, r)`` (omni3, mecanum4), ``(v, ω)`` (diffdrive, disc), ... The adapter's
+  ``controls(u, x)`` gives the actuator controls (wheel-rate servo targets), its
+  ``rhs(x, u)`` the kinematic model. Channels listed in ``servo`` are steering ANGLES
+  instead of the adapter's steering RATES: held over a control period ``T``, the rate is
+
+      ω = clip((φ_cmd − φ_target) / T, −ω_max, ω_max)
+
+  with ``φ_target`` the steering servo's integrated target (MuJoCo ``act``, or the
+  analytic state's steering angle), so the target reaches ``φ_cmd`` within one period
+  when ``|φ_cmd − φ_target| ≤ ω_max T``, otherwise at the rate limit.
+* :class:`TorqueCommand`: the command is a subset of the actuators' controls, reordered
+  (the Whipple bicycle's rear-wheel and steer torques); no analytic model.
+"""
+
+from __future__ import annotations
+
+import abc
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.validation.adapters import Adapter
+
+#: ``extras(model, data) -> {name: value}``: robot-specific readings of a MuJoCo state.
+Extras = Callable[[mujoco.MjModel, mujoco.MjData], Mapping[str, float]]
+#: ``controller(data, command, period) -> ctrl``: actuator controls (length ``nu``)
+#: that hold ``command`` over the next ``period`` seconds.
+Controller = Callable[[mujoco.MjData, np.ndarray, float], np.ndarray]
+
+
+@dataclass(frozen=True)
+class CommandMap(abc.ABC):
+    """A robot's natural command space and its wheels (base class).
+
+    Attributes:
+        names: command channel names.
+        units: their units.
+        wheels: hinge joints of the driven or rolling wheels, in the order of
+            ``RobotState.wheel_rates``.
+        steers: steering hinge joints, in the order of ``RobotState.steer_angles``.
+        settle: seconds at rest on the floor after a reset (the validation runner's 0.5 s;
+            0 for a robot that cannot stand still, the Whipple bicycle).
+        keyframe: keyframe a reset starts from (None: the model's rest pose ``qpos0``).
+        extras: robot-specific readings of the MuJoCo state (None: none).
+    """
+
+    names: tuple[str, ...]
+    units: tuple[str, ...]
+    wheels: tuple[str, ...]
+    steers: tuple[str, ...] = ()
+    settle: float = 0.5
+    keyframe: str | None = None
+    extras: Extras | None = None
+
+    def __post_init__(self) -> None:
+        if len(self.names) != len(self.units):
+            raise ValueError(f"command names {self.names} and units {self.units} differ "
+                             "in length")
+
+    def analytic(self, params: RobotParams | None) -> Adapter | None:
+        """The robot's analytic kinematic model driven by :meth:`inputs` (None: none)."""
+        return None
+
+    @abc.abstractmethod
+    def limits(self, model: mujoco.MjModel,
+               adapter: Adapter | None) -> tuple[np.ndarray, np.ndarray]:
+        """``(low, high)`` of the command, from the model's actuator ranges."""
+
+    @abc.abstractmethod
+    def bind(self, model: mujoco.MjModel, adapter: Adapter | None) -> Controller:
+        """The command-to-controls map of one compiled model (indices looked up once)."""
+
+
+
+@dataclass(frozen=True)
+class Servo:
+    """A command channel that is a steering angle, servoed through a rate input.
+
+    Attributes:
+        channel: index of the channel in the command (and the adapter's input).
+        actuator: the steering actuator (MuJoCo ``intvelocity``; its ``act`` is the
+            target angle and its ctrl range the rate limit).
+        state: index of the steering angle in the adapter's analytic state.
+    """
+
+    channel: int
+    actuator: str
+    state: int
+
+
+def servo_rate(command: float, target: float, period: float, rate_limit: float) -> float:
+    """``ω = clip((φ_cmd − φ_target) / T, −ω_max, ω_max)`` (module docstring)."""
+    return min(rate_limit, max(-rate_limit, (command - target) / period))
+
+
+@dataclass(frozen=True)
+class RateCommand(CommandMap):
+    """The analytic kinematic model's own inputs, steering rates replaced by angles.
+
+    Attributes:
+        kinematics: ``params -> adapter``, the robot's kinematic validation adapter.
+        servo: the channels that are steering angles (module docstring).
+        state_dependent: whether the adapter's ``controls`` read the analytic state
+            (then the MuJoCo backend reads it with ``sim_state`` every period).
+    """
+
+    kinematics: Callable[[RobotParams | None], Adapter] | None = None
+    servo: tuple[Servo, ...] = ()
+    state_dependent: bool = False
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        if self.kinematics is None:
+            raise ValueError(f"RateCommand {self.names}: give the kinematic adapter")
+
+    def analytic(self, params: RobotParams | None) -> Adapter:
+        """The kinematic adapter with the robot's parameters."""
+        assert self.kinematics is not None  # checked in __post_init__
+        return self.kinematics(params)
+
+    def rate_limits(self, model: mujoco.MjModel) -> np.ndarray:
+        """Steering-rate limits ``ω_max`` of the servo channels (their ctrl ranges)."""
+        return np.array([model.actuator(s.actuator).ctrlrange[1] for s in self.servo])
+
+    def inputs(self, command: np.ndarray, targets: np.ndarray, period: float,
+               rate_limits: np.ndarray) -> np.ndarray:
+        """The adapter's input ``u``: ``command`` with servo angles turned into rates."""
+        u = np.array(command, float)
+        for k, s in enumerate(self.servo):
+            u[s.channel] = servo_rate(command[s.channel], targets[k], period, rate_limits[k])
+        return u
+
+    def limits(self, model: mujoco.MjModel,
+               adapter: Adapter | None) -> tuple[np.ndarray, np.ndarray]:
+        """A box of commands whose controls all stay inside the ctrl ranges.
+
+        Servo channels: the steering actuator's ``actrange`` (its angle limit). The
+        others: with ``W`` the controls per unit of each rate channel (``controls(e_j)``
+        at the rest state, all wheel-rate servos), channel j alone may reach
+        ``c_j = min_i ū_i / |W_ij|``; the box ``±α c`` with
+        ``α = 1 / max_i Σ_j |W_ij| c_j / ū_i`` keeps every wheel inside its limit ``ū_i``
+        for every command in the box (``Σ_j |W_ij| α c_j ≤ ū_i``).
+        """
+        assert adapter is not None
+        m = len(self.names)
+        servo = {s.channel: s for s in self.servo}
+        rate = [j for j in range(m) if j not in servo]
+        rest = np.zeros(len(adapter.state_names))
+        w = np.column_stack([adapter.controls(np.eye(m)[j], rest) for j in rate])
+        steer_acts = {model.actuator(s.actuator).id for s in self.servo}
+        rows = [i for i in range(model.nu) if i not in steer_acts]
+        w = np.abs(w[rows])
+        ubar = model.actuator_ctrlrange[rows, 1]
+        with np.errstate(divide="ignore"):
+            reach = np.min(ubar[:, None] / w, axis=0)
+        alpha = 1.0 / np.max((w * reach[None, :]).sum(axis=1) / ubar)
+        high = np.empty(m)
+        high[rate] = alpha * reach
+        for j, s in servo.items():
+            high[j] = model.actuator(s.actuator).actrange[1]
+        low = -high
+        for j, s in servo.items():
+            low[j] = model.actuator(s.actuator).actrange[0]
+        return low, high
+
+    def bind(self, model: mujoco.MjModel, adapter: Adapter | None) -> Controller:
+        """``adapter.controls(u, x)``, the servo targets read from ``data.act``."""
+        assert adapter is not None
+        acts = [int(model.actuator_actadr[model.actuator(s.actuator).id]) for s in self.servo]
+        limits = self.rate_limits(model)
+        rest = np.zeros(len(adapter.state_names))
+
+        def controller(data: mujoco.MjData, command: np.ndarray, period: float) -> np.ndarray:
+            u = self.inputs(command, data.act[acts], period, limits) if acts else command
+            x = adapter.sim_state(model, data) if self.state_dependent else rest
+            return adapter.controls(u, x)
+
+        return controller
+
+
+@dataclass(frozen=True)
+class TorqueCommand(CommandMap):
+    """Commands that are actuator controls as they are (torques), in a chosen order.
+
+    Attributes:
+        actuators: the actuator of each command channel; the others get 0.
+    """
+
+    actuators: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        if len(self.actuators) != len(self.names):
+            raise ValueError(f"TorqueCommand {self.names}: one actuator per channel, got "
+                             f"{self.actuators}")
+
+    def limits(self, model: mujoco.MjModel,
+               adapter: Adapter | None) -> tuple[np.ndarray, np.ndarray]:
+        """The actuators' ctrl ranges."""
+        ranges = np.array([model.actuator(a).ctrlrange for a in self.actuators])
+        return ranges[:, 0].copy(), ranges[:, 1].copy()
+
+    def bind(self, model: mujoco.MjModel, adapter: Adapter | None) -> Controller:
+        """The command placed on its actuators."""
+        ids = [model.actuator(a).id for a in self.actuators]
+
+        def controller(data: mujoco.MjData, command: np.ndarray, period: float) -> np.ndarray:
+            ctrl = np.zeros(model.nu)
+            ctrl[ids] = command
+            return ctrl
+
+        return controller
