@@ -153,6 +153,10 @@ class Controller(ABC):
     def reset(self) -> None:  # noqa: B027 - most controllers hold no state
         """Forget what the controller remembers between calls (progress along a path)."""
 
+    def tracking_point(self, pose: np.ndarray) -> np.ndarray:
+        """The point of the robot the law steers onto the path: the pose's ``(x, y)``."""
+        return np.asarray(pose, float)[:2]
+
     @abstractmethod
     def __call__(self, state: StateLike, reference: Any, t: float) -> np.ndarray:
         """The command at time ``t`` (s since reset)."""

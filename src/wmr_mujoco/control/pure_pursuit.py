@@ -65,8 +65,9 @@ class PurePursuit(Controller):
         super().__init__(CommandKind.UNICYCLE if wheelbase is None else CommandKind.CAR)
 
     def reset(self) -> None:
-        """Forget the progress along the path."""
-        self._s: float | None = None
+        """Start the progress along the path at its start (the search for the nearest
+        point then follows the path, even where it crosses itself)."""
+        self._s: float = 0.0
 
     def curvature(self, state: StateLike, path: Path) -> float:
         """``κ = 2 sin α / L_d`` toward the goal point (``L_d`` its actual distance)."""

@@ -67,8 +67,13 @@ class Stanley(Controller):
         super().__init__(command_kind(kind))
 
     def reset(self) -> None:
-        """Forget the progress along the path."""
-        self._s: float | None = None
+        """Start the progress along the path at its start (the search for the nearest
+        point then follows the path, even where it crosses itself)."""
+        self._s: float = 0.0
+
+    def tracking_point(self, pose: np.ndarray) -> np.ndarray:
+        """The front axle, which the law steers onto the path."""
+        return self.front_axle(pose)
 
     def front_axle(self, pose: np.ndarray) -> np.ndarray:
         """``(x, y)`` of the front axle: ℓ ahead of the pose along its heading."""

@@ -16,8 +16,15 @@ regulator of this model at the riding speed,
 with Bryson's weights ``Q = diag(1/φ_m², 1/δ_m², 1/φ̇_m², 1/δ̇_m²)``, ``R = 1/T_m²``
 (the largest acceptable lean, steer, rates and torque). ``A − B K`` is Hurwitz whenever
 ``(A, B)`` is stabilisable; :meth:`WhippleLean.closed_loop_eigenvalues` gives them.
-Positive lean gains steer into the fall, as a rider does. The drive command keeps the
-rear wheel at the riding speed: ``(v, T_δ)``.
+Positive lean gains steer into the fall, as a rider does.
+
+The command is the bicycle's actuators' ``(T_r, T_δ)``; the rear-wheel torque holds the
+riding speed ``v`` by a proportional law with time constant ``τ_v``,
+
+    T_r = (m_e r_R / τ_v) (v − u),   m_e = m_T + I_Ryy / r_R² + I_Fyy / r_F²,
+
+``u`` the measured forward speed and ``m_e`` the longitudinal inertia seen at the rear
+contact (mass plus both wheels' spin inertia): the speed error decays as ``e^{−t/τ_v}``.
 """
 
 from __future__ import annotations
@@ -68,13 +75,14 @@ def lqr_gain(speed: float, params: WhippleParams = DEFAULT_PARAMS,
 
 
 class WhippleLean(Controller):
-    """LQR steer-torque law at the riding speed (module docstring); writes ``(v, T_δ)``.
+    """LQR steer-torque law at the riding speed (module docstring); writes ``(T_r, T_δ)``.
 
     Args:
         speed: riding speed the gain is designed for and the rear wheel is held at, m/s.
         params: the bicycle's parameters (the linear model's coefficients).
         weights: Bryson's weights.
-        max_torque: steer torque limit, N·m.
+        max_torque: steer and rear torque limit, N·m.
+        speed_time: ``τ_v`` of the speed hold, s.
     """
 
     name = "whipple_lean"
@@ -82,11 +90,17 @@ class WhippleLean(Controller):
     reference_type = "upright"
 
     def __init__(self, speed: float = 3.0, params: WhippleParams = DEFAULT_PARAMS,
-                 weights: BrysonWeights = BrysonWeights(), max_torque: float = 100.0) -> None:
+                 weights: BrysonWeights = BrysonWeights(), max_torque: float = 100.0,
+                 speed_time: float = 0.5) -> None:
         self.speed = positive("speed", speed)
         self.params = params
         self.gain = lqr_gain(self.speed, params, weights)
         self.max_torque = positive("max_torque", max_torque)
+        p = params
+        m_e = (p.rear_mass + p.rear_frame_mass + p.front_frame_mass + p.front_mass
+               + p.rear_inertia[1] / p.rear_radius**2 + p.front_inertia[1] / p.front_radius**2)
+        #: ``m_e r_R / τ_v``, N·m per m/s.
+        self.speed_gain = m_e * p.rear_radius / positive("speed_time", speed_time)
         super().__init__(CommandKind.WHIPPLE)
 
     def closed_loop_matrix(self, speed: float | None = None) -> np.ndarray:
@@ -104,7 +118,7 @@ class WhippleLean(Controller):
         return float(np.clip(-self.gain @ x, -self.max_torque, self.max_torque))
 
     def __call__(self, state: StateLike, reference: None, t: float) -> np.ndarray:
-        """``(v, T_δ)`` from the lean and steer in ``state.extra``.
+        """``(T_r, T_δ)`` from the speed, lean and steer (``state.twist``, ``state.extra``).
 
         Raises:
             ValueError: ``state.extra`` lacks one of :data:`STATE_KEYS`.
@@ -113,4 +127,6 @@ class WhippleLean(Controller):
         if missing:
             raise ValueError(f"state.extra lacks {missing}; the Whipple law reads {STATE_KEYS}")
         x = np.array([state.extra[k] for k in STATE_KEYS], float)
-        return np.array([self.speed, self.torque(x)])
+        rear = self.speed_gain * (self.speed - float(state.twist[0]))
+        return np.array([float(np.clip(rear, -self.max_torque, self.max_torque)),
+                         self.torque(x)])
