@@ -147,8 +147,8 @@ class KinematicRobot(Robot):
     def _advance(self, command: np.ndarray) -> RobotState:
         """Hold the inputs for one period: exact step, or RK4 on the timestep."""
         x = self._x
-        u = self.cmap.inputs(command, x[self._servo_states], self.control_period,
-                             self._rate_limits)
+        u = self.cmap.inputs(self.adapter, command, x[self._servo_states],
+                             self.control_period, self._rate_limits)
         if self._exact is not None:
             x = self._exact(x, u, self.control_period)
         else:

@@ -95,9 +95,9 @@ class MujocoRobot(Robot):
         else:
             data.ctrl[:] = self._controller(data, command, self.control_period)
         mujoco.mj_step(model, data, self.nstep)
-        check_healthy(model, data)
+        self.reader.check(data)
         mujoco.mj_kinematics(model, data)
         mujoco.mj_comPos(model, data)
         mujoco.mj_comVel(model, data)
         self.qpos_history.append(data.qpos.copy())
-        return self.reader.read(data, data.time - self._t0, float(self._state.pose[2]))
+        return self.reader.read(data, data.time - self._t0, self._state.pose[2])

@@ -14,6 +14,14 @@ import numpy as np
 
 from wmr_mujoco.drive.state import RobotState
 from wmr_mujoco.robots.command import CommandMap
+from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
+
+_SITE = mujoco.mjtObj.mjOBJ_SITE
+#: The ``steer_angles`` of a robot without steering joints (read-only).
+_EMPTY = np.zeros(0)
+_EMPTY.flags.writeable = False
+#: The ``extra`` of a robot without extras.
+NO_EXTRAS: MappingProxyType[str, float] = MappingProxyType({})
 
 #: Free-joint type, and the axes of the planar pose joints (slides x, y; hinge z).
 _FREE = int(mujoco.mjtJoint.mjJNT_FREE)
@@ -50,9 +58,14 @@ class Reader:
         self.site = model.site("base").id
         self.wheel_dofs = np.array([model.jnt_dofadr[model.joint(w).id]
                                     for w in command.wheels], dtype=int)
+        self.nsteer = len(command.steers)
         self.steer_qpos = np.array([model.jnt_qposadr[model.joint(s).id]
                                     for s in command.steers], dtype=int)
-        self.wheel_table = wheel_of_body(model, command.wheels)
+        nwheel = len(command.wheels)
+        table = wheel_of_body(model, command.wheels)[model.geom_bodyid]
+        #: Per geom, its wheel's index, or ``nwheel`` (a spare slot) for other geoms.
+        self.geom_wheel = np.where(table >= 0, table, nwheel)
+        self.nwheel = nwheel
         self.extras = command.extras
         self._vel = np.zeros(6)
 
@@ -63,27 +76,38 @@ class Reader:
 
     def contacts(self, data: mujoco.MjData) -> np.ndarray:
         """Whether each wheel (or one of its rollers) has a contact."""
-        out = np.zeros(len(self.wheel_dofs), dtype=bool)
+        out = np.zeros(self.nwheel + 1, dtype=bool)
         if data.ncon:
-            owners = self.wheel_table[self.model.geom_bodyid[data.contact.geom]]
-            out[owners[owners >= 0]] = True
-        return out
+            out[self.geom_wheel[data.contact.geom]] = True
+        return out[:self.nwheel]
+
+    def check(self, data: mujoco.MjData) -> None:
+        """Raise :class:`SimulationDivergedError` on any MuJoCo warning.
+
+        MuJoCo checks ``qpos``, ``qvel`` and ``qacc`` for NaN and huge values in every
+        step and raises a warning (and resets the state) when one is bad, so the warning
+        counters alone show a divergence; :func:`check_healthy` then names it.
+        """
+        if any(data.warning.number.tolist()):
+            check_healthy(self.model, data)
+            raise SimulationDivergedError(f"MuJoCo warnings at t={data.time:.4f} s")
 
     def read(self, data: mujoco.MjData, time: float, last_heading: float) -> RobotState:
         """The state in ``data``; the heading unwrapped next to ``last_heading``."""
         pos = data.site_xpos[self.site]
-        h = self.heading(data)
+        m = data.site_xmat[self.site]
+        h = math.atan2(m[3], m[0])
         h = last_heading + math.remainder(h - last_heading, math.tau)
         vel = self._vel
-        mujoco.mj_objectVelocity(self.model, data, mujoco.mjtObj.mjOBJ_SITE, self.site,
-                                 vel, 1)
+        mujoco.mj_objectVelocity(self.model, data, _SITE, self.site, vel, 1)
         extra = (MappingProxyType(dict(self.extras(self.model, data)))
-                 if self.extras is not None else MappingProxyType({}))
+                 if self.extras is not None else NO_EXTRAS)
+        # One array for pose and twist (two views): fewer allocations per step.
+        both = np.array((pos[0], pos[1], h, vel[3], vel[4], vel[2]))
         return RobotState(
-            time=np.array(time), pose=np.array((pos[0], pos[1], h)),
-            twist=np.array((vel[3], vel[4], vel[2])),
+            time=np.array(time), pose=both[:3], twist=both[3:],
             wheel_rates=data.qvel[self.wheel_dofs],
-            steer_angles=data.qpos[self.steer_qpos],
+            steer_angles=data.qpos[self.steer_qpos] if self.nsteer else _EMPTY,
             wheel_contacts=self.contacts(data), extra=extra)
 
 
@@ -112,9 +136,11 @@ def _planar_joints(model: mujoco.MjModel) -> tuple[int, int, int]:
 def place(model: mujoco.MjModel, data: mujoco.MjData, pose: np.ndarray) -> None:
     """Move the robot, as it stands in ``data``, so that ``base`` is at ``pose``.
 
-    A free root joint is turned about the vertical through ``base`` and shifted; a planar
-    robot (slides along x and y and a yaw hinge above ``base``) gets the yaw hinge turned
-    and the slides shifted. Heights and tilts are kept.
+    A free root joint is turned about the vertical through ``base`` and shifted (its
+    world-frame linear velocity turned with it); a planar robot (slides along x and y and a
+    yaw hinge above ``base``) gets the yaw hinge turned and the slides shifted. Heights and
+    tilts are kept. Every integrator actuator on a joint (a steering servo, whose ``act``
+    is its target angle) then targets the joint's angle, so that nothing moves by itself.
     """
     mujoco.mj_kinematics(model, data)
     site = model.site("base").id
@@ -131,6 +157,9 @@ def place(model: mujoco.MjModel, data: mujoco.MjData, pose: np.ndarray) -> None:
         mujoco.mju_mulQuat(quat, np.array([math.cos(turn / 2), 0.0, 0.0, math.sin(turn / 2)]),
                            data.qpos[adr + 3:adr + 7].copy())
         data.qpos[adr + 3:adr + 7] = quat
+        vadr = model.jnt_dofadr[0]
+        vx, vy = data.qvel[vadr], data.qvel[vadr + 1]
+        data.qvel[vadr], data.qvel[vadr + 1] = c * vx - s * vy, s * vx + c * vy
     else:
         jx, jy, jyaw = _planar_joints(model)
         data.qpos[model.jnt_qposadr[jyaw]] += turn
@@ -138,4 +167,9 @@ def place(model: mujoco.MjModel, data: mujoco.MjData, pose: np.ndarray) -> None:
         x1, y1 = data.site_xpos[site][:2]
         data.qpos[model.jnt_qposadr[jx]] += pose[0] - x1
         data.qpos[model.jnt_qposadr[jy]] += pose[1] - y1
+    joint = int(mujoco.mjtTrn.mjTRN_JOINT)
+    for i in range(model.nu):
+        if model.actuator_actadr[i] >= 0 and model.actuator_trntype[i] == joint:
+            data.act[model.actuator_actadr[i]] = data.qpos[
+                model.jnt_qposadr[model.actuator_trnid[i, 0]]]
     mujoco.mj_forward(model, data)

@@ -104,6 +104,8 @@ class Robot(abc.ABC):
         self.steer_names = spec.command.steers
         self._low = command_space.low
         self._high = command_space.high
+        self._bounds = list(zip(command_space.low.tolist(), command_space.high.tolist(),
+                                strict=True))
         self._warned = False
         self._history: deque[RobotState] = deque(maxlen=HISTORY_LIMIT)
         self._state: RobotState | None = None
@@ -143,16 +145,22 @@ class Robot(abc.ABC):
         if self._state is None:
             raise RuntimeError("call robot.reset() before robot.step()")
         u = self.command_space.check(command)
-        if np.any(u < self._low) or np.any(u > self._high):
-            if not self._warned:
-                self._warned = True
-                warnings.warn(f"{self.spec.name}: command {u.tolist()} outside the command "
-                              f"space ({self.command_space.describe()}); clipped (warned "
-                              "once per robot)", stacklevel=2)
-            u = np.clip(u, self._low, self._high)
+        for value, (lo, hi) in zip(u.tolist(), self._bounds, strict=True):
+            if not lo <= value <= hi:
+                u = self._clip(u, stacklevel=3)
+                break
         self._state = self._advance(u)
         self._history.append(self._state)
         return self._state
+
+    def _clip(self, u: np.ndarray, stacklevel: int) -> np.ndarray:
+        """``u`` clipped to the command space; the first time, a warning."""
+        if not self._warned:
+            self._warned = True
+            warnings.warn(f"{self.spec.name}: command {u.tolist()} outside the command "
+                          f"space ({self.command_space.describe()}); clipped (warned once "
+                          "per robot)", stacklevel=stacklevel)
+        return np.clip(u, self._low, self._high)
 
     @property
     def state(self) -> RobotState:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -64,6 +65,10 @@ class CommandSpace:
             ValueError: wrong length, or a non-finite or non-numeric value; the message
                 names the channels.
         """
+        if type(command) is np.ndarray and command.shape == self.shape:
+            values = command.tolist()
+            if all(type(v) is float and math.isfinite(v) for v in values):
+                return command if command.dtype == np.float64 else np.array(values)
         try:
             arr = np.asarray(command, dtype=float)
         except (TypeError, ValueError):

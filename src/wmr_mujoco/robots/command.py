@@ -113,11 +113,16 @@ class RateCommand(CommandMap):
         servo: the channels that are steering angles (module docstring).
         state_dependent: whether the adapter's ``controls`` read the analytic state
             (then the MuJoCo backend reads it with ``sim_state`` every period).
+        adjust: ``(adapter, u, φ) -> u``, where a command channel is not the adapter's
+            input (the tricycle's speed of the rear-axle midpoint, the adapter's the
+            driven wheel's); ``φ`` are the servo channels' steering targets at the start
+            of the period (None: the command is the input).
     """
 
     kinematics: Callable[[RobotParams | None], Adapter] | None = None
     servo: tuple[Servo, ...] = ()
     state_dependent: bool = False
+    adjust: Callable[[Adapter, np.ndarray, np.ndarray], np.ndarray] | None = None
 
     def __post_init__(self) -> None:
         super().__post_init__()
@@ -133,13 +138,14 @@ class RateCommand(CommandMap):
         """Steering-rate limits ``ω_max`` of the servo channels (their ctrl ranges)."""
         return np.array([model.actuator(s.actuator).ctrlrange[1] for s in self.servo])
 
-    def inputs(self, command: np.ndarray, targets: np.ndarray, period: float,
-               rate_limits: np.ndarray) -> np.ndarray:
-        """The adapter's input ``u``: ``command`` with servo angles turned into rates."""
+    def inputs(self, adapter: Adapter, command: np.ndarray, targets: np.ndarray,
+               period: float, rate_limits: np.ndarray) -> np.ndarray:
+        """The adapter's input ``u``: servo angles turned into rates, then ``adjust``."""
         u = np.array(command, float)
         for k, s in enumerate(self.servo):
-            u[s.channel] = servo_rate(command[s.channel], targets[k], period, rate_limits[k])
-        return u
+            u[s.channel] = servo_rate(float(command[s.channel]), float(targets[k]), period,
+                                      float(rate_limits[k]))
+        return u if self.adjust is None else self.adjust(adapter, u, targets)
 
     def limits(self, model: mujoco.MjModel,
                adapter: Adapter | None) -> tuple[np.ndarray, np.ndarray]:
@@ -157,7 +163,9 @@ class RateCommand(CommandMap):
         servo = {s.channel: s for s in self.servo}
         rate = [j for j in range(m) if j not in servo]
         rest = np.zeros(len(adapter.state_names))
-        w = np.column_stack([adapter.controls(np.eye(m)[j], rest) for j in rate])
+        zero = np.zeros(len(self.servo))
+        w = np.column_stack([adapter.controls(self.inputs(adapter, np.eye(m)[j], zero, 1.0,
+                                                          zero), rest) for j in rate])
         steer_acts = {model.actuator(s.actuator).id for s in self.servo}
         rows = [i for i in range(model.nu) if i not in steer_acts]
         w = np.abs(w[rows])
@@ -174,15 +182,42 @@ class RateCommand(CommandMap):
             low[j] = model.actuator(s.actuator).actrange[0]
         return low, high
 
+    def matrix(self, adapter: Adapter) -> np.ndarray | None:
+        """``W`` with ``controls(u, x) = W u`` for every ``u``, or None.
+
+        None where the controls depend on the state (``state_dependent``) or are not
+        linear in ``u``: ``W``'s columns are the controls of the unit inputs at rest, and
+        linearity is checked on three inputs (to 1e-12 of their size).
+        """
+        if self.state_dependent:
+            return None
+        m = len(self.names)
+        rest = np.zeros(len(adapter.state_names))
+        w = np.column_stack([adapter.controls(e, rest) for e in np.eye(m)])
+        for u in np.random.default_rng(0).normal(size=(3, m)):
+            if not np.allclose(adapter.controls(u, rest), w @ u, rtol=1e-12,
+                               atol=1e-12 * np.abs(w).max()):
+                return None
+        return w
+
     def bind(self, model: mujoco.MjModel, adapter: Adapter | None) -> Controller:
-        """``adapter.controls(u, x)``, the servo targets read from ``data.act``."""
+        """``adapter.controls(u, x)``, the servo targets read from ``data.act``.
+
+        A linear, state-independent map (:meth:`matrix`) is applied as ``W u``.
+        """
         assert adapter is not None
-        acts = [int(model.actuator_actadr[model.actuator(s.actuator).id]) for s in self.servo]
+        acts = np.array([model.actuator_actadr[model.actuator(s.actuator).id]
+                         for s in self.servo], dtype=int)
         limits = self.rate_limits(model)
         rest = np.zeros(len(adapter.state_names))
+        w = self.matrix(adapter)
+        direct = not self.servo and self.adjust is None
 
         def controller(data: mujoco.MjData, command: np.ndarray, period: float) -> np.ndarray:
-            u = self.inputs(command, data.act[acts], period, limits) if acts else command
+            u = command if direct else self.inputs(adapter, command, data.act[acts], period,
+                                                   limits)
+            if w is not None:
+                return w @ u
             x = adapter.sim_state(model, data) if self.state_dependent else rest
             return adapter.controls(u, x)
 

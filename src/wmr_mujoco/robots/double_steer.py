@@ -21,6 +21,7 @@ from wmr_mujoco.models.builders import steered as builder
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import DoubleSteerParams
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.command import RateCommand, Servo
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -72,6 +73,16 @@ SCENARIOS = (
              duration=3.0),
 )
 
+#: Driven by ``(v₁, β₁, β₂)``: front wheel ground speed and both steering angles
+#: (servoed); the rear wheel's speed for one ICR comes from the measured angles.
+COMMAND = RateCommand(("v", "front_steer", "rear_steer"), ("m/s", "rad", "rad"),
+                      wheels=("front_wheel", "rear_wheel"),
+                      steers=("front_steer", "rear_steer"),
+                      servo=(Servo(1, "front_steer", 3), Servo(2, "rear_steer", 4)),
+                      state_dependent=True,
+                      kinematics=lambda p: DoubleSteerKinematics(
+                          params_or_default(p, DoubleSteerParams)))
+
 SPEC = RobotSpec(
     name=NAME,
     description="two centred steerable driven wheels and a ball caster; Campion class "
@@ -82,4 +93,5 @@ SPEC = RobotSpec(
     targets=req.vehicle_targets(0.5), scenarios=SCENARIOS,
     bench_scenario="tight turn ±1 rad", render_scenario="tight turn ±1 rad",
     picture=Picture(joint_angles={"front_steer": 0.35, "rear_steer": -0.35}),
+    command=COMMAND,
 )

@@ -23,6 +23,7 @@ from wmr_mujoco.models.builders import steered as builder
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import SingleSteerParams
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.command import RateCommand, Servo
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -80,6 +81,13 @@ SCENARIOS = (
     Scenario(NAME, "slalom", (const(0.4, 0.5), Sine(0.6, 3.0)), duration=4.0),
 )
 
+#: Driven by ``(v_w, β)``: the steered wheel's ground speed and steering angle (servoed);
+#: the yaw is free (δm = 2), so no yaw rate can be commanded.
+COMMAND = RateCommand(("v", "steer"), ("m/s", "rad"), wheels=("drive_wheel",),
+                      steers=("drive_steer",), servo=(Servo(1, "drive_steer", 3),),
+                      kinematics=lambda p: SingleSteerSleigh(
+                          params_or_default(p, SingleSteerParams)))
+
 SPEC = RobotSpec(
     name=NAME,
     description="one centred steerable driven wheel and two ball casters; Campion class "
@@ -89,4 +97,5 @@ SPEC = RobotSpec(
     adapters={ScenarioKind.KINEMATIC: sleigh_adapter},
     targets=req.vehicle_targets(0.5), scenarios=SCENARIOS, bench_scenario="slalom",
     render_scenario="slalom", picture=Picture(joint_angles={"drive_steer": 0.35}),
+    command=COMMAND,
 )

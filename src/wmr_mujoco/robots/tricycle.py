@@ -21,6 +21,7 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import tricycle as builder
 from wmr_mujoco.models.params import RobotParams, TricycleParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.command import RateCommand, Servo
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
@@ -108,6 +109,23 @@ SCENARIOS = (
         (1.0, 1.5, 1.0), (5.7, 6.7, -1.0))), duration=12.0),
 )
 
+def left_wheel_speed(adapter: TricycleKinematics, u: np.ndarray,
+                     steer: np.ndarray) -> np.ndarray:
+    """``(v, ω) -> (v_L, ω)``: ``v_L = v (1 − k)`` at the steering target (module docstring)."""
+    p = adapter.params
+    v_left, _ = tricycle.rear_wheel_speeds(u[0], steer[0], p.track, p.wheelbase)
+    return np.array([v_left, u[1]])
+
+
+#: Driven by ``(v, φ)``: speed of the rear-axle midpoint and steering angle (servoed);
+#: the driven left wheel gets ``v (1 − k)``.
+COMMAND = RateCommand(("v", "steer"), ("m/s", "rad"),
+                      wheels=("rear_left_wheel", "rear_right_wheel", "front_wheel"),
+                      steers=("steer",), servo=(Servo(1, "steer", 3),),
+                      adjust=left_wheel_speed,
+                      kinematics=lambda p: TricycleKinematics(
+                          params_or_default(p, TricycleParams)))
+
 SPEC = RobotSpec(
     name=NAME,
     description="tricycle on a free joint: steered front wheel, left rear wheel driven, "
@@ -118,4 +136,5 @@ SPEC = RobotSpec(
     probes=(free_wheel_probe,),
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="figure eight",
     render_scenario="figure eight", picture=Picture(joint_angles={"steer": 0.35}),
+    command=COMMAND,
 )

@@ -21,6 +21,7 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import disc as builder
 from wmr_mujoco.models.params import DiscParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.command import RateCommand
 from wmr_mujoco.robots.disc import sliding
 from wmr_mujoco.robots.disc.wheel import mounted_wheel
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
@@ -154,6 +155,11 @@ SCENARIOS = (
                          "against the Coulomb closed form, worst over the pulses"),
 )
 
+#: Driven by ``(v, ω)``: rolling speed and the rate of the steering hinge, which is the
+#: disc's heading (no steering joint relative to a chassis).
+COMMAND = RateCommand(("v", "omega"), ("m/s", "rad/s"), wheels=("wheel",),
+                      kinematics=lambda p: DiscKinematics(params_or_default(p, DiscParams)))
+
 SPEC = RobotSpec(
     name=NAME,
     description="single steerable thin disc on a vertical mount; inputs wheel rate and "
@@ -164,5 +170,5 @@ SPEC = RobotSpec(
     judges={ScenarioKind.DYNAMIC: judge_rolling},
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="constant steering",
     render_scenario="sinusoidal steering", picture=Picture(joint_angles={"steer": 0.35}),
-    clips=(Clip(duration=5.0),), scene_extras=builder.floor_pair,
+    clips=(Clip(duration=5.0),), scene_extras=builder.floor_pair, command=COMMAND,
 )

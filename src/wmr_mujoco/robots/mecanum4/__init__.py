@@ -15,8 +15,10 @@ from collections.abc import Mapping
 import mujoco
 
 from wmr_mujoco.models.builders import mecanum4 as builder
+from wmr_mujoco.models.params import params_or_default
 from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.command import RateCommand
 from wmr_mujoco.robots.mecanum4 import dynamics, kinematics, ripple
 from wmr_mujoco.robots.mecanum4.grouped import Group
 from wmr_mujoco.robots.spec import RobotSpec
@@ -119,6 +121,13 @@ def ramp_probes(scenario: Scenario, model: mujoco.MjModel, adapter: Adapter,
         return None
     return omni_probes(scenario, model, adapter, targets)
 
+#: Driven by the body twist ``(u, v, r)`` (ideal wheel rates ``H(γ) ν``); the kinematic
+#: backend's pose is the roller colliders' realised kinematics (the judged model).
+COMMAND = RateCommand(("u", "v", "r"), ("m/s", "m/s", "rad/s"),
+                      wheels=builder.WHEEL_NAMES,
+                      kinematics=lambda p: kinematics.MecanumKinematics(
+                          params_or_default(p, MecanumParams)))
+
 SPEC = RobotSpec(
     name=NAME,
     description="four mecanum wheels (O layout), each with 16 passive ideal-profile "
@@ -131,5 +140,5 @@ SPEC = RobotSpec(
     probes=(ramp_probes,),
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="translate+rotate (ramp)",
     bench_scenario="translate+rotate (ramp)", render_scenario="translate+rotate (ramp)",
-    scene_extras=builder.floor_pairs,
+    scene_extras=builder.floor_pairs, command=COMMAND,
 )

@@ -16,9 +16,10 @@ from __future__ import annotations
 
 from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.command import TorqueCommand
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.robots.whipple import eigen, stability
-from wmr_mujoco.robots.whipple.rolling import NAME
+from wmr_mujoco.robots.whipple.rolling import NAME, readings
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
 
 
@@ -45,6 +46,14 @@ SCENARIOS = (
     _push(stability.UNSTABLE_SPEED, "below the weave speed, it falls"),
 )
 
+#: Driven by its own actuators, the rear-wheel and steer torques. It cannot stand still:
+#: a reset starts it rolling upright at the ``rolling`` keyframe's speed (inside the
+#: self-stable range), with no settling.
+COMMAND = TorqueCommand(("rear_torque", "steer_torque"), ("N·m", "N·m"),
+                        wheels=("rear_wheel", "front_wheel"), steers=("steer",),
+                        settle=0.0, keyframe="rolling", extras=readings,
+                        actuators=("rear_torque", "steer_torque"))
+
 SPEC = RobotSpec(
     name=NAME,
     description="Whipple benchmark bicycle (Meijaard et al. 2007): knife-edge wheels, "
@@ -54,4 +63,5 @@ SPEC = RobotSpec(
     render_scenario=push_name(5.0),
     picture=Picture(keyframe="upright", joint_angles={"steer": 0.3}),
     clips=(Clip(duration=8.0), Clip(push_name(3.0), "whipple_fall.gif", 3.0)),
+    command=COMMAND,
 )

@@ -99,6 +99,16 @@ def push(model: mujoco.MjModel, data: mujoco.MjData, lean_rate: float) -> None:
     mujoco.mj_forward(model, data)
 
 
+def readings(model: mujoco.MjModel, data: mujoco.MjData) -> dict[str, float]:
+    """Lean (rad), lean rate (rad/s), steer (rad) and steer rate (rad/s) of ``data``.
+
+    The lean rate is the rear frame's body ``ω_x``: with ``R = R_z(ψ) R_x(φ)`` (the rear
+    frame level in pitch) the body angular velocity is ``(φ̇, ψ̇ sin φ, ψ̇ cos φ)``.
+    """
+    return {"lean": lean_angle(data.qpos[3:7]), "lean_rate": float(data.qvel[ROLL]),
+            "steer": float(data.qpos[8]), "steer_rate": float(data.qvel[STEER])}
+
+
 def lean_angle(quat: np.ndarray) -> float:
     """Lean φ (positive to the right) of the rear frame, ``φ = asin(R[2, 1])``.
 
