@@ -4,8 +4,9 @@
 duration and measures how well it tracked:
 
 * cross-track error ``e(t)``: signed distance from the path (> 0 left) of the point the
-  controller steers onto it (the pose point; Stanley: the front axle), every control period; its worst ``max |e|`` and RMS ``√(mean e²)`` over the
-  run, and the worst over the run's second half (the start offset has been corrected:
+  controller steers onto it (the pose point; Stanley: the front axle), every control
+  period; its worst ``max |e|`` and RMS ``√(mean e²)`` over the run, and the worst over
+  the run's second half (the start offset has been corrected:
   what remains is the tracking of the path itself);
 * final pose error: distance and heading difference at the end from the controller's
   own reference — the goal pose (go-to-pose: the end of an open path, the half-way
@@ -177,19 +178,27 @@ def compare(robot_name: str, controller_name: str, path_name: str, seed: int = 0
         SimulationDivergedError: the physics diverged.
     """
     from wmr_mujoco.drive import make
+    from wmr_mujoco.robots import get_spec
 
-    registry.check_controller(controller_name)
+    spec = get_spec(robot_name)
+    if spec.command is None or spec.params_type is None:
+        raise ValueError(f"robot {robot_name!r} cannot be driven by a controller")
+    p = params if params is not None else spec.params_type()
+    registry.build(controller_name, spec.command.names, p)  # checks before any work
     path = make_path(path_name, seed)
     robots = {b: make(robot_name, backend=b, control_period=control_period, params=params)
               for b in ("mujoco", "kinematic")}
-    names = robots["mujoco"].command_space.names
-    p = params if params is not None else robots["mujoco"].spec.params_type()
     runs = {}
     for backend, robot in robots.items():
-        controller = registry.build(controller_name, names, p)
+        controller = registry.build(controller_name, spec.command.names, p)
         runs[backend] = run(robot, controller, path, start_pose(path, offset),
                             duration(controller, path, registry.SPEED))
     return Comparison(runs["mujoco"], runs["kinematic"])
+
+
+def duration_of(r: Run) -> float:
+    """Length of a run, s."""
+    return float(r.time[-1])
 
 
 def draw(k: int) -> tuple[float, float, float]:

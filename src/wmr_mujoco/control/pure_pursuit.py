@@ -65,8 +65,11 @@ class PurePursuit(Controller):
         super().__init__(CommandKind.UNICYCLE if wheelbase is None else CommandKind.CAR)
 
     def reset(self) -> None:
-        """Start the progress along the path at its start (the search for the nearest
-        point then follows the path, even where it crosses itself)."""
+        """Start the progress along the path at its start.
+
+        The search for the nearest point then follows the path, even where it crosses
+        itself (the figure eight).
+        """
         self._s: float = 0.0
 
     def curvature(self, state: StateLike, path: Path) -> float:

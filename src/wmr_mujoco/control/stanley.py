@@ -67,8 +67,11 @@ class Stanley(Controller):
         super().__init__(command_kind(kind))
 
     def reset(self) -> None:
-        """Start the progress along the path at its start (the search for the nearest
-        point then follows the path, even where it crosses itself)."""
+        """Start the progress along the path at its start.
+
+        The search for the nearest point then follows the path, even where it crosses
+        itself (the figure eight).
+        """
         self._s: float = 0.0
 
     def tracking_point(self, pose: np.ndarray) -> np.ndarray:
