@@ -221,6 +221,9 @@ def build_parser() -> argparse.ArgumentParser:
                        help="fewer repeats and cases (`make readme` refuses its report)")
     bench.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     bench.set_defaults(func=_cmd_bench)
+    from wmr_mujoco.control.cli_drive import register as register_drive
+
+    register_drive(sub)
     return parser
 
 

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -177,23 +178,48 @@ def compare(robot_name: str, controller_name: str, path_name: str, seed: int = 0
             the robot, or a robot without a kinematic model (before any run).
         SimulationDivergedError: the physics diverged.
     """
-    from wmr_mujoco.drive import make
+    return compare_robots(robot_name, controller_name, path_name, seed, offset, params,
+                          control_period)[0]
+
+
+def check_task(robot_name: str, controller_name: str, path_name: str, seed: int = 0,
+               params: RobotParams | None = None) -> tuple[Any, Path]:
+    """The robot's parameters and the path, after checking the task (no simulation).
+
+    Raises:
+        ValueError: as :func:`compare`.
+    """
     from wmr_mujoco.robots import get_spec
 
     spec = get_spec(robot_name)
     if spec.command is None or spec.params_type is None:
         raise ValueError(f"robot {robot_name!r} cannot be driven by a controller")
     p = params if params is not None else spec.params_type()
-    registry.build(controller_name, spec.command.names, p)  # checks before any work
-    path = make_path(path_name, seed)
+    if registry.build(controller_name, spec.command.names, p).reference_type == "upright":
+        raise ValueError(f"controller {controller_name!r} follows no path")
+    if spec.command.analytic(params) is None:
+        raise ValueError(f"robot {robot_name!r} has no kinematic model to compare with")
+    return p, make_path(path_name, seed)
+
+
+def compare_robots(robot_name: str, controller_name: str, path_name: str, seed: int = 0,
+                   offset: tuple[float, float, float] = (0.0, 0.0, 0.0),
+                   params: RobotParams | None = None, control_period: float = PERIOD
+                   ) -> tuple[Comparison, dict[str, Any], Path]:
+    """:func:`compare`, with the two stepped robots (by backend) and the path."""
+    from wmr_mujoco.drive import make
+    from wmr_mujoco.robots import get_spec
+
+    p, path = check_task(robot_name, controller_name, path_name, seed, params)
+    names = get_spec(robot_name).command.names
     robots = {b: make(robot_name, backend=b, control_period=control_period, params=params)
               for b in ("mujoco", "kinematic")}
     runs = {}
     for backend, robot in robots.items():
-        controller = registry.build(controller_name, spec.command.names, p)
+        controller = registry.build(controller_name, names, p)
         runs[backend] = run(robot, controller, path, start_pose(path, offset),
                             duration(controller, path, registry.SPEED))
-    return Comparison(runs["mujoco"], runs["kinematic"])
+    return Comparison(runs["mujoco"], runs["kinematic"]), robots, path
 
 
 def duration_of(r: Run) -> float:
