@@ -52,7 +52,7 @@ def test_late_convergence_rates_are_the_linear_modes(loop, rate):
     of s² + (k_α − k_ρ) s − k_ρ k_β = 0 (for 1, 6, −5: (−5 + √5)/2 = −1.382 1/s). Rates
     fitted over 4-10 s (the fast root −3.62 1/s has faded by e^{-2.2·4} against the slow
     one) are within 2 % (the zero-order hold over 10 ms shifts them by O(Δt · 4) < 1 %)."""
-    c = GoToPose(max_speed=10.0, max_rate=100.0)
+    c = GoToPose(max_speed=10.0, max_rate=100.0, tolerance=0.0)
     t, poses, _ = loop(c, np.zeros(3), [-0.3, 0.2, 0.4], 10.0, 0.01)
     kr, ka, kb = 1.0, 6.0, -5.0
     slow = (-(ka - kr) + math.sqrt((ka - kr) ** 2 + 4 * kr * kb)) / 2
@@ -61,10 +61,17 @@ def test_late_convergence_rates_are_the_linear_modes(loop, rate):
     assert rate(t[late], np.hypot(poses[late, 0], poses[late, 1])) == pytest.approx(kr, rel=0.02)
 
 
+def test_stops_within_the_tolerance(state):
+    """Inside the arrival distance the command is zero, outside it is not."""
+    c = GoToPose(tolerance=1e-3)
+    assert not c(state(np.array([0.0009, 0.0, 0.3])), np.zeros(3), 0.0).any()
+    assert c(state(np.array([0.0011, 0.0, 0.3])), np.zeros(3), 0.0).any()
+
+
 def test_goal_behind_backs_up(loop):
     """Goal 1 m straight behind, same heading: the robot reverses (v < 0) without turning
     around, and arrives."""
-    c = GoToPose()
+    c = GoToPose(tolerance=0.0)
     _, poses, cmds = loop(c, np.zeros(3), [1.0, 0.0, 0.0], 15.0, 0.01)
     assert (cmds[:, 0] <= 0).all()
     assert np.abs(poses[:, 2]).max() < 1e-9

@@ -33,6 +33,12 @@ When the goal lies behind (``α ∉ (−π/2, π/2]``) the robot backs up: ``v =
 ``α = −θ + atan2(Δy, Δx)`` measured from the reversed heading (Siegwart's remark), so the
 same analysis holds.
 Speed and yaw-rate saturation keep the direction of the command (both scaled together).
+
+The polar coordinates are singular at the goal: at ``ρ → 0`` the angles ``α, β`` are
+undefined, and in the physics micrometres of contact jitter swing them by radians (the
+law then spins the robot away again). Within ``tolerance`` of the goal position the
+command is zero: the robot has arrived (the gains above bring the heading in first, so
+it has arrived in heading too — ``|β| < |ρ|``-order).
 """
 
 from __future__ import annotations
@@ -52,6 +58,7 @@ class GoToPose(Controller):
         max_speed: |v| limit, m/s.
         max_rate: |ω| limit, rad/s.
         reverse: allow backing up to a goal behind.
+        tolerance: arrival distance, m (0: never stop).
 
     Raises:
         ValueError: gains violating the stability conditions, or bad limits.
@@ -63,6 +70,7 @@ class GoToPose(Controller):
 
     def __init__(self, k_rho: float = 1.0, k_alpha: float = 6.0, k_beta: float = -5.0,
                  max_speed: float = 0.5, max_rate: float = 2.0, reverse: bool = True,
+                 tolerance: float = 1e-3,
                  kind: CommandKind | str = CommandKind.UNICYCLE) -> None:
         gains = (k_rho, k_alpha, k_beta)
         if not all(isinstance(g, (int, float)) and math.isfinite(g) for g in gains) or not (
@@ -73,6 +81,10 @@ class GoToPose(Controller):
         self.max_speed = positive("max_speed", max_speed)
         self.max_rate = positive("max_rate", max_rate)
         self.reverse = bool(reverse)
+        if not (isinstance(tolerance, (int, float)) and math.isfinite(tolerance)
+                and tolerance >= 0):
+            raise ValueError(f"tolerance = {tolerance!r}; must be a finite number >= 0 m")
+        self.tolerance = float(tolerance)
         super().__init__(kind)
 
     def linear_matrix(self) -> np.ndarray:
@@ -103,6 +115,8 @@ class GoToPose(Controller):
         if goal.shape != (3,) or not np.isfinite(goal).all():
             raise ValueError(f"goal pose = {reference!r}; must be a finite (x, y, heading)")
         rho, alpha, beta, direction = self.polar(np.asarray(state.pose, float), goal)
+        if rho < self.tolerance:
+            return np.zeros(2)
         v = direction * self.k_rho * rho
         omega = self.k_alpha * alpha + self.k_beta * beta
         scale = max(1.0, abs(v) / self.max_speed, abs(omega) / self.max_rate)
