@@ -113,4 +113,5 @@ def make(robot: str, backend: str = "mujoco", control_period: float = 0.02,
         robot_ = MujocoRobot(spec, model, mode_.value, control_period,
                              _actuator_space(model, torque), None, actuation)
     assert np.all(robot_.command_space.low <= robot_.command_space.high)
+    robot_.params = params
     return robot_

@@ -19,6 +19,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.drive.state import CommandSpace, RobotState
+from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots.spec import RobotSpec
 
 #: Most states :attr:`Robot.history` keeps (the oldest are dropped): 10⁵ periods, over
@@ -92,6 +93,8 @@ class Robot(abc.ABC):
     backend: str = ""
     model: mujoco.MjModel | None = None
     data: mujoco.MjData | None = None
+    #: The robot's parameters (None: the checked-in model), set by ``make``.
+    params: RobotParams | None = None
 
     def __init__(self, spec: RobotSpec, mode: str, control_period: float,
                  command_space: CommandSpace) -> None:
@@ -108,6 +111,7 @@ class Robot(abc.ABC):
                                 strict=True))
         self._warned = False
         self._history: deque[RobotState] = deque(maxlen=HISTORY_LIMIT)
+        self._commands: deque[np.ndarray] = deque(maxlen=HISTORY_LIMIT)
         self._state: RobotState | None = None
 
     # -- public API ---------------------------------------------------------------
@@ -127,6 +131,7 @@ class Robot(abc.ABC):
         pose = check_pose(pose)
         seed = check_seed(seed)
         self._history.clear()
+        self._commands.clear()
         self._state = self._reset(pose, seed)
         self._history.append(self._state)
         return self._state
@@ -151,6 +156,7 @@ class Robot(abc.ABC):
                 break
         self._state = self._advance(u)
         self._history.append(self._state)
+        self._commands.append(u.copy())
         return self._state
 
     def _clip(self, u: np.ndarray, stacklevel: int) -> np.ndarray:
@@ -178,6 +184,11 @@ class Robot(abc.ABC):
     def history(self) -> list[RobotState]:
         """The states since the last reset (at most :data:`HISTORY_LIMIT`, newest last)."""
         return list(self._history)
+
+    @property
+    def commands(self) -> list[np.ndarray]:
+        """The commands applied since the last reset (after clipping), one per step."""
+        return list(self._commands)
 
     def history_arrays(self) -> dict[str, np.ndarray]:
         """The history as arrays by field, one row per state (``extra`` left out)."""
