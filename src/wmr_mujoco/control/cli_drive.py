@@ -20,6 +20,9 @@ from pathlib import Path
 from wmr_mujoco.control.paths import PATHS
 from wmr_mujoco.control.registry import CONTROLLERS
 
+#: The clip's size and frame rate (small: a lap is a minute of run).
+CLIP = {"width": 320, "height": 240, "fps": 10}
+
 
 def register(subparsers: argparse._SubParsersAction) -> None:
     """Add the ``drive`` command to ``wmr``'s subcommands."""
@@ -83,7 +86,8 @@ def run_command(args: argparse.Namespace) -> int:
 
         print(f"wrote {plot_comparison(comp, path, args.out / 'drive.png')}")
         if args.clip:
-            print(f"wrote {robots['mujoco'].film(args.out / 'drive.mp4')}")
+            clip = robots["mujoco"].film(args.out / "drive.mp4", **CLIP)
+            print(f"wrote {clip}")
     return 0
 
 
