@@ -11,7 +11,8 @@ duration and measures how well it tracked:
 * final pose error: distance and heading difference at the end from the controller's
   own reference — the goal pose (go-to-pose: the end of an open path, the half-way
   point of a closed one), the reference at the final time
-  (trajectory trackers), the nearest path point and its tangent (path followers).
+  (trajectory trackers), the path point nearest the tracking point and its tangent (path
+  followers).
 
 :func:`compare` runs the same task on the ``mujoco`` backend (contact physics) and the
 ``kinematic`` backend (the robot's analytic model), from the same start;
@@ -157,14 +158,16 @@ def run(robot, controller: Controller, path: Path, start: np.ndarray, seconds: f
         e, hint = path.cross_track(controller.tracking_point(p), hint)
         errors.append(e)
     final = pose[-1]
+    point = final[:2]
     if isinstance(ref, Trajectory):
         target = ref.at(robot.time)[0].pose
     elif isinstance(ref, Path):
-        target = path.closest(final, hint).pose
+        point = controller.tracking_point(final)
+        target = path.closest(point, hint).pose
     else:
         target = np.asarray(ref, float)
     return Run(robot.backend, np.arange(len(pose)) * robot.control_period, pose,
-               np.array(errors), float(np.hypot(*(final[:2] - target[:2]))),
+               np.array(errors), float(np.hypot(*(point - target[:2]))),
                abs(wrap(float(final[2] - target[2]))))
 
 
