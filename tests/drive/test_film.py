@@ -11,6 +11,10 @@ import pytest
 
 from wmr_mujoco.drive import make
 
+#: Drawing tests: skipped, with the reason, where no OpenGL backend exists (the ``gl``
+#: marker of the test suite's conftest).
+pytestmark = pytest.mark.gl
+
 
 def _read(path: Path) -> np.ndarray:
     """Decode with imageio-ffmpeg's reader (mediapy.read_video needs an older ffmpeg)."""

@@ -51,3 +51,18 @@ def test_the_free_disc_has_no_actuators() -> None:
 def test_whipple_has_no_kinematic_backend() -> None:
     with pytest.raises(ValueError, match="'whipple' has no kinematic model"):
         make("whipple", backend="kinematic")
+
+
+RAW = [(name, mode) for name in drivable() for mode in ("wheels", "torque")
+       if not (mode == "torque" and name == "whipple")]  # whipple: its own torque motors
+
+
+@pytest.mark.parametrize(("name", "mode"), RAW)
+def test_raw_actuator_modes_step(name: str, mode: str) -> None:
+    robot = make(name, mode=mode)
+    space = robot.command_space
+    assert space.names == tuple(robot.model.actuator(i).name for i in range(robot.model.nu))
+    robot.reset()
+    for _ in range(3):
+        state = robot.step(0.1 * space.high)
+    assert np.all(np.isfinite(state.pose)) and state.time == pytest.approx(0.06)

@@ -4,8 +4,9 @@
 prints one Markdown table: for every drivable robot on the ``"mujoco"`` backend, control
 steps per second of
 
-* **bare loop**: per control period, ``data.ctrl`` written once and ``n = T/Δt`` calls of
-  ``mujoco.mj_step`` in Python, nothing read;
+* **bare loop**: per control period, ``data.ctrl`` written once (the controls that
+  ``robot.step`` applied in that period, recorded beforehand, so both runs simulate the
+  same motion) and ``n = T/Δt`` calls of ``mujoco.mj_step`` in Python, nothing read;
 * **robot.step**: :meth:`wmr_mujoco.drive.Robot.step` with the robot's natural command
   (a fifth of its limits): the command checked, turned into controls, the ``n`` timesteps,
   the health check and the :class:`~wmr_mujoco.drive.RobotState` read and recorded;
@@ -57,15 +58,18 @@ def measure(name: str, period: float, steps: int, rounds: int) -> dict[str, obje
     start = mujoco.MjData(model)
     mujoco.mj_copyData(start, model, data)
     command = 0.2 * robot.command_space.high
-    ctrl = data.ctrl.copy()
-    robot.step(command)
-    ctrl[:] = data.ctrl
+    # The controls robot.step applies, period by period: the bare loop replays them, so
+    # that both simulate the same motion.
+    controls = []
+    for _ in range(steps):
+        robot.step(command)
+        controls.append(data.ctrl.copy())
     bare_data = mujoco.MjData(model)
     n = robot.nstep
 
     def bare() -> None:
         mujoco.mj_copyData(bare_data, model, start)
-        for _ in range(steps):
+        for ctrl in controls:
             bare_data.ctrl[:] = ctrl
             for _ in range(n):
                 mujoco.mj_step(model, bare_data)

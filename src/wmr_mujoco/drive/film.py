@@ -37,7 +37,7 @@ def _model_trail(robot: Robot) -> np.ndarray | None:
     if robot.mode != "command" or robot.spec.command.analytic(None) is None:
         return None
     twin = make(robot.spec.name, backend="kinematic", control_period=robot.control_period,
-                params=getattr(robot, "params", None))
+                params=robot.params)
     twin.reset(robot.history[0].pose)
     for command in robot.commands:
         twin.step(command)
@@ -60,8 +60,8 @@ def film(robot: Robot, path: str | Path, width: int = 640, height: int = 480,
     select_backend()
     import mujoco
 
+    import wmr_mujoco
     from wmr_mujoco.drive.readout import place
-    from wmr_mujoco.models.loading import load
     from wmr_mujoco.render import rendering
 
     path = rendering.check_output_path(Path(path), rendering.VIDEO_SUFFIXES
@@ -73,7 +73,7 @@ def film(robot: Robot, path: str | Path, width: int = 640, height: int = 480,
     if len(history) < 2:
         raise ValueError(f"nothing to film: {len(history)} recorded state(s); call "
                          "robot.reset() and robot.step() first")
-    model = load(robot.spec.name, getattr(robot, "params", None))
+    model = wmr_mujoco.load(robot.spec.name, robot.params)
     rendering.check_camera(model, camera)
     data = mujoco.MjData(model)
     qpos = list(getattr(robot, "qpos_history", ()))

@@ -41,6 +41,11 @@ class WheelGeometry:
     Args:
         model: the compiled scene (read at its rest pose ``qpos0``).
         command: the wheels and steering joints.
+
+    Attributes:
+        centres: wheel centres in the ``base`` frame, ``(x, y)`` per wheel, m.
+        axles: wheel axles in the ``base`` frame at zero steering, ``(x, y)`` per wheel.
+        radii: wheel radii (centre heights at rest), m.
         steer_of_wheel: per wheel, the index of the steering joint that turns it, or -1.
     """
 
@@ -126,6 +131,7 @@ class KinematicRobot(Robot):
                         if int(model.actuator_trnid[i, 0]) in wheel_joint]
         self.geometry = WheelGeometry(model, cmap)
         self._x = np.zeros(len(adapter.state_names))
+        self._periods = 0
 
     @property
     def analytic_state(self) -> np.ndarray:
@@ -142,6 +148,7 @@ class KinematicRobot(Robot):
         x = np.array(self.adapter.sim_state(self._model, data), float)
         x[:3] = pose
         self._x = x
+        self._periods = 0
         return self._read(0.0, np.zeros(len(self.cmap.names)))
 
     def _advance(self, command: np.ndarray) -> RobotState:
@@ -159,7 +166,8 @@ class KinematicRobot(Robot):
             raise SimulationDivergedError(f"{self.spec.name}: the kinematic model's state "
                                           f"became non-finite at t={self.time:.4f} s: {x}")
         self._x = np.asarray(x, float)
-        return self._read(float(self.state.time) + self.control_period, u)
+        self._periods += 1
+        return self._read(self._periods * self.control_period, u)
 
     def _read(self, time: float, u: np.ndarray) -> RobotState:
         """The state of ``x`` with input ``u`` held."""

@@ -7,13 +7,13 @@ import enum
 import mujoco
 import numpy as np
 
+import wmr_mujoco
 from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.drive.physics import MujocoRobot
 from wmr_mujoco.drive.robot import Robot
 from wmr_mujoco.drive.state import CommandSpace
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.common import NUSER_ACTUATOR
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import ROBOTS, get_spec
 
@@ -90,7 +90,7 @@ def make(robot: str, backend: str = "mujoco", control_period: float = 0.02,
         if mode_ is not Mode.COMMAND:
             raise ValueError(f"mode = {mode!r}: the kinematic backend takes "
                              f"mode='command' only")
-    model = load(robot, params)
+    model = wmr_mujoco.load(robot, params)
     if mode_ is Mode.TORQUE and model.nuser_actuator < NUSER_ACTUATOR:
         raise ValueError(f"mode = 'torque': robot {robot!r} keeps its own actuators "
                          "(no rate/torque switching); use mode='command' or 'wheels'")

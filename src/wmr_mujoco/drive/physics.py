@@ -4,11 +4,14 @@ A step writes the actuator controls once and advances ``n = T / Δt`` timesteps 
 ``mj_step(model, data, n)`` call (the controls are held over the period, a zero-order hold
 like the validation runner's), then checks the run's health and reads the state.
 
-``mj_step`` leaves the derived quantities (frames, velocities of bodies, contacts) at the
-start of its last timestep; the readout first brings frames and body velocities up to the
-final ``qpos, qvel`` with ``mj_kinematics``, ``mj_comPos`` and ``mj_comVel`` (no collision
-or constraint solve: a fraction of a timestep's cost). Wheel contacts are the last
-timestep's, at most ``Δt`` old.
+``mj_step`` leaves the derived quantities (frames, body velocities, contacts, sensors) at
+the start of its last timestep. So a period runs as ``mj_step2`` (finishing the timestep
+that the previous period's ``mj_step1`` began), ``mj_step(n − 1)``, then ``mj_step1``: the
+same ``n`` timesteps, bit for bit (the controls enter in ``mj_step2``), with everything the
+readout needs computed for the final ``qpos, qvel`` at no extra cost. (MuJoCo's RK4
+integrator cannot be split: such a model steps ``n`` whole timesteps and brings frames and
+body velocities up to date with ``mj_kinematics``, ``mj_comPos``, ``mj_comVel``; its
+contacts are then one timestep old.)
 """
 
 from __future__ import annotations
@@ -57,6 +60,7 @@ class MujocoRobot(Robot):
         self._wheel_qpos = np.array([model.jnt_qposadr[model.joint(w).id]
                                      for w in self.wheel_names], dtype=int)
         self._t0 = 0.0
+        self._split = model.opt.integrator != mujoco.mjtIntegrator.mjINT_RK4
         #: Generalised positions after every period since the reset, for :meth:`film`.
         self.qpos_history: deque[np.ndarray] = deque(maxlen=HISTORY_LIMIT)
 
@@ -64,7 +68,9 @@ class MujocoRobot(Robot):
         """Place at ``pose``, settle on the floor at rest, zero the velocities.
 
         Like the validation runner: the controls are 0 (wheel-rate servos hold the wheels,
-        steering targets stay at 0) for the command map's ``settle`` seconds.
+        steering targets stay at 0) for the command map's ``settle`` seconds. A command
+        map with a keyframe and no settling (the Whipple bicycle, which cannot stand
+        still) starts from the keyframe's state, velocities included, turned to ``pose``.
         """
         model, data, cmap = self.model, self.data, self.spec.command
         if cmap.keyframe is not None:
@@ -94,10 +100,17 @@ class MujocoRobot(Robot):
             data.ctrl[:] = command
         else:
             data.ctrl[:] = self._controller(data, command, self.control_period)
-        mujoco.mj_step(model, data, self.nstep)
-        self.reader.check(data)
-        mujoco.mj_kinematics(model, data)
-        mujoco.mj_comPos(model, data)
-        mujoco.mj_comVel(model, data)
+        if self._split:
+            mujoco.mj_step2(model, data)
+            if self.nstep > 1:
+                mujoco.mj_step(model, data, self.nstep - 1)
+            mujoco.mj_step1(model, data)
+            self.reader.check(data)
+        else:
+            mujoco.mj_step(model, data, self.nstep)
+            self.reader.check(data)
+            mujoco.mj_kinematics(model, data)
+            mujoco.mj_comPos(model, data)
+            mujoco.mj_comVel(model, data)
         self.qpos_history.append(data.qpos.copy())
         return self.reader.read(data, data.time - self._t0, self._state.pose[2])

@@ -65,6 +65,7 @@ class Reader:
         table = wheel_of_body(model, command.wheels)[model.geom_bodyid]
         #: Per geom, its wheel's index, or ``nwheel`` (a spare slot) for other geoms.
         self.geom_wheel = np.where(table >= 0, table, nwheel)
+        self._geom_wheel = self.geom_wheel.tolist()
         self.nwheel = nwheel
         self.extras = command.extras
         self._vel = np.zeros(6)
@@ -76,10 +77,13 @@ class Reader:
 
     def contacts(self, data: mujoco.MjData) -> np.ndarray:
         """Whether each wheel (or one of its rollers) has a contact."""
-        out = np.zeros(self.nwheel + 1, dtype=bool)
+        # A few contacts per step: a Python loop over them beats array indexing.
+        out = [False] * (self.nwheel + 1)
         if data.ncon:
-            out[self.geom_wheel[data.contact.geom]] = True
-        return out[:self.nwheel]
+            owner = self._geom_wheel
+            for g1, g2 in data.contact.geom.tolist():
+                out[owner[g1]] = out[owner[g2]] = True
+        return np.array(out[:self.nwheel])
 
     def check(self, data: mujoco.MjData) -> None:
         """Raise :class:`SimulationDivergedError` on any MuJoCo warning.

@@ -22,9 +22,10 @@ from wmr_mujoco.drive.state import CommandSpace, RobotState
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots.spec import RobotSpec
 
-#: Most states :attr:`Robot.history` keeps (the oldest are dropped): 10⁵ periods, over
-#: half an hour at 20 ms, a few tens of MB.
-HISTORY_LIMIT = 100_000
+#: Most states :attr:`Robot.history` keeps (the oldest are dropped): 5·10⁴ periods, over
+#: a quarter of an hour at 20 ms; about 1 kB each (with the MuJoCo backend's ``qpos``
+#: for :meth:`Robot.film`), at most some 50 MB for the robot with the most joints.
+HISTORY_LIMIT = 50_000
 #: Relative tolerance of "the control period is a whole number of timesteps".
 PERIOD_RTOL = 1e-9
 
@@ -145,7 +146,8 @@ class Robot(abc.ABC):
         Raises:
             RuntimeError: :meth:`reset` was not called.
             ValueError: wrong length, non-numeric or non-finite command (before stepping).
-            SimulationDivergedError: the simulation diverged.
+            SimulationDivergedError: the simulation diverged (the state stays the last
+                good one; :meth:`reset` before stepping again).
         """
         if self._state is None:
             raise RuntimeError("call robot.reset() before robot.step()")

@@ -82,7 +82,6 @@ class CommandMap(abc.ABC):
         """The command-to-controls map of one compiled model (indices looked up once)."""
 
 
-
 @dataclass(frozen=True)
 class Servo:
     """A command channel that is a steering angle, servoed through a rate input.
@@ -111,8 +110,9 @@ class RateCommand(CommandMap):
     Attributes:
         kinematics: ``params -> adapter``, the robot's kinematic validation adapter.
         servo: the channels that are steering angles (module docstring).
-        state_dependent: whether the adapter's ``controls`` read the analytic state
-            (then the MuJoCo backend reads it with ``sim_state`` every period).
+        state_dependent: whether the adapter's ``controls`` read the analytic state's
+            steering angles (the double steer's rear-wheel speed); the MuJoCo backend
+            fills them from the steering joints every period (the rest of the state 0).
         adjust: ``(adapter, u, φ) -> u``, where a command channel is not the adapter's
             input (the tricycle's speed of the rear-axle midpoint, the adapter's the
             driven wheel's); ``φ`` are the servo channels' steering targets at the start
@@ -212,13 +212,19 @@ class RateCommand(CommandMap):
         rest = np.zeros(len(adapter.state_names))
         w = self.matrix(adapter)
         direct = not self.servo and self.adjust is None
+        states = [s.state for s in self.servo]
+        joints = np.array([model.jnt_qposadr[model.actuator_trnid[
+            model.actuator(s.actuator).id, 0]] for s in self.servo], dtype=int)
 
         def controller(data: mujoco.MjData, command: np.ndarray, period: float) -> np.ndarray:
             u = command if direct else self.inputs(adapter, command, data.act[acts], period,
                                                    limits)
             if w is not None:
                 return w @ u
-            x = adapter.sim_state(model, data) if self.state_dependent else rest
+            x = rest
+            if self.state_dependent:
+                x = rest.copy()
+                x[states] = data.qpos[joints]
             return adapter.controls(u, x)
 
         return controller
