@@ -97,8 +97,8 @@ def bracket_table(draws: int = DRAWS) -> str:
     for robot in ("diffdrive", "disc"):
         for r in lie_bracket.sweep(robot, lie_bracket.EPSILONS, draws):
             rows.append(f"| {robot} | {r.eps:g} | {mm(r.exact_net)} | "
-                        f"{100 * r.bracket_error:.1f} % | {100 * r.model_error:.4f} % | "
-                        f"{100 * r.physics_worst:.2f} % ({100 * r.physics_median:.2f} %) | "
+                        f"{100 * r.bracket_error:.1f} % | {100 * r.model_error:.2g} % | "
+                        f"{100 * r.physics_worst:.2g} % ({100 * r.physics_median:.2g} %) | "
                         f"{r.physics_heading:.1e} |")
             print(rows[-1], flush=True)
     return "\n".join(rows) + (
