@@ -92,7 +92,7 @@ def whipple_table(draws: int = DRAWS) -> str:
 def bracket_table(draws: int = DRAWS) -> str:
     """The Lie-bracket sweep on diffdrive and disc."""
     rows = ["| robot | ε | exact net step, mm | second-order error | kinematic backend "
-            "error | physics error, worst (median) | physics |Δψ|, rad |",
+            "error | physics error, worst (median) | physics net heading change, rad |",
             "|---|---|---|---|---|---|---|"]
     for robot in ("diffdrive", "disc"):
         for r in lie_bracket.sweep(robot, lie_bracket.EPSILONS, draws):
