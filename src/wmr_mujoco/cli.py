@@ -257,6 +257,10 @@ def build_parser() -> argparse.ArgumentParser:
     from wmr_mujoco.audit.cli_audit import register as register_audit
 
     register_audit(sub)
+
+    from wmr_mujoco.control.cli_drive import register as register_drive
+
+    register_drive(sub)
     return parser
 
 
