@@ -84,9 +84,9 @@ def _cruise(model: mujoco.MjModel, steps: int) -> mujoco.MjData:
 
 def _plain_paired(params: OmniParams) -> mujoco.MjModel:
     """The scene with plain explicit pairs (``floor_pairs(plain=True)``) and no bits."""
+    from wmr_mujoco.lookup import build_scene
     from wmr_mujoco.models.builders import common
     from wmr_mujoco.models.builders import omni3 as builder
-    from wmr_mujoco.lookup import build_scene
 
     root = build_scene("omni3", params)
     builder.floor_pairs(root, params, plain=True)
@@ -101,8 +101,8 @@ def test_default_keeps_contact_bits_and_no_pairs():
 
 @pytest.mark.parametrize("params", [OmniParams(floor_impedance=0.001), None])
 def test_floor_pairs_name_every_roller_collider_once(params):
-    from wmr_mujoco.models.builders import common
     from wmr_mujoco.lookup import build_scene
+    from wmr_mujoco.models.builders import common
 
     if params is None:
         model = _plain_paired(OmniParams())
@@ -142,8 +142,8 @@ def test_plain_pairs_move_the_robot_as_contact_bits():
 
 
 def test_remedy_pairs_carry_the_derived_impedance_and_friction_damping():
-    from wmr_mujoco.models.builders import common
     from wmr_mujoco.lookup import build_scene
+    from wmr_mujoco.models.builders import common
 
     p = OmniParams(floor_impedance=0.002)
     model = mujoco.MjModel.from_xml_string(common.to_xml(build_scene("omni3", p)))
