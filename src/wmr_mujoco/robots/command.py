@@ -34,9 +34,10 @@ from wmr_mujoco.validation.adapters import Adapter
 
 #: ``extras(model, data) -> {name: value}``: robot-specific readings of a MuJoCo state.
 Extras = Callable[[mujoco.MjModel, mujoco.MjData], Mapping[str, float]]
-#: ``controller(data, command, period) -> ctrl``: actuator controls (length ``nu``)
-#: that hold ``command`` over the next ``period`` seconds.
-Controller = Callable[[mujoco.MjData, np.ndarray, float], np.ndarray]
+#: ``controller(data, command, period, ctrl)``: writes into ``ctrl`` (length ``nu``, the
+#: robot's ``data.ctrl``) the actuator controls that hold ``command`` over the next
+#: ``period`` seconds.
+Controller = Callable[[mujoco.MjData, np.ndarray, float, np.ndarray], None]
 
 
 @dataclass(frozen=True)
@@ -141,10 +142,12 @@ class RateCommand(CommandMap):
     def inputs(self, adapter: Adapter, command: np.ndarray, targets: np.ndarray,
                period: float, rate_limits: np.ndarray) -> np.ndarray:
         """The adapter's input ``u``: servo angles turned into rates, then ``adjust``."""
-        u = np.array(command, float)
-        for k, s in enumerate(self.servo):
-            u[s.channel] = servo_rate(float(command[s.channel]), float(targets[k]), period,
-                                      float(rate_limits[k]))
+        values = np.asarray(command, float).tolist()
+        if self.servo:
+            phi, limits = targets.tolist(), rate_limits.tolist()
+            for k, s in enumerate(self.servo):
+                values[s.channel] = servo_rate(values[s.channel], phi[k], period, limits[k])
+        u = np.array(values)
         return u if self.adjust is None else self.adjust(adapter, u, targets)
 
     def limits(self, model: mujoco.MjModel,
@@ -216,16 +219,18 @@ class RateCommand(CommandMap):
         joints = np.array([model.jnt_qposadr[model.actuator_trnid[
             model.actuator(s.actuator).id, 0]] for s in self.servo], dtype=int)
 
-        def controller(data: mujoco.MjData, command: np.ndarray, period: float) -> np.ndarray:
+        def controller(data: mujoco.MjData, command: np.ndarray, period: float,
+                       ctrl: np.ndarray) -> None:
             u = command if direct else self.inputs(adapter, command, data.act[acts], period,
                                                    limits)
             if w is not None:
-                return w @ u
+                np.matmul(w, u, out=ctrl)  # W u, written in place
+                return
             x = rest
             if self.state_dependent:
                 x = rest.copy()
                 x[states] = data.qpos[joints]
-            return adapter.controls(u, x)
+            ctrl[:] = adapter.controls(u, x)
 
         return controller
 
@@ -256,9 +261,9 @@ class TorqueCommand(CommandMap):
         """The command placed on its actuators."""
         ids = [model.actuator(a).id for a in self.actuators]
 
-        def controller(data: mujoco.MjData, command: np.ndarray, period: float) -> np.ndarray:
-            ctrl = np.zeros(model.nu)
+        def controller(data: mujoco.MjData, command: np.ndarray, period: float,
+                       ctrl: np.ndarray) -> None:
+            ctrl[:] = 0.0
             ctrl[ids] = command
-            return ctrl
 
         return controller
