@@ -112,8 +112,8 @@ class Reader:
 
         The heading is unwrapped next to ``last_heading``. Only the raw readings are taken
         now (:class:`MujocoState`): the pose, the ``base`` site's velocity
-        (``mj_objectVelocity``), copies of ``qpos`` and ``qvel``, the contacts' geom pairs
-        and the extras; the state's arrays are made from them when first read.
+        (``mj_objectVelocity``), a copy of ``qpos``, the wheel rates, the contacts' geom
+        pairs and the extras; the other arrays are made from them when first read.
         """
         data = self.data
         x, y, _ = self._xpos.tolist()
@@ -125,8 +125,8 @@ class Reader:
         extra = (MappingProxyType(dict(self.extras(self.model, data)))
                  if self.extras is not None else NO_EXTRAS)
         qpos = self._qpos.copy()
-        state = MujocoState(self, time, (x, y, h, u, v, r), qpos, self._qvel.copy(),
-                            data.contact.geom.tolist(), extra)
+        state = MujocoState(self, time, (x, y, h, u, v, r), qpos,
+                            self._qvel[self.wheel_dofs], data.contact.geom.tolist(), extra)
         return state, qpos, h
 
 
@@ -138,26 +138,29 @@ class MujocoState(RobotState):
     """
 
     def __init__(self, reader: Reader, time: float, pose_twist: tuple[float, ...],
-                 qpos: np.ndarray, qvel: np.ndarray, pairs: list[list[int]],
+                 qpos: np.ndarray, wheel_rates: np.ndarray, pairs: list[list[int]],
                  extra: MappingProxyType[str, float]) -> None:
         # Bypasses the frozen dataclass's __setattr__, as dataclasses' own __init__ does.
-        self.__dict__.update(_raw=(reader, time, pose_twist, qpos, qvel, pairs),
-                             extra=extra)
+        self.__dict__.update(_raw=(reader, time, pose_twist, qpos, pairs),
+                             wheel_rates=wheel_rates, extra=extra)
+
+    def __reduce__(self) -> tuple[type[RobotState], tuple[object, ...]]:
+        """Copied as a plain :class:`RobotState` of the same arrays (all computed)."""
+        return RobotState, (self.time, self.pose, self.twist, self.wheel_rates,
+                            self.steer_angles, self.wheel_contacts, self.extra)
 
     def __getattr__(self, name: str) -> np.ndarray:
         """Compute a field on its first access (later ones find it in ``__dict__``)."""
         raw = self.__dict__.get("_raw")
         if raw is None or name not in _LAZY:
             raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-        reader, time, pose_twist, qpos, qvel, pairs = raw
+        reader, time, pose_twist, qpos, pairs = raw
         fields = self.__dict__
         if name == "time":
             fields["time"] = np.array(time)
         elif name in ("pose", "twist"):
             both = np.array(pose_twist)  # one array, two views
             fields["pose"], fields["twist"] = both[:3], both[3:]
-        elif name == "wheel_rates":
-            fields[name] = qvel[reader.wheel_dofs]
         elif name == "steer_angles":
             fields[name] = qpos[reader.steer_qpos] if reader.nsteer else _EMPTY
         else:
@@ -170,7 +173,7 @@ class MujocoState(RobotState):
 
 
 #: The fields :class:`MujocoState` computes on first access.
-_LAZY = frozenset(("time", "pose", "twist", "wheel_rates", "steer_angles", "wheel_contacts"))
+_LAZY = frozenset(("time", "pose", "twist", "steer_angles", "wheel_contacts"))
 
 
 def _planar_joints(model: mujoco.MjModel) -> tuple[int, int, int]:

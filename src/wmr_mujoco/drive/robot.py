@@ -23,8 +23,8 @@ from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots.spec import RobotSpec
 
 #: Most states :attr:`Robot.history` keeps (the oldest are dropped): 5·10⁴ periods, over
-#: a quarter of an hour at 20 ms; about 1 kB each (with the MuJoCo backend's ``qpos``
-#: for :meth:`Robot.film`), at most some 50 MB for the robot with the most joints.
+#: a quarter of an hour at 20 ms; about 1-2 kB each (with the MuJoCo backend's ``qpos``
+#: for :meth:`Robot.film`), at most some 100 MB for the robot with the most joints.
 HISTORY_LIMIT = 50_000
 #: Relative tolerance of "the control period is a whole number of timesteps".
 PERIOD_RTOL = 1e-9

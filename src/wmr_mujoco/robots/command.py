@@ -142,11 +142,18 @@ class RateCommand(CommandMap):
     def inputs(self, adapter: Adapter, command: np.ndarray, targets: np.ndarray,
                period: float, rate_limits: np.ndarray) -> np.ndarray:
         """The adapter's input ``u``: servo angles turned into rates, then ``adjust``."""
-        values = np.asarray(command, float).tolist()
-        if self.servo:
-            phi, limits = targets.tolist(), rate_limits.tolist()
-            for k, s in enumerate(self.servo):
-                values[s.channel] = servo_rate(values[s.channel], phi[k], period, limits[k])
+        channels = [(s.channel, limit) for s, limit in
+                    zip(self.servo, np.asarray(rate_limits, float).tolist(), strict=True)]
+        return self._inputs(adapter, np.asarray(command, float).tolist(), targets, period,
+                            channels)
+
+    def _inputs(self, adapter: Adapter, values: list[float], targets: np.ndarray,
+                period: float, channels: list[tuple[int, float]]) -> np.ndarray:
+        """:meth:`inputs` of the command ``values``; ``channels``: ``(channel, ω_max)``."""
+        if channels:
+            phi = targets.tolist()
+            for k, (channel, limit) in enumerate(channels):
+                values[channel] = servo_rate(values[channel], phi[k], period, limit)
         u = np.array(values)
         return u if self.adjust is None else self.adjust(adapter, u, targets)
 
@@ -211,7 +218,8 @@ class RateCommand(CommandMap):
         assert adapter is not None
         acts = np.array([model.actuator_actadr[model.actuator(s.actuator).id]
                          for s in self.servo], dtype=int)
-        limits = self.rate_limits(model)
+        channels = [(s.channel, limit) for s, limit in
+                    zip(self.servo, self.rate_limits(model).tolist(), strict=True)]
         rest = np.zeros(len(adapter.state_names))
         w = self.matrix(adapter)
         direct = not self.servo and self.adjust is None
@@ -221,8 +229,8 @@ class RateCommand(CommandMap):
 
         def controller(data: mujoco.MjData, command: np.ndarray, period: float,
                        ctrl: np.ndarray) -> None:
-            u = command if direct else self.inputs(adapter, command, data.act[acts], period,
-                                                   limits)
+            u = command if direct else self._inputs(adapter, command.tolist(),
+                                                    data.act[acts], period, channels)
             if w is not None:
                 np.matmul(w, u, out=ctrl)  # W u, written in place
                 return
