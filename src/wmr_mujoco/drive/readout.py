@@ -126,7 +126,7 @@ class Reader:
                  if self.extras is not None else NO_EXTRAS)
         qpos = self._qpos.copy()
         state = MujocoState(self, time, (x, y, h, u, v, r), qpos,
-                            self._qvel[self.wheel_dofs], data.contact.geom.tolist(), extra)
+                            self._qvel[self.wheel_dofs], data.contact.geom.copy(), extra)
         return state, qpos, h
 
 
@@ -138,11 +138,18 @@ class MujocoState(RobotState):
     """
 
     def __init__(self, reader: Reader, time: float, pose_twist: tuple[float, ...],
-                 qpos: np.ndarray, wheel_rates: np.ndarray, pairs: list[list[int]],
+                 qpos: np.ndarray, wheel_rates: np.ndarray, pairs: np.ndarray,
                  extra: MappingProxyType[str, float]) -> None:
-        # Bypasses the frozen dataclass's __setattr__, as dataclasses' own __init__ does.
-        self.__dict__.update(_raw=(reader, time, pose_twist, qpos, pairs),
-                             wheel_rates=wheel_rates, extra=extra)
+        # Written into __dict__ as the frozen dataclass's own __init__ does; few Python
+        # containers per state (the garbage collector tracks each one in the history).
+        fields = self.__dict__
+        fields["_reader"] = reader
+        fields["_time"] = time
+        fields["_pose_twist"] = pose_twist
+        fields["_qpos"] = qpos
+        fields["_pairs"] = pairs
+        fields["wheel_rates"] = wheel_rates
+        fields["extra"] = extra
 
     def __reduce__(self) -> tuple[type[RobotState], tuple[object, ...]]:
         """Copied as a plain :class:`RobotState` of the same arrays (all computed)."""
@@ -151,22 +158,21 @@ class MujocoState(RobotState):
 
     def __getattr__(self, name: str) -> np.ndarray:
         """Compute a field on its first access (later ones find it in ``__dict__``)."""
-        raw = self.__dict__.get("_raw")
-        if raw is None or name not in _LAZY:
-            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-        reader, time, pose_twist, qpos, pairs = raw
         fields = self.__dict__
+        reader = fields.get("_reader")
+        if reader is None or name not in _LAZY:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
         if name == "time":
-            fields["time"] = np.array(time)
+            fields["time"] = np.array(fields["_time"])
         elif name in ("pose", "twist"):
-            both = np.array(pose_twist)  # one array, two views
+            both = np.array(fields["_pose_twist"])  # one array, two views
             fields["pose"], fields["twist"] = both[:3], both[3:]
         elif name == "steer_angles":
-            fields[name] = qpos[reader.steer_qpos] if reader.nsteer else _EMPTY
+            fields[name] = fields["_qpos"][reader.steer_qpos] if reader.nsteer else _EMPTY
         else:
             out = [False] * (reader.nwheel + 1)
             owner = reader.geom_wheel_list
-            for g1, g2 in pairs:
+            for g1, g2 in fields["_pairs"].tolist():
                 out[owner[g1]] = out[owner[g2]] = True
             fields[name] = np.array(out[:reader.nwheel])
         return fields[name]

@@ -28,6 +28,8 @@ from wmr_mujoco.robots.spec import RobotSpec
 HISTORY_LIMIT = 50_000
 #: Relative tolerance of "the control period is a whole number of timesteps".
 PERIOD_RTOL = 1e-9
+#: The dtype of native float64 arrays (a singleton: compared with ``is``).
+_FLOAT64 = np.dtype(np.float64)
 
 
 def substeps(control_period: float, timestep: float) -> int:
@@ -166,7 +168,7 @@ class Robot(abc.ABC):
         """
         kind = type(command)
         if kind is np.ndarray:
-            if command.dtype == np.float64 and command.shape == self._shape:
+            if command.dtype is _FLOAT64 and command.shape == self._shape:
                 for value, (lo, hi) in zip(command.tolist(), self._bounds, strict=True):
                     if not lo <= value <= hi:
                         break
