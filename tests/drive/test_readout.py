@@ -117,3 +117,14 @@ def test_a_state_is_frozen_and_its_arrays_are_kept() -> None:
     assert type(twin) is RobotState
     for field in dataclasses.fields(RobotState):
         assert getattr(twin, field.name) is getattr(state, field.name)
+
+
+def test_read_gives_the_state_of_the_readers_own_data() -> None:
+    """``Reader.read`` (the learning environments re-read a state after a task's start)."""
+    robot = make("diffdrive")
+    state = robot.reset(pose=(0.1, 0.2, 0.3))
+    again = robot.reader.read(robot.data, 0.0, 0.3)
+    for field in ("pose", "twist", "wheel_rates", "wheel_contacts"):
+        np.testing.assert_array_equal(getattr(again, field), getattr(state, field))
+    with pytest.raises(ValueError, match="only the MjData it was made with"):
+        robot.reader.read(mujoco.MjData(robot.model), 0.0, 0.3)

@@ -117,12 +117,12 @@ class MujocoRobot(Robot):
             mujoco.mj_kinematics(model, data)
             mujoco.mj_comPos(model, data)
             mujoco.mj_comVel(model, data)
-        state, qpos, self._heading = self.reader.read(data.time - self._t0, self._heading)
+        state, qpos, self._heading = self.reader.take(data.time - self._t0, self._heading)
         self.qpos_history.append(qpos)
         return state
 
     def _read(self, time: float) -> RobotState:
         """The state in ``data`` at ``time`` (its ``qpos`` recorded for :meth:`film`)."""
-        state, qpos, self._heading = self.reader.read(time, self._heading)
+        state, qpos, self._heading = self.reader.take(time, self._heading)
         self.qpos_history.append(qpos)
         return state

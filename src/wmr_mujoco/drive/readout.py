@@ -107,7 +107,18 @@ class Reader:
             check_healthy(self.model, self.data)
             raise SimulationDivergedError(f"MuJoCo warnings at t={self.data.time:.4f} s")
 
-    def read(self, time: float, last_heading: float) -> tuple[RobotState, np.ndarray, float]:
+    def read(self, data: mujoco.MjData, time: float, last_heading: float) -> RobotState:
+        """The state in ``data`` (the reader's own), heading unwrapped next to ``last_heading``.
+
+        Raises:
+            ValueError: ``data`` is not the data this reader was made with.
+        """
+        if data is not self.data:
+            raise ValueError("this Reader reads only the MjData it was made with "
+                             "(Reader(model, data, command))")
+        return self.take(time, last_heading)[0]
+
+    def take(self, time: float, last_heading: float) -> tuple[RobotState, np.ndarray, float]:
         """The state in ``data``, a copy of its ``qpos``, and the state's heading.
 
         The heading is unwrapped next to ``last_heading``. Only the raw readings are taken
