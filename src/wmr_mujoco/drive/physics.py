@@ -56,7 +56,8 @@ class MujocoRobot(Robot):
         self.model = model
         self.data = mujoco.MjData(model)
         self.reader = Reader(model, self.data, spec.command)
-        self._warnings = self.reader._warnings
+        #: MuJoCo's warning counters and the controls (live views of ``data``'s arrays).
+        self._warnings = self.data.warning.number
         self._ctrl = self.data.ctrl
         self._heading = 0.0
         self._controller = controller
@@ -117,9 +118,7 @@ class MujocoRobot(Robot):
             mujoco.mj_kinematics(model, data)
             mujoco.mj_comPos(model, data)
             mujoco.mj_comVel(model, data)
-        state, qpos, self._heading = self.reader.take(data.time - self._t0, self._heading)
-        self.qpos_history.append(qpos)
-        return state
+        return self._read(data.time - self._t0)
 
     def _read(self, time: float) -> RobotState:
         """The state in ``data`` at ``time`` (its ``qpos`` recorded for :meth:`film`)."""

@@ -1,7 +1,9 @@
 """Reading a :class:`~wmr_mujoco.drive.state.RobotState` from MuJoCo, and placing a robot.
 
 Everything is looked up once per compiled model (:class:`Reader`, :func:`place`), so that a
-control step reads its state with a few array reads and one ``mj_objectVelocity``.
+control step reads its state with a few array reads and one ``mj_objectVelocity``; the
+state's arrays are made from these raw readings when first read (:class:`MujocoState`), so
+that a step whose state is not looked at pays for none of them.
 """
 
 from __future__ import annotations
@@ -80,7 +82,6 @@ class Reader:
         self._xmat = data.site_xmat[self.site]
         self._qpos = data.qpos
         self._qvel = data.qvel
-        #: MuJoCo's warning counters (a live view of ``data.warning.number``).
         self._warnings = data.warning.number
 
     def heading(self) -> float:

@@ -184,7 +184,7 @@ class Robot(abc.ABC):
         for value, (lo, hi) in zip(u.tolist(), self._bounds, strict=True):
             if not lo <= value <= hi:
                 return self._clip(u, stacklevel=4)
-        return u.copy() if u is command else u
+        return u.copy()  # check() may hand back the caller's array, or a view of it
 
     def _clip(self, u: np.ndarray, stacklevel: int) -> np.ndarray:
         """``u`` clipped to the command space; the first time, a warning."""
