@@ -141,3 +141,20 @@ def test_params_build_the_robot_from_parameters() -> None:
     # Turning in place at ω the wheels roll at ∓ω b/2 / R (b the track).
     np.testing.assert_allclose(state.wheel_rates, np.array([-1.0, 1.0]) * 0.25
                                / wide.wheel.radius, rtol=1e-12)
+
+
+@pytest.mark.parametrize("command", [np.array([0.2, 0.1]), [0.2, 0.1], (0.2, 0.1), [0, 1],
+                                     np.array([0.2, 0.1], dtype=np.float32),
+                                     np.array([[0.2, 0.1]])[0, :]])
+def test_the_recorded_command_is_the_robots_own_copy(command: object) -> None:
+    """Every way in (the fast path for floats inside the box, the full check otherwise)
+    records a float64 copy: changing the caller's container later changes nothing."""
+    robot = make("diffdrive")
+    robot.reset()
+    robot.step(command)
+    expected = np.asarray(command, float).copy()
+    if isinstance(command, (np.ndarray, list)):
+        command[0] = 9.0
+    recorded = robot.commands[0]
+    assert recorded.dtype == np.float64
+    np.testing.assert_array_equal(recorded, expected)

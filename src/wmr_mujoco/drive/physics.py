@@ -55,7 +55,11 @@ class MujocoRobot(Robot):
             set_actuation_mode(model, actuation)
         self.model = model
         self.data = mujoco.MjData(model)
-        self.reader = Reader(model, spec.command)
+        self.reader = Reader(model, self.data, spec.command)
+        #: MuJoCo's warning counters and the controls (live views of ``data``'s arrays).
+        self._warnings = self.data.warning.number
+        self._ctrl = self.data.ctrl
+        self._heading = 0.0
         self._controller = controller
         self._wheel_qpos = np.array([model.jnt_qposadr[model.joint(w).id]
                                      for w in self.wheel_names], dtype=int)
@@ -90,27 +94,34 @@ class MujocoRobot(Robot):
             mujoco.mj_forward(model, data)
         self._t0 = data.time
         self.qpos_history.clear()
-        self.qpos_history.append(data.qpos.copy())
-        return self.reader.read(data, 0.0, float(pose[2]))
+        self._heading = float(pose[2])
+        return self._read(0.0)
 
     def _advance(self, command: np.ndarray) -> RobotState:
         """Controls held for ``nstep`` timesteps, then the health check and the readout."""
         model, data = self.model, self.data
         if self._controller is None:
-            data.ctrl[:] = command
+            self._ctrl[:] = command
         else:
-            data.ctrl[:] = self._controller(data, command, self.control_period)
+            self._controller(data, command, self.control_period, self._ctrl)
         if self._split:
             mujoco.mj_step2(model, data)
             if self.nstep > 1:
                 mujoco.mj_step(model, data, self.nstep - 1)
             mujoco.mj_step1(model, data)
-            self.reader.check(data)
+            if any(self._warnings.tolist()):
+                self.reader.check()
         else:
             mujoco.mj_step(model, data, self.nstep)
-            self.reader.check(data)
+            if any(self._warnings.tolist()):
+                self.reader.check()
             mujoco.mj_kinematics(model, data)
             mujoco.mj_comPos(model, data)
             mujoco.mj_comVel(model, data)
-        self.qpos_history.append(data.qpos.copy())
-        return self.reader.read(data, data.time - self._t0, self._state.pose[2])
+        return self._read(data.time - self._t0)
+
+    def _read(self, time: float) -> RobotState:
+        """The state in ``data`` at ``time`` (its ``qpos`` recorded for :meth:`film`)."""
+        state, qpos, self._heading = self.reader.take(time, self._heading)
+        self.qpos_history.append(qpos)
+        return state

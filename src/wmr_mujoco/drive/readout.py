@@ -1,7 +1,9 @@
 """Reading a :class:`~wmr_mujoco.drive.state.RobotState` from MuJoCo, and placing a robot.
 
 Everything is looked up once per compiled model (:class:`Reader`, :func:`place`), so that a
-control step reads its state with a few array reads and one ``mj_objectVelocity``.
+control step reads its state with a few array reads and one ``mj_objectVelocity``; the
+state's arrays are made from these raw readings when first read (:class:`MujocoState`), so
+that a step whose state is not looked at pays for none of them.
 """
 
 from __future__ import annotations
@@ -46,15 +48,21 @@ def wheel_of_body(model: mujoco.MjModel, wheels: tuple[str, ...]) -> np.ndarray:
 
 
 class Reader:
-    """Reads the robot's state from ``data`` (pose, twist, wheels, steering, contacts).
+    """Reads the robot's state from its ``data`` (pose, twist, wheels, steering, contacts).
+
+    The rows of ``data`` it reads are numpy views taken once (they stay valid while
+    ``data`` lives), so that a control step reads them without attribute look-ups.
 
     Args:
         model: the compiled scene.
+        data: the robot's data.
         command: the robot's command map (its wheels, steering joints and extras).
     """
 
-    def __init__(self, model: mujoco.MjModel, command: CommandMap) -> None:
+    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData,
+                 command: CommandMap) -> None:
         self.model = model
+        self.data = data
         self.site = model.site("base").id
         self.wheel_dofs = np.array([model.jnt_dofadr[model.joint(w).id]
                                     for w in command.wheels], dtype=int)
@@ -65,54 +73,125 @@ class Reader:
         table = wheel_of_body(model, command.wheels)[model.geom_bodyid]
         #: Per geom, its wheel's index, or ``nwheel`` (a spare slot) for other geoms.
         self.geom_wheel = np.where(table >= 0, table, nwheel)
-        self._geom_wheel = self.geom_wheel.tolist()
+        #: ``geom_wheel`` as a list (a Python loop over a few contacts beats numpy).
+        self.geom_wheel_list: list[int] = self.geom_wheel.tolist()
         self.nwheel = nwheel
         self.extras = command.extras
         self._vel = np.zeros(6)
+        self._xpos = data.site_xpos[self.site]
+        self._xmat = data.site_xmat[self.site]
+        self._qpos = data.qpos
+        self._qvel = data.qvel
+        self._warnings = data.warning.number
 
-    def heading(self, data: mujoco.MjData) -> float:
+    def heading(self) -> float:
         """Heading of the ``base`` site in (−π, π]: ``atan2(R₁₀, R₀₀)``."""
-        m = data.site_xmat[self.site]
+        m = self._xmat
         return math.atan2(m[3], m[0])
 
-    def contacts(self, data: mujoco.MjData) -> np.ndarray:
+    def contacts(self) -> np.ndarray:
         """Whether each wheel (or one of its rollers) has a contact."""
-        # A few contacts per step: a Python loop over them beats array indexing.
         out = [False] * (self.nwheel + 1)
-        if data.ncon:
-            owner = self._geom_wheel
-            for g1, g2 in data.contact.geom.tolist():
-                out[owner[g1]] = out[owner[g2]] = True
+        owner = self.geom_wheel_list
+        for g1, g2 in self.data.contact.geom.tolist():
+            out[owner[g1]] = out[owner[g2]] = True
         return np.array(out[:self.nwheel])
 
-    def check(self, data: mujoco.MjData) -> None:
+    def check(self) -> None:
         """Raise :class:`SimulationDivergedError` on any MuJoCo warning.
 
         MuJoCo checks ``qpos``, ``qvel`` and ``qacc`` for NaN and huge values in every
         step and raises a warning (and resets the state) when one is bad, so the warning
         counters alone show a divergence; :func:`check_healthy` then names it.
         """
-        if any(data.warning.number.tolist()):
-            check_healthy(self.model, data)
-            raise SimulationDivergedError(f"MuJoCo warnings at t={data.time:.4f} s")
+        if any(self._warnings.tolist()):
+            check_healthy(self.model, self.data)
+            raise SimulationDivergedError(f"MuJoCo warnings at t={self.data.time:.4f} s")
 
     def read(self, data: mujoco.MjData, time: float, last_heading: float) -> RobotState:
-        """The state in ``data``; the heading unwrapped next to ``last_heading``."""
-        pos = data.site_xpos[self.site]
-        m = data.site_xmat[self.site]
-        h = math.atan2(m[3], m[0])
-        h = last_heading + math.remainder(h - last_heading, math.tau)
+        """The state in ``data`` (the reader's own), heading unwrapped next to ``last_heading``.
+
+        Raises:
+            ValueError: ``data`` is not the data this reader was made with.
+        """
+        if data is not self.data:
+            raise ValueError("this Reader reads only the MjData it was made with "
+                             "(Reader(model, data, command))")
+        return self.take(time, last_heading)[0]
+
+    def take(self, time: float, last_heading: float) -> tuple[RobotState, np.ndarray, float]:
+        """The state in ``data``, a copy of its ``qpos``, and the state's heading.
+
+        The heading is unwrapped next to ``last_heading``. Only the raw readings are taken
+        now (:class:`MujocoState`): the pose, the ``base`` site's velocity
+        (``mj_objectVelocity``), a copy of ``qpos``, the wheel rates, the contacts' geom
+        pairs and the extras; the other arrays are made from them when first read.
+        """
+        data = self.data
+        x, y, _ = self._xpos.tolist()
+        m = self._xmat.tolist()
+        h = last_heading + math.remainder(math.atan2(m[3], m[0]) - last_heading, math.tau)
         vel = self._vel
         mujoco.mj_objectVelocity(self.model, data, _SITE, self.site, vel, 1)
+        _, _, r, u, v, _ = vel.tolist()
         extra = (MappingProxyType(dict(self.extras(self.model, data)))
                  if self.extras is not None else NO_EXTRAS)
-        # One array for pose and twist (two views): fewer allocations per step.
-        both = np.array((pos[0], pos[1], h, vel[3], vel[4], vel[2]))
-        return RobotState(
-            time=np.array(time), pose=both[:3], twist=both[3:],
-            wheel_rates=data.qvel[self.wheel_dofs],
-            steer_angles=data.qpos[self.steer_qpos] if self.nsteer else _EMPTY,
-            wheel_contacts=self.contacts(data), extra=extra)
+        qpos = self._qpos.copy()
+        state = MujocoState(self, time, (x, y, h, u, v, r), qpos,
+                            self._qvel[self.wheel_dofs], data.contact.geom.copy(), extra)
+        return state, qpos, h
+
+
+class MujocoState(RobotState):
+    """A :class:`RobotState` read from MuJoCo, its arrays made when first read.
+
+    A control step keeps raw readings (:meth:`Reader.read`); each field is computed from
+    them on its first access and then kept (a frozen state: the same array every time).
+    """
+
+    def __init__(self, reader: Reader, time: float, pose_twist: tuple[float, ...],
+                 qpos: np.ndarray, wheel_rates: np.ndarray, pairs: np.ndarray,
+                 extra: MappingProxyType[str, float]) -> None:
+        # Written into __dict__ as the frozen dataclass's own __init__ does; few Python
+        # containers per state (the garbage collector tracks each one in the history).
+        fields = self.__dict__
+        fields["_reader"] = reader
+        fields["_time"] = time
+        fields["_pose_twist"] = pose_twist
+        fields["_qpos"] = qpos
+        fields["_pairs"] = pairs
+        fields["wheel_rates"] = wheel_rates
+        fields["extra"] = extra
+
+    def __reduce__(self) -> tuple[type[RobotState], tuple[object, ...]]:
+        """Copied as a plain :class:`RobotState` of the same arrays (all computed)."""
+        return RobotState, (self.time, self.pose, self.twist, self.wheel_rates,
+                            self.steer_angles, self.wheel_contacts, self.extra)
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        """Compute a field on its first access (later ones find it in ``__dict__``)."""
+        fields = self.__dict__
+        reader = fields.get("_reader")
+        if reader is None or name not in _LAZY:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        if name == "time":
+            fields["time"] = np.array(fields["_time"])
+        elif name in ("pose", "twist"):
+            both = np.array(fields["_pose_twist"])  # one array, two views
+            fields["pose"], fields["twist"] = both[:3], both[3:]
+        elif name == "steer_angles":
+            fields[name] = fields["_qpos"][reader.steer_qpos] if reader.nsteer else _EMPTY
+        else:
+            out = [False] * (reader.nwheel + 1)
+            owner = reader.geom_wheel_list
+            for g1, g2 in fields["_pairs"].tolist():
+                out[owner[g1]] = out[owner[g2]] = True
+            fields[name] = np.array(out[:reader.nwheel])
+        return fields[name]
+
+
+#: The fields :class:`MujocoState` computes on first access.
+_LAZY = frozenset(("time", "pose", "twist", "steer_angles", "wheel_contacts"))
 
 
 def _planar_joints(model: mujoco.MjModel) -> tuple[int, int, int]:

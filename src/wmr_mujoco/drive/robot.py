@@ -23,11 +23,13 @@ from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots.spec import RobotSpec
 
 #: Most states :attr:`Robot.history` keeps (the oldest are dropped): 5·10⁴ periods, over
-#: a quarter of an hour at 20 ms; about 1 kB each (with the MuJoCo backend's ``qpos``
-#: for :meth:`Robot.film`), at most some 50 MB for the robot with the most joints.
+#: a quarter of an hour at 20 ms; about 1-2 kB each (with the MuJoCo backend's ``qpos``
+#: for :meth:`Robot.film`), at most some 100 MB for the robot with the most joints.
 HISTORY_LIMIT = 50_000
 #: Relative tolerance of "the control period is a whole number of timesteps".
 PERIOD_RTOL = 1e-9
+#: The dtype of native float64 arrays (a singleton: compared with ``is``).
+_FLOAT64 = np.dtype(np.float64)
 
 
 def substeps(control_period: float, timestep: float) -> int:
@@ -110,6 +112,7 @@ class Robot(abc.ABC):
         self._high = command_space.high
         self._bounds = list(zip(command_space.low.tolist(), command_space.high.tolist(),
                                 strict=True))
+        self._shape = command_space.shape
         self._warned = False
         self._history: deque[RobotState] = deque(maxlen=HISTORY_LIMIT)
         self._commands: deque[np.ndarray] = deque(maxlen=HISTORY_LIMIT)
@@ -151,15 +154,37 @@ class Robot(abc.ABC):
         """
         if self._state is None:
             raise RuntimeError("call robot.reset() before robot.step()")
+        u = self._command(command)
+        self._state = state = self._advance(u)
+        self._history.append(state)
+        self._commands.append(u)
+        return state
+
+    def _command(self, command: Sequence[float] | np.ndarray) -> np.ndarray:
+        """``command`` checked and clipped, as a new float array (the robot's own copy).
+
+        The common case, a float array or a tuple/list of floats inside the box, is
+        checked on Python floats (a NaN fails the bounds and takes the full check).
+        """
+        kind = type(command)
+        if kind is np.ndarray:
+            if command.dtype is _FLOAT64 and command.shape == self._shape:
+                for value, (lo, hi) in zip(command.tolist(), self._bounds, strict=True):
+                    if not lo <= value <= hi:
+                        break
+                else:
+                    return command.copy()
+        elif (kind is tuple or kind is list) and len(command) == len(self._bounds):
+            for value, (lo, hi) in zip(command, self._bounds, strict=True):
+                if type(value) is not float or not lo <= value <= hi:
+                    break
+            else:
+                return np.array(command)
         u = self.command_space.check(command)
         for value, (lo, hi) in zip(u.tolist(), self._bounds, strict=True):
             if not lo <= value <= hi:
-                u = self._clip(u, stacklevel=3)
-                break
-        self._state = self._advance(u)
-        self._history.append(self._state)
-        self._commands.append(u.copy())
-        return self._state
+                return self._clip(u, stacklevel=4)
+        return u.copy()  # check() may hand back the caller's array, or a view of it
 
     def _clip(self, u: np.ndarray, stacklevel: int) -> np.ndarray:
         """``u`` clipped to the command space; the first time, a warning."""

@@ -34,9 +34,10 @@ from wmr_mujoco.validation.adapters import Adapter
 
 #: ``extras(model, data) -> {name: value}``: robot-specific readings of a MuJoCo state.
 Extras = Callable[[mujoco.MjModel, mujoco.MjData], Mapping[str, float]]
-#: ``controller(data, command, period) -> ctrl``: actuator controls (length ``nu``)
-#: that hold ``command`` over the next ``period`` seconds.
-Controller = Callable[[mujoco.MjData, np.ndarray, float], np.ndarray]
+#: ``controller(data, command, period, ctrl)``: writes into ``ctrl`` (length ``nu``, the
+#: robot's ``data.ctrl``) the actuator controls that hold ``command`` over the next
+#: ``period`` seconds.
+Controller = Callable[[mujoco.MjData, np.ndarray, float, np.ndarray], None]
 
 
 @dataclass(frozen=True)
@@ -141,10 +142,19 @@ class RateCommand(CommandMap):
     def inputs(self, adapter: Adapter, command: np.ndarray, targets: np.ndarray,
                period: float, rate_limits: np.ndarray) -> np.ndarray:
         """The adapter's input ``u``: servo angles turned into rates, then ``adjust``."""
-        u = np.array(command, float)
-        for k, s in enumerate(self.servo):
-            u[s.channel] = servo_rate(float(command[s.channel]), float(targets[k]), period,
-                                      float(rate_limits[k]))
+        channels = [(s.channel, limit) for s, limit in
+                    zip(self.servo, np.asarray(rate_limits, float).tolist(), strict=True)]
+        return self._inputs(adapter, np.asarray(command, float).tolist(), targets, period,
+                            channels)
+
+    def _inputs(self, adapter: Adapter, values: list[float], targets: np.ndarray,
+                period: float, channels: list[tuple[int, float]]) -> np.ndarray:
+        """:meth:`inputs` of the command ``values``; ``channels``: ``(channel, ω_max)``."""
+        if channels:
+            phi = targets.tolist()
+            for k, (channel, limit) in enumerate(channels):
+                values[channel] = servo_rate(values[channel], phi[k], period, limit)
+        u = np.array(values)
         return u if self.adjust is None else self.adjust(adapter, u, targets)
 
     def limits(self, model: mujoco.MjModel,
@@ -208,7 +218,8 @@ class RateCommand(CommandMap):
         assert adapter is not None
         acts = np.array([model.actuator_actadr[model.actuator(s.actuator).id]
                          for s in self.servo], dtype=int)
-        limits = self.rate_limits(model)
+        channels = [(s.channel, limit) for s, limit in
+                    zip(self.servo, self.rate_limits(model).tolist(), strict=True)]
         rest = np.zeros(len(adapter.state_names))
         w = self.matrix(adapter)
         direct = not self.servo and self.adjust is None
@@ -216,16 +227,18 @@ class RateCommand(CommandMap):
         joints = np.array([model.jnt_qposadr[model.actuator_trnid[
             model.actuator(s.actuator).id, 0]] for s in self.servo], dtype=int)
 
-        def controller(data: mujoco.MjData, command: np.ndarray, period: float) -> np.ndarray:
-            u = command if direct else self.inputs(adapter, command, data.act[acts], period,
-                                                   limits)
+        def controller(data: mujoco.MjData, command: np.ndarray, period: float,
+                       ctrl: np.ndarray) -> None:
+            u = command if direct else self._inputs(adapter, command.tolist(),
+                                                    data.act[acts], period, channels)
             if w is not None:
-                return w @ u
+                np.matmul(w, u, out=ctrl)  # W u, written in place
+                return
             x = rest
             if self.state_dependent:
                 x = rest.copy()
                 x[states] = data.qpos[joints]
-            return adapter.controls(u, x)
+            ctrl[:] = adapter.controls(u, x)
 
         return controller
 
@@ -256,9 +269,9 @@ class TorqueCommand(CommandMap):
         """The command placed on its actuators."""
         ids = [model.actuator(a).id for a in self.actuators]
 
-        def controller(data: mujoco.MjData, command: np.ndarray, period: float) -> np.ndarray:
-            ctrl = np.zeros(model.nu)
+        def controller(data: mujoco.MjData, command: np.ndarray, period: float,
+                       ctrl: np.ndarray) -> None:
+            ctrl[:] = 0.0
             ctrl[ids] = command
-            return ctrl
 
         return controller
