@@ -8,7 +8,7 @@ STAMP := $(VENV)/.installed
 .PHONY: demo test test-extra lint models pictures renders study bench readme sysdeps clean
 
 $(STAMP): pyproject.toml setup.py scripts/install-system-deps.sh scripts/make-venv.sh
-	bash scripts/install-system-deps.sh
+	PYTHON=$(PYTHON) bash scripts/install-system-deps.sh
 	bash scripts/make-venv.sh $(PYTHON) $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e ".[test]"
@@ -26,7 +26,7 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests scripts
-	$(BIN)/python -m pytest -m "not extra"
+	$(BIN)/python -m pytest -m "not extra" -n auto
 
 test-extra: $(EXTRA_STAMP)
 	$(BIN)/python -m pytest -m extra
@@ -71,7 +71,12 @@ readme: $(STAMP)
 # tutorial (docs/tutorials/NN_*.py) while building (WMR_DOCS_EXECUTE=false skips that).
 # (docs is phony: the folder docs/ must not stand for the target.)
 .PHONY: docs tutorials
-docs: $(EXTRA_STAMP)
+DOCS_STAMP := $(VENV)/.installed-docs
+$(DOCS_STAMP): $(STAMP)
+	$(BIN)/python -m pip install --quiet -e ".[test,docs]"
+	touch $(DOCS_STAMP)
+
+docs: $(DOCS_STAMP)
 	NO_MKDOCS_2_WARNING=1 $(BIN)/mkdocs build --strict
 
 # Every tutorial run top to bottom as a script, its exercise checked, its time printed.
@@ -79,7 +84,7 @@ tutorials: $(STAMP)
 	$(BIN)/python -m pytest tests/docs/test_tutorials.py -q -s
 
 sysdeps:
-	bash scripts/install-system-deps.sh
+	PYTHON=$(PYTHON) bash scripts/install-system-deps.sh
 
 clean:
 	rm -rf $(VENV) .pytest_cache .ruff_cache src/*.egg-info

@@ -200,7 +200,7 @@ def _scenario(robot: str, inputs: Sequence[Input], duration: float, kind: Scenar
 
 def _prepare(robot: str, inputs: Sequence[Input], duration: float, params: RobotParams | None,
              kind: ScenarioKind | str, settle: float, world_frame: bool,
-             max_memory: float | None, physics: bool = True) -> Prepared:
+             max_memory: float | None = None, physics: bool = True) -> Prepared:
     """Check everything, then load, settle and schedule (warning of clipped inputs)."""
     spec = get_spec(robot)
     s = _scenario(spec.name, inputs, duration, kind, settle, world_frame)

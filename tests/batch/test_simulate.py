@@ -126,3 +126,14 @@ def test_members_of_different_structure_are_refused():
     other = replace(base, rollers_per_wheel=base.rollers_per_wheel + 2)
     with pytest.raises(ValueError, match="member 1's model has sizes"):
         wmr.simulate_batch("mecanum4", [[0.1, 0.0, 0.0]] * 2, DURATION, params=[base, other])
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"settle": 1e9}, "settle"),            # would step for days: refused, not run
+    ({"duration": 1e-5}, "shorter than one timestep"),
+])
+def test_steps_and_settle_are_checked_before_any_work(kwargs, match):
+    args = {"duration": 0.1, **kwargs}
+    duration = args.pop("duration")
+    with pytest.raises(ValueError, match=match):
+        wmr.simulate_batch("diffdrive", [[0.5, 0.0]] * 2, duration, **args)

@@ -18,7 +18,8 @@ def test_to_body_rotates_into_the_robot_frame():
     np.testing.assert_allclose(to_body(np.array([0.0, 0.0, math.pi / 2]), [0.0, 1.0]),
                                [1.0, 0.0], atol=1e-12)
     np.testing.assert_allclose(to_body(np.array([1.0, 1.0, 0.0]), [1.0, 3.0]), [0.0, 2.0])
-    assert wrap(3 * math.pi) == pytest.approx(-math.pi)
+    assert abs(wrap(3 * math.pi)) == pytest.approx(math.pi)  # ±π: the same heading
+    assert wrap(2.5 * math.pi) == pytest.approx(math.pi / 2)
 
 
 def test_goal_observation_and_progress_reward():

@@ -18,7 +18,7 @@ import pytest
 SCRIPT = Path(__file__).resolve().parents[2] / "scripts" / "install-system-deps.sh"
 EGL_MESA = ["libEGL.so.1 ", "libEGL_mesa.so.0 ", "libGL.so.1 "]
 #: Tools the script uses besides the stubbed ones, linked into the shim folder.
-TOOLS = ("bash", "grep", "awk", "sort", "tr", "tail", "cat")
+TOOLS = ("bash", "grep", "awk", "sort", "tr", "tail", "cat", "sed")
 MISSING_VERSION = "E: Version '22.3.6-1+deb12u1' for 'libosmesa6' was not found"
 
 
@@ -30,7 +30,8 @@ def _stub(folder: Path, name: str, body: str) -> None:
 
 def _run(tmp_path: Path, libs: list[str], dri: bool = True, uid: int = 0,
          sudo: str | None = None, apt: bool = True, plan: str = "Inst libegl1 (1.6.0-1)",
-         plan_rc: int = 0) -> tuple[subprocess.CompletedProcess, list[str]]:
+         plan_rc: int = 0, ensurepip: bool = True,
+         ) -> tuple[subprocess.CompletedProcess, list[str]]:
     """Run the script on an imagined machine; return its result and the apt calls."""
     shim, log, dri_dir = tmp_path / "bin", tmp_path / "apt.log", tmp_path / "dri"
     shim.mkdir()
@@ -42,6 +43,7 @@ def _run(tmp_path: Path, libs: list[str], dri: bool = True, uid: int = 0,
     listing = "".join(f"\t{lib}(libc6,x86-64) => /usr/lib/{lib.strip()}\\n" for lib in libs)
     _stub(shim, "ldconfig", f'printf "{listing}"')
     _stub(shim, "id", f"echo {uid}")
+    _stub(shim, "python3", f"exit {0 if ensurepip else 1}")  # `import venv, ensurepip`
     if sudo == "nopasswd":
         _stub(shim, "sudo", f'[ "$1" = -n ] && shift; [ "$1" = true ] && exit 0\n'
                             f'echo "sudo $*" >> {log}; "$@"')
@@ -65,6 +67,13 @@ def _run(tmp_path: Path, libs: list[str], dri: bool = True, uid: int = 0,
 def test_a_working_offscreen_stack_asks_apt_nothing(tmp_path, libs, dri):
     proc, calls = _run(tmp_path, libs, dri=dri)
     assert (proc.returncode, calls, proc.stderr) == (0, [], "")
+
+
+def test_a_python_without_ensurepip_gets_python3_venv(tmp_path):
+    """Debian's python3 without python3-venv: offered, beside a working EGL."""
+    proc, calls = _run(tmp_path, EGL_MESA, ensurepip=False)
+    assert proc.returncode == 0, proc.stderr
+    assert calls[-1] == "install -y -qq --no-upgrade --no-install-recommends python3-venv"
 
 
 def test_missing_egl_is_installed_unpinned_as_the_archive_serves_it(tmp_path):

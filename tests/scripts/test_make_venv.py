@@ -28,8 +28,6 @@ case "$1 $2" in
     [ -e "$here/pip" ] || exit 1
     [ "$3" = --python ] && { touch "$(dirname "$4")/pip"; exit 0; }
     exit 0 ;;
-  "-m virtualenv")
-    mkdir -p "$4/bin"; touch "$4/bin/pip"; exit 0 ;;
 esac
 exit 1
 """

@@ -22,6 +22,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.audit.run import RAMP, Record
 from wmr_mujoco.validation.metrics import MIN_PATH
 
@@ -64,8 +65,8 @@ class Figures:
 
 
 def wrap(angle: np.ndarray) -> np.ndarray:
-    """Angles wrapped to (−π, π]."""
-    return np.angle(np.exp(1j * angle))
+    """Angles wrapped to (−π, π] (:func:`wmr_mujoco.analytic.planar.wrap_angle`)."""
+    return wrap_angle(angle)
 
 
 def figures(rec: Record) -> Figures:

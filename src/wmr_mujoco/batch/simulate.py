@@ -25,7 +25,7 @@ from wmr_mujoco.batch.warp_backend import WarpBackend
 from wmr_mujoco.models.actuation import set_actuation_mode
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import get_spec
-from wmr_mujoco.run_limits import check_frame, warn_clipped
+from wmr_mujoco.run_limits import check_frame, check_steps, max_memory_default, warn_clipped
 from wmr_mujoco.sim.engine import STATE_SPEC
 from wmr_mujoco.validation.runner import (
     Prepared,
@@ -39,8 +39,8 @@ from wmr_mujoco.validation.spec import RobotSpec
 
 #: The batched engines by name.
 BACKENDS: dict[str, type[Backend]] = {b.name: b for b in (RolloutBackend, WarpBackend)}
-#: The most memory the states of one batch may take (bytes), checked before any work.
-MAX_BYTES = 4 * 2**30
+#: The most distinct parameter sets (compiled models) of one call.
+MAX_MODELS = 1024
 #: The most members of one call (checked before any per-member object is made).
 MAX_MEMBERS = 65_536
 
@@ -135,10 +135,12 @@ def _key(p: RobotParams | None) -> object:
 def _check_memory(members: int, nstep: int, model: mujoco.MjModel, nu: int) -> None:
     nstate = mujoco.mj_stateSize(model, STATE_SPEC)
     need = 8 * members * ((nstep + 1) * 2 * nstate + nstep * 2 * max(nu, 1))
-    if need > MAX_BYTES:
+    cap = max_memory_default()
+    if need > cap:
         raise ValueError(f"{members} members x {nstep} steps would need about "
-                         f"{need / 2**30:.1f} GiB (limit {MAX_BYTES / 2**30:.0f} GiB); "
-                         "use fewer members or a shorter duration, in several calls")
+                         f"{need / 2**30:.1f} GiB, over the memory cap of "
+                         f"{cap / 2**30:.3g} GiB; use fewer members or a shorter duration, in "
+                         "several calls, or raise the cap with WMR_MAX_MEMORY (e.g. 8G)")
 
 
 def prepare_members(spec: RobotSpec, scenarios: Sequence[Scenario],
@@ -148,13 +150,22 @@ def prepare_members(spec: RobotSpec, scenarios: Sequence[Scenario],
 
     Raises:
         ValueError: the backend cannot run the model, members' models differ in size,
-            or the batch would take more than :data:`MAX_BYTES`.
+            or the batch would pass the memory cap of :func:`wmr_mujoco.simulate`
+            (:func:`~wmr_mujoco.run_limits.max_memory_default`).
     """
     groups: dict[object, list[int]] = {}
     for i, p in enumerate(params):
         groups.setdefault(_key(p), []).append(i)
-    models = {key: wmr_mujoco.load(scenarios[idx[0]].robot, params[idx[0]])
-              for key, idx in groups.items()}
+    if len(groups) > MAX_MODELS:
+        raise ValueError(f"{len(groups)} distinct parameter sets, one compiled model each; "
+                         f"at most {MAX_MODELS} per call: split the batch into several calls")
+    models = {}
+    for key, idx in groups.items():
+        models[key] = wmr_mujoco.load(scenarios[idx[0]].robot, params[idx[0]])
+        adapter = make_adapter(spec, scenarios[idx[0]], models[key], params[idx[0]])
+        for i in idx:  # steps, settle and memory of one member; the frame; before any work
+            check_steps(scenarios[i], models[key], adapter, None)
+            check_frame(scenarios[i], adapter)
     first = next(iter(models.values()))
     sizes = ("nq", "nv", "nu", "na", "nbody", "ngeom")
     for key, m in models.items():
@@ -234,7 +245,6 @@ def simulate_batch(robot: str, inputs: Sequence[Sequence[Input]] | np.ndarray,
             raise ValueError(f"member {i}: {err}") from None
     preps = prepare_members(spec, scenarios, member_params(params, len(scenarios)), engine)
     for prep in preps:
-        check_frame(prep.scenario, prep.adapter)
         warn_clipped(prep)
     states = engine.run(preps)
     members = [_sim_trajectory(p, s) for p, s in zip(preps, states, strict=True)]

@@ -35,8 +35,11 @@ from wmr_mujoco.validation.runner import Prepared
 
 #: Steps between two checks of the overflow flags and the states.
 CHUNK = 250
-#: ``mujoco_warp.OverflowType`` bits that mean a buffer ran out (results wrong), by name.
-OVERFLOW_BITS = ("NEFC", "NJMAX_NNZ", "BROADPHASE", "NARROWPHASE", "CCD")
+#: ``mujoco_warp.OverflowType`` bits that mean a buffer ran out (results wrong), by name:
+#: every bit but ITERATIONS and LS_ITERATIONS (the solver's iteration caps, reached without
+#: dropping anything, as in C MuJoCo).
+OVERFLOW_BITS = ("NEFC", "NJMAX_NNZ", "BROADPHASE", "NARROWPHASE", "CCD", "HFIELD",
+                 "CONTACT_MATCH", "NVMAX", "EPA_HORIZON", "TACTILE")
 
 
 class WarpBackend(Backend):

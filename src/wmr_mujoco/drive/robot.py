@@ -26,6 +26,8 @@ from wmr_mujoco.robots.spec import RobotSpec
 #: a quarter of an hour at 20 ms; about 1-2 kB each (with the MuJoCo backend's ``qpos``
 #: for :meth:`Robot.film`), at most some 100 MB for the robot with the most joints.
 HISTORY_LIMIT = 50_000
+#: Longest control period, s: one step() then takes at most this long in the physics.
+MAX_CONTROL_PERIOD = 10.0
 #: Relative tolerance of "the control period is a whole number of timesteps".
 PERIOD_RTOL = 1e-9
 #: The dtype of native float64 arrays (a singleton: compared with ``is``).
@@ -42,9 +44,10 @@ def substeps(control_period: float, timestep: float) -> int:
     if isinstance(control_period, bool) or not isinstance(control_period, (int, float)):
         raise TypeError(f"control_period = {control_period!r}; expected a number of "
                         "seconds")
-    if not (math.isfinite(control_period) and control_period > 0):
-        raise ValueError(f"control_period = {control_period!r} s; must be a finite "
-                         f"number > 0, a multiple of the model timestep {timestep:g} s")
+    if not (math.isfinite(control_period) and 0 < control_period <= MAX_CONTROL_PERIOD):
+        raise ValueError(f"control_period = {control_period!r} s; must be in (0, "
+                         f"{MAX_CONTROL_PERIOD:g}] s, a multiple of the model timestep "
+                         f"{timestep:g} s")
     n = round(control_period / timestep)
     if n < 1 or abs(n * timestep - control_period) > PERIOD_RTOL * control_period:
         raise ValueError(f"control_period = {control_period!r} s is not a multiple of the "

@@ -17,6 +17,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from wmr_mujoco.analytic.planar import wrap_angle
+
 #: Arc-length spacing of the polyline, m.
 DS = 0.02
 
@@ -148,7 +150,7 @@ def hermite_path(start: np.ndarray, goal: np.ndarray, tangent: float = 1.0,
 
 
 def _wrap(a: float) -> float:
-    return (a + math.pi) % (2 * math.pi) - math.pi
+    return float(wrap_angle(a))
 
 
 def _with_run_out(pts: np.ndarray, heading: np.ndarray, ds: float, run_out: float) -> Path:

@@ -109,7 +109,8 @@ class WheelMap:
         on_floor = (geoms == self.floor).any(axis=1)
         other = np.where(geoms[:, 0] == self.floor, geoms[:, 1], geoms[:, 0])
         wheel = np.where(on_floor, self.geom_wheel[other], -1)
-        mine = wheel >= 0
+        # A contact inside a geom's margin (dist > 0) or excluded does not touch.
+        mine = (wheel >= 0) & (data.contact.dist[:n] <= 0) & (data.contact.exclude[:n] == 0)
         touching[wheel[mine]] = True
         depth = float(max(0.0, -data.contact.dist[:n][mine].min())) if mine.any() else 0.0
         return touching, depth

@@ -16,6 +16,8 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from wmr_mujoco.analytic.planar import wrap_angle
+
 
 @dataclass(frozen=True)
 class Field:
@@ -42,8 +44,8 @@ def effort(action: np.ndarray) -> float:
 
 
 def wrap(angle: float) -> float:
-    """Angle wrapped to ``[-π, π)``, rad."""
-    return (angle + math.pi) % (2 * math.pi) - math.pi
+    """Angle wrapped to ``(-π, π]``, rad (:func:`wmr_mujoco.analytic.planar.wrap_angle`)."""
+    return float(wrap_angle(angle))
 
 
 def to_body(pose: np.ndarray, xy: np.ndarray) -> np.ndarray:
