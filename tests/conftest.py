@@ -50,27 +50,28 @@ def _drawing_problem() -> str | None:
     return None
 
 
-def pytest_collection_modifyitems(config, items):
-    """Skip the tests that draw (marked ``gl``) where no OpenGL backend exists, saying why."""
-    drawing = [item for item in items if item.get_closest_marker("gl")]
-    if not drawing:
-        return
-    problem = _drawing_problem()
-    config.stash[_GL_PROBLEM] = problem
-    if problem is None:
-        return
-    skip = pytest.mark.skip(reason=f"no OpenGL backend: {problem}")
-    for item in drawing:
-        item.add_marker(skip)
-
-
 _GL_PROBLEM = pytest.StashKey[str | None]()
 
 
-def pytest_report_collectionfinish(config, start_path, items):
+def pytest_configure(config):
+    """Find out once per process (and per xdist worker) whether anything can be drawn."""
+    config.stash[_GL_PROBLEM] = _drawing_problem()
+
+
+def pytest_report_header(config):
     """One line when the drawing tests are skipped."""
     problem = config.stash.get(_GL_PROBLEM, None)
     if problem:
-        n = sum(1 for item in items if item.get_closest_marker("gl"))
-        return f"drawing tests: {n} skipped, no OpenGL backend here ({problem})"
+        return f"drawing tests (marked gl): skipped, no OpenGL backend here ({problem})"
     return None
+
+
+def pytest_collection_modifyitems(config, items):
+    """Skip the tests that draw (marked ``gl``) where no OpenGL backend exists, saying why."""
+    problem = config.stash.get(_GL_PROBLEM, None)
+    if problem is None:
+        return
+    skip = pytest.mark.skip(reason=f"no OpenGL backend: {problem}")
+    for item in items:
+        if item.get_closest_marker("gl"):
+            item.add_marker(skip)

@@ -72,3 +72,11 @@ def test_drawing_without_opengl_is_exit_3_in_one_line(tmp_path):
     assert proc.returncode == 3
     assert proc.stderr.count("\n") == 1 and "libOSMesa is not installed" in proc.stderr
     assert not (tmp_path / "c.gif").exists()
+
+
+def test_a_child_process_keeps_the_parents_reason():
+    """Test workers and tools inherit MUJOCO_GL=disable; the reason comes with it."""
+    env = {"MUJOCO_GL": "osmesa"}
+    parent = gl_env.configure(env, _finder("EGL"))
+    child = gl_env.configure(dict(env), _finder("EGL"))
+    assert child.backend == "disable" and child.problem == parent.problem

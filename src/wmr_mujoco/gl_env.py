@@ -26,6 +26,9 @@ DISABLED = ("disable", "disabled", "off", "false", "0")
 WINDOWED = ("glfw", "glx", "enable", "enabled", "on", "true", "1", "")
 #: Offscreen backends and the shared library each loads.
 OFFSCREEN_LIBRARY = {"egl": "EGL", "osmesa": "OSMesa"}
+#: Where :func:`configure` leaves its reason for child processes (test workers, tools),
+#: which inherit ``MUJOCO_GL=disable`` and must know why.
+PROBLEM_ENV = "WMR_GL_PROBLEM"
 #: What to install for each offscreen backend (Debian/Ubuntu).
 INSTALL = {"egl": "apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri",
            "osmesa": "apt-get install libosmesa6"}
@@ -86,6 +89,9 @@ def configure(environ: MutableMapping[str, str] | None = None,
     """
     environ = os.environ if environ is None else environ
     requested = environ.get("MUJOCO_GL")
+    inherited = environ.get(PROBLEM_ENV)
+    if inherited and requested is not None and requested.lower().strip() in DISABLED:
+        return GLChoice(requested, requested, inherited)  # a parent's decision, kept
     if requested is not None:
         problem = backend_problem(requested, environ, find_library)
         if problem is None:
@@ -93,8 +99,9 @@ def configure(environ: MutableMapping[str, str] | None = None,
                 environ.setdefault("PYOPENGL_PLATFORM", "osmesa")
             return GLChoice(requested, requested, None)
         environ["MUJOCO_GL"] = "disable"
-        return GLChoice(requested, "disable", f"MUJOCO_GL={requested} was asked for, but "
-                                              f"{problem}; set another backend, or unset MUJOCO_GL")
+        environ[PROBLEM_ENV] = (f"MUJOCO_GL={requested} was asked for, but {problem}; set "
+                                "another backend, or unset MUJOCO_GL")
+        return GLChoice(requested, "disable", environ[PROBLEM_ENV])
     problems = []
     for backend in OFFSCREEN_LIBRARY:
         problem = backend_problem(backend, environ, find_library)
@@ -105,5 +112,6 @@ def configure(environ: MutableMapping[str, str] | None = None,
             return GLChoice(None, backend, None)
         problems.append(f"{backend}: {problem}")
     environ["MUJOCO_GL"] = "disable"
-    return GLChoice(None, "disable", "no offscreen OpenGL library is installed ("
-                    + "; ".join(problems) + ")")
+    environ[PROBLEM_ENV] = ("no offscreen OpenGL library is installed ("
+                            + "; ".join(problems) + ")")
+    return GLChoice(None, "disable", environ[PROBLEM_ENV])

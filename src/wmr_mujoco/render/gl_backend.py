@@ -78,6 +78,9 @@ def select_backend() -> str:
     choice = wmr_mujoco.GL
     if choice.requested is not None and choice.problem is not None:
         raise RenderingUnavailableError(choice.problem)
+    if choice.requested is not None and choice.requested.lower().strip() in DISABLED:
+        raise RenderingUnavailableError(f"MUJOCO_GL={choice.requested} turns rendering off; "
+                                        "unset it (EGL, else OSMesa, is then chosen)")
     chosen = wmr_mujoco.USER_MUJOCO_GL
     if chosen is None and mujoco_imported():
         chosen = os.environ.get("MUJOCO_GL", "egl")
