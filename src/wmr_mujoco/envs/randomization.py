@@ -138,8 +138,11 @@ class Randomizer:
             f = drawn["wheel_radius"] = rng.uniform(*b.wheel_radius, size=len(self.wheels))
             for (g, mask), k in zip(self.wheels, f, strict=True):
                 m.geom_size[g, mask] = nom["geom_size"][g, mask] * k
-                m.geom_rbound[g] = nom["geom_rbound"][g] * k
-                m.geom_aabb[g, 3:] = nom["geom_aabb"][g, 3:] * k
+                # Bounding sphere and box only for the broad phase: grown with the radius
+                # (never shrunk, so that no contact is missed whatever axes the radius is).
+                grow = max(float(k), 1.0)
+                m.geom_rbound[g] = nom["geom_rbound"][g] * grow
+                m.geom_aabb[g, 3:] = nom["geom_aabb"][g, 3:] * grow
         if b.servo_gain:
             f = drawn["servo_gain"] = rng.uniform(*b.servo_gain, size=m.nu)
             m.actuator_gainprm[:, 0] = nom["actuator_gainprm"][:, 0] * f
