@@ -56,8 +56,36 @@ from wmr_mujoco.validation.signals import const
 #: An input channel: a constant, or a function of the time after the settle (s).
 Input = float | Callable[[float], float]
 
+class NamedStates:
+    """Named access to ``states`` whose last axis is ``state_names`` (one run or a batch)."""
+
+    states: np.ndarray
+    state_names: tuple[str, ...]
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        """One state component over time (member first in a batch), by name.
+
+        Raises:
+            KeyError: no such component; the message lists them.
+        """
+        if name not in self.state_names:
+            raise KeyError(f"{name!r}; the components are {', '.join(self.state_names)}")
+        return self.states[..., self.state_names.index(name)]
+
+    @property
+    def pose(self) -> np.ndarray:
+        """``(..., N + 1, 3)`` planar pose ``(x, y, heading)``.
+
+        Raises:
+            ValueError: the state is not a pose (a dynamic state of velocities).
+        """
+        if self.state_names[:3] != ("x", "y", "heading"):
+            raise ValueError(f"the state {self.state_names} is not a planar pose")
+        return self.states[..., :3]
+
+
 @dataclass(frozen=True)
-class Trajectory:
+class Trajectory(NamedStates):
     """States at every physics step, the start included.
 
     Attributes:
@@ -73,27 +101,6 @@ class Trajectory:
     inputs: np.ndarray
     state_names: tuple[str, ...]
     state_units: tuple[str, ...]
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        """One state component over time, by name.
-
-        Raises:
-            KeyError: no such component; the message lists them.
-        """
-        if name not in self.state_names:
-            raise KeyError(f"{name!r}; the components are {', '.join(self.state_names)}")
-        return self.states[:, self.state_names.index(name)]
-
-    @property
-    def pose(self) -> np.ndarray:
-        """``(N + 1, 3)`` planar pose ``(x, y, heading)``.
-
-        Raises:
-            ValueError: the state is not a pose (a dynamic state of velocities).
-        """
-        if self.state_names[:3] != ("x", "y", "heading"):
-            raise ValueError(f"the state {self.state_names} is not a planar pose")
-        return self.states[:, :3]
 
 
 @dataclass(frozen=True)

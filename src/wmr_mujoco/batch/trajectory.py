@@ -6,11 +6,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from wmr_mujoco.api import Trajectory
+from wmr_mujoco.api import NamedStates, Trajectory
 
 
 @dataclass(frozen=True)
-class BatchTrajectory:
+class BatchTrajectory(NamedStates):
     """States of every member at every physics step, the start included.
 
     Attributes:
@@ -32,27 +32,6 @@ class BatchTrajectory:
     def __len__(self) -> int:
         """The number of members."""
         return len(self.states)
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        """One state component, ``(members, N + 1)``, by name.
-
-        Raises:
-            KeyError: no such component; the message lists them.
-        """
-        if name not in self.state_names:
-            raise KeyError(f"{name!r}; the components are {', '.join(self.state_names)}")
-        return self.states[:, :, self.state_names.index(name)]
-
-    @property
-    def pose(self) -> np.ndarray:
-        """``(members, N + 1, 3)`` planar pose ``(x, y, heading)``.
-
-        Raises:
-            ValueError: the state is not a pose (a dynamic state of velocities).
-        """
-        if self.state_names[:3] != ("x", "y", "heading"):
-            raise ValueError(f"the state {self.state_names} is not a planar pose")
-        return self.states[:, :, :3]
 
     def member(self, i: int) -> Trajectory:
         """Member ``i`` as the :class:`~wmr_mujoco.api.Trajectory` ``wmr.simulate`` returns.

@@ -30,6 +30,7 @@ from typing import Any, ClassVar, Protocol
 
 import numpy as np
 
+from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.control.paths import Path, PathPoint
 
 
@@ -59,8 +60,8 @@ class CommandKind(enum.Enum):
 
 
 def wrap(angle: float) -> float:
-    """``angle`` wrapped into ``[−π, π)``."""
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+    """``angle`` wrapped into ``(−π, π]`` (:func:`wmr_mujoco.analytic.planar.wrap_angle`)."""
+    return float(wrap_angle(angle))
 
 
 def positive(name: str, value: float) -> float:
