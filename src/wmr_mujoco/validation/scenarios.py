@@ -16,13 +16,15 @@ of three kinds (:class:`ScenarioKind`):
 from __future__ import annotations
 
 import enum
-from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass, field, replace
+from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from wmr_mujoco.choices import parse_choice
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Metric, Series
 from wmr_mujoco.validation.signals import Signal
 
@@ -123,6 +125,9 @@ class Scenario:
         evaluate: a ``MEASUREMENT`` scenario's own measurement (see :data:`Evaluate`).
         film: a ``MEASUREMENT`` scenario's runs step by step, for clips (see :data:`Film`).
         description: one line for the report.
+        family: what a user would vary in it and how many draws are judged (None: the
+            scenario is one run; see :mod:`wmr_mujoco.validation.family`).
+        draw: the values of this member of the family (empty: the nominal scenario).
     """
 
     robot: str
@@ -135,6 +140,8 @@ class Scenario:
     evaluate: Evaluate | None = field(default=None, compare=False)
     film: Film | None = field(default=None, compare=False)
     description: str = field(default="", compare=False)
+    family: Family | None = field(default=None, compare=False)
+    draw: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kind", parse_choice(ScenarioKind, self.kind, "scenario kind"))
@@ -148,6 +155,24 @@ class Scenario:
             raise ValueError(f"{self.key}: duration = {self.duration!r} s; must be > 0")
         if not (np.isfinite(self.settle) and self.settle >= 0):
             raise ValueError(f"{self.key}: settle = {self.settle!r} s; must be >= 0")
+        if self.draw:
+            varied = {v.name for v in self.family.vary} if self.family else set()
+            unknown = sorted(set(self.draw) - varied)
+            if unknown:
+                raise ValueError(f"{self.key}: draw sets {unknown}, which the family does not "
+                                 f"vary; it varies {sorted(varied)}")
+        object.__setattr__(self, "draw", MappingProxyType(dict(self.draw)))
+
+    def __hash__(self) -> int:
+        return hash((self.robot, self.name, self.kind, tuple(sorted(self.draw.items()))))
+
+    def member(self, draw: Mapping[str, float]) -> Scenario:
+        """The member of this scenario's family with the values ``draw``."""
+        return replace(self, draw=draw)
+
+    def value(self, name: str, nominal: float) -> float:
+        """The drawn value of a varied quantity, or ``nominal`` (the nominal scenario)."""
+        return float(self.draw.get(name, nominal))
 
     @property
     def key(self) -> str:
