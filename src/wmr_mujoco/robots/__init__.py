@@ -26,12 +26,14 @@ from wmr_mujoco.robots import (
     tricycle,
     whipple,
 )
+from wmr_mujoco.robots.floor_steps import with_floor_family
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 
 __all__ = ["ROBOTS", "Clip", "Picture", "RobotSpec", "get_spec", "register", "registered",
            "unregister"]
 
-ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
+#: Each entry with its "random steps" family where it applies (robots.floor_steps).
+ROBOTS: dict[str, RobotSpec] = {spec.name: with_floor_family(spec) for spec in (
     disc.SPEC,
     disc_free.SPEC,
     bicycle.SPEC,

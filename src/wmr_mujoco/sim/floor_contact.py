@@ -168,3 +168,67 @@ class FloorRecorder:
         """The samples recorded so far."""
         return FloorReading(self.map.wheels, self._off[:self._k].copy(),
                             self._depth[:self._k].copy())
+
+
+#: Fields of a wheel's contact sensor (``mjtConDataField`` bits): ``found`` (the number of
+#: matching contacts) and ``dist`` (MuJoCo's signed distance of the one kept).
+SENSOR_FIELDS = (1 << int(mujoco.mjtConDataField.mjCONDATA_FOUND)) | (
+    1 << int(mujoco.mjtConDataField.mjCONDATA_DIST))
+#: The contact sensor's ``reduce`` code of ``"mindist"`` (the XML keyword; MuJoCo's
+#: Python bindings name no enum for it).
+REDUCE_MINDIST = 1
+#: Values per wheel sensor: found, dist.
+SENSOR_DIM = 2
+#: Prefix of the floor sensors' names.
+SENSOR_PREFIX = "floor_contact_"
+
+
+def add_floor_sensors(spec: mujoco.MjSpec, wheels: tuple[str, ...]) -> None:
+    """Add to ``spec``, per wheel, a contact sensor of its subtree with the ``floor``.
+
+    Each reports the number of the wheel subtree's contacts with the floor and the
+    smallest signed distance among them (``reduce="mindist"``, one contact kept), so that
+    ``mujoco.rollout`` records the :meth:`WheelMap.read` of every step in ``sensordata``
+    (:func:`sensor_reading`). The subtree of a wheel holds its rollers; its geoms that
+    cannot touch the floor make no floor contact.
+
+    Raises:
+        ValueError: no wheels given.
+    """
+    if not wheels:
+        raise ValueError("no wheels given; a floor sensor needs a wheel body")
+    for w in wheels:
+        spec.add_sensor(name=f"{SENSOR_PREFIX}{w}", type=mujoco.mjtSensor.mjSENS_CONTACT,
+                        objtype=mujoco.mjtObj.mjOBJ_XBODY, objname=w,
+                        reftype=mujoco.mjtObj.mjOBJ_GEOM, refname=FLOOR,
+                        intprm=[SENSOR_FIELDS, REDUCE_MINDIST, 1])
+
+
+def sensor_columns(model: mujoco.MjModel, wheels: tuple[str, ...]) -> np.ndarray:
+    """(len(wheels),) index in ``sensordata`` of each wheel sensor's ``found`` value.
+
+    Raises:
+        ValueError: a wheel without its sensor (:func:`add_floor_sensors`).
+    """
+    out = []
+    for w in wheels:
+        try:
+            sensor = model.sensor(f"{SENSOR_PREFIX}{w}")
+        except KeyError:
+            raise ValueError(f"the model has no floor sensor of wheel {w!r}; add it with "
+                             f"add_floor_sensors") from None
+        out.append(int(model.sensor_adr[sensor.id]))
+    return np.asarray(out, dtype=int)
+
+
+def sensor_reading(wheels: tuple[str, ...], columns: np.ndarray,
+                   sensordata: np.ndarray) -> FloorReading:
+    """The :class:`FloorReading` of recorded ``sensordata`` rows, (K, nsensordata).
+
+    A wheel is off the floor where its sensor found no contact; the depth of a step is
+    ``max(0, −dist)`` over the wheels in contact.
+    """
+    found = sensordata[:, columns] > 0
+    dist = np.where(found, sensordata[:, columns + 1], np.inf)
+    depth = np.maximum(0.0, -dist.min(axis=1)) if len(wheels) else np.zeros(len(found))
+    return FloorReading(wheels, ~found, np.where(np.isfinite(depth), depth, 0.0))
