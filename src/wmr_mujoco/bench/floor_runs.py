@@ -29,6 +29,7 @@ from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.sim.floor_contact import FloorReading, FloorRecorder, WheelMap
 from wmr_mujoco.sim.stepped_inputs import CONTROL_PERIOD, random_steps, step_draws
 from wmr_mujoco.sim.stepping import check_healthy
+from wmr_mujoco.validation import floor_family
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 
@@ -38,8 +39,6 @@ SETTLE = 0.5
 STEP_WINDOW = 0.1
 #: Seconds of a random stepped run.
 RANDOM_DURATION = 10.0
-#: Sampling step of the scenarios' inputs when their range is read, s.
-RANGE_SAMPLE = 0.01
 
 #: ``setup(model)``: changes the loaded model before it settles (e.g. its timestep).
 Setup = Callable[[mujoco.MjModel], None]
@@ -55,24 +54,12 @@ def _kinematic(spec: RobotSpec) -> Scenario:
 def command_bounds(robot: str) -> np.ndarray:
     """Per lecture input, the largest magnitude a user commands.
 
-    The robot's :attr:`RobotSpec.command_range` where it gives one (a holonomic robot whose
-    translations are grouped in a measurement), else the largest its kinematic scenarios
-    command.
+    See :func:`wmr_mujoco.validation.floor_family.command_bounds`.
 
     Raises:
-        ValueError: the robot has no body-frame kinematic scenario.
+        ValueError: an unknown robot, or one without a body-frame kinematic scenario.
     """
-    spec = get_spec(robot)
-    if spec.command_range is not None:
-        return np.asarray(spec.command_range, float)
-    _kinematic(spec)
-    # World-frame scenarios count too: their rates (Ẋ, Ẏ, ψ̇) have the body rates' sizes.
-    scenarios = [s for s in spec.scenarios if s.kind is ScenarioKind.KINEMATIC]
-    peak = np.zeros(len(scenarios[0].inputs))
-    for s in scenarios:
-        for t in np.arange(0.0, s.duration + RANGE_SAMPLE / 2, RANGE_SAMPLE):
-            peak = np.maximum(peak, np.abs(s.input_at(float(t))))
-    return peak
+    return floor_family.command_bounds(get_spec(robot))
 
 
 @dataclass

@@ -97,8 +97,8 @@ class MecanumParams:
     solver: str = "Newton"
     drive: DriveParams = DriveParams(
         wheel_kv=2.0, wheel_armature=0.004, wheel_torque_limit=3.0, wheel_rate_limit=60.0)
-    sim: SimParams = SimParams(timestep=0.004, contact_timeconst=0.008)
-    floor_impedance: float = 0.0
+    sim: SimParams = SimParams(timestep=0.00125, contact_timeconst=0.005)
+    floor_impedance: float = 0.001
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
     SOLVERS = ("Newton", "PGS", "CG")

@@ -48,7 +48,6 @@ def _check_chassis_size(obj: object) -> None:
 
 #: Wheel, fork and drive shared by the three robots (the tricycle's proven sizes).
 _WHEEL = WheelParams(radius=0.08, width=0.03, mass=0.4)
-_SIM = SimParams()
 _DRIVE = DriveParams(wheel_kv=10.0, wheel_armature=0.01, wheel_torque_limit=10.0,
                      steer_kp=100.0, steer_kv=0.5, steer_angle_limit=1.4)
 
@@ -137,7 +136,7 @@ class DiffDriveParams:
     chassis_com_x: float = -0.08
     chassis_size: tuple[float, float, float] = (0.34, 0.28, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = _SIM
+    sim: SimParams = SimParams(timestep=0.00125, floor_impedance=0.001)
 
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS
@@ -196,7 +195,7 @@ class SingleSteerParams:
     chassis_com_x: float = 0.16
     chassis_size: tuple[float, float, float] = (0.4, 0.3, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = _SIM
+    sim: SimParams = SimParams(timestep=0.0015, floor_impedance=0.001)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
@@ -249,7 +248,7 @@ class DoubleSteerParams:
     chassis_com_y: float = 0.07
     chassis_size: tuple[float, float, float] = (0.5, 0.3, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = _SIM
+    sim: SimParams = SimParams(timestep=0.0015, floor_impedance=0.001)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)

@@ -15,6 +15,7 @@ import numpy as np
 from wmr_mujoco.analytic import bicycle
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import bicycle as builder
+from wmr_mujoco.models.builders.common import wheel_floor_pairs
 from wmr_mujoco.models.params import BicycleParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
@@ -83,4 +84,5 @@ SPEC = RobotSpec(
     bench_scenario="steady turn 0.3 rad", render_scenario="lane change",
     picture=Picture(joint_angles={"steer": 0.35}), clips=(Clip(duration=5.0),),
     command=COMMAND,
+    scene_extras=wheel_floor_pairs,
 )

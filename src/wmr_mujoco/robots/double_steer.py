@@ -18,6 +18,7 @@ import numpy as np
 from wmr_mujoco.analytic import steered
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import steered as builder
+from wmr_mujoco.models.builders.common import wheel_floor_pairs
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import DoubleSteerParams
 from wmr_mujoco.robots import requirements as req
@@ -94,4 +95,5 @@ SPEC = RobotSpec(
     bench_scenario="tight turn ±1 rad", render_scenario="tight turn ±1 rad",
     picture=Picture(joint_angles={"front_steer": 0.35, "rear_steer": -0.35}),
     command=COMMAND,
+    scene_extras=wheel_floor_pairs,
 )

@@ -23,8 +23,10 @@ def _evaluate(s: Scenario, params: RobotParams | None) -> MeasurementResult:
 
 
 def with_floor_family(spec: RobotSpec) -> RobotSpec:
-    """``spec`` with the random-steps scenario appended (unchanged where it does not apply
-    or already has it)."""
+    """``spec`` with the random-steps scenario appended.
+
+    Unchanged where the family does not apply or the entry already has it.
+    """
     if not floor_family.applies(spec) or any(s.name == floor_family.NAME
                                              for s in spec.scenarios):
         return spec

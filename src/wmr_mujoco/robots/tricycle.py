@@ -19,6 +19,7 @@ import numpy as np
 from wmr_mujoco.analytic import tricycle
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import tricycle as builder
+from wmr_mujoco.models.builders.common import wheel_floor_pairs
 from wmr_mujoco.models.params import RobotParams, TricycleParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import Picture, RobotSpec
@@ -137,4 +138,5 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="figure eight",
     render_scenario="figure eight", picture=Picture(joint_angles={"steer": 0.35}),
     command=COMMAND,
+    scene_extras=wheel_floor_pairs,
 )

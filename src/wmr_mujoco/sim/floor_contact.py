@@ -34,7 +34,7 @@ def _hinge_only(model: mujoco.MjModel, body: int) -> bool:
     return all(int(model.jnt_type[adr + k]) == mujoco.mjtJoint.mjJNT_HINGE for k in range(n))
 
 
-def _touches_floor(model: mujoco.MjModel, geom: int, floor: int) -> bool:
+def touches_floor(model: mujoco.MjModel, geom: int, floor: int) -> bool:
     """Whether MuJoCo may make a contact between ``geom`` and the floor."""
     for k in range(model.npair):
         if {int(model.pair_geom1[k]), int(model.pair_geom2[k])} == {geom, floor}:
@@ -75,7 +75,7 @@ class WheelMap:
                              f"(wmr_mujoco.load), not the robot alone") from None
         top_of: dict[int, int] = {}
         for geom in range(model.ngeom):
-            if geom == floor or not _touches_floor(model, geom, floor):
+            if geom == floor or not touches_floor(model, geom, floor):
                 continue
             body = int(model.geom_bodyid[geom])
             if not _hinge_only(model, body):

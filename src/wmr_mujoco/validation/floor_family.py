@@ -1,4 +1,4 @@
-"""The "random steps" family: do the wheels stay on the floor under stepped commands?
+"""The "random steps" family: the wheels stay on the floor under stepped commands.
 
 A policy or controller holds its command for one control period and then steps to the
 next (:mod:`wmr_mujoco.sim.stepped_inputs`). This measurement scenario drives any robot
@@ -88,8 +88,11 @@ def body_frame_scenario(spec: RobotSpec) -> Scenario | None:
 
 
 def applies(spec: RobotSpec) -> bool:
-    """Whether the family can drive ``spec``: a kinematic adapter, a body-frame kinematic
-    scenario, a command map (its wheels) and a builder."""
+    """Whether the family can drive ``spec``.
+
+    It needs a kinematic adapter, a body-frame kinematic scenario, a command map (its
+    wheels) and a builder.
+    """
     return (ScenarioKind.KINEMATIC in spec.adapters and body_frame_scenario(spec) is not None
             and spec.command is not None and spec.build is not None)
 

@@ -122,7 +122,7 @@ def sliding_impratio(impedance: float) -> float:
     return SLIDING_GRIP / impedance
 
 
-def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:
+def sliding_pair_kwargs(sim: SimParams, impedance: float, steps: int = SLIDING_STEPS) -> dict:
     """A floor pair's attributes with the disc's remedy for a sliding soft contact.
 
     A frictional contact in its cone state pushes its geom off the floor by
@@ -136,14 +136,15 @@ def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:
     * ``solreffriction`` ``B_f = 1/Δt`` in MuJoCo's direct form ``(0, −B_f d)`` (MuJoCo
       divides it by ``d_width``): gripping friction still removes a slip within one step.
 
-    * ``solref`` time constant ``t_c = max(sim.contact_timeconst,`` :data:`SLIDING_STEPS`
-      ``· Δt)``. With ``d`` small a contact is a spring-damper (MuJoCo scales ``B`` and
-      ``K`` by ``1/d``) whose gain on the body is ``λ = eig(A (A + R)⁻¹)/d`` over the
-      normal rows; its damping ``2 λ/t_c`` is integrated explicitly, so it is stable only
-      while ``λ < t_c/Δt``. MuJoCo's diagonal estimate in ``R`` undercounts the coupled
-      inverse inertia of several wheels on one body: ``λ`` reaches 1.4 for omni3 and 2.2
-      for mecanum4 at rest (``tests/models/builders/test_common.py`` computes it), above
-      the 2 of the usual ``t_c = 2 Δt``.
+    * ``solref`` time constant ``t_c = max(sim.contact_timeconst, steps · Δt)`` (``steps``
+      default :data:`SLIDING_STEPS`, at least 2, MuJoCo's own floor). With ``d`` small a
+      contact is a spring-damper (MuJoCo scales ``B`` and ``K`` by ``1/d``) whose gain on
+      the body is ``λ = eig(A (A + R)⁻¹)/d`` over the normal rows; its damping ``2 λ/t_c``
+      is integrated explicitly, so it is stable only while ``λ < t_c/Δt``. MuJoCo's diagonal
+      estimate in ``R`` undercounts the coupled inverse inertia of several wheels on one
+      body: ``λ`` reaches 1.4 for omni3 and 2.2 for mecanum4 at rest
+      (``tests/models/builders/test_common.py`` computes it), above the 2 of the usual ``t_c
+      = 2 Δt``.
 
     The weight then rests ``(1 − d) g t_c²`` deep. ``impedance`` 0 returns
     :func:`contact_pair_kwargs` unchanged.
@@ -159,9 +160,47 @@ def sliding_pair_kwargs(sim: SimParams, impedance: float) -> dict:
                          f"[1e-4, {CONTACT_SOLIMP[0]}]")
     d = float(impedance)
     kwargs["solimp"] = (d, d, *CONTACT_SOLIMP[2:])
-    kwargs["solref"] = (max(sim.contact_timeconst, SLIDING_STEPS * sim.timestep), 1.0)
+    if not (isinstance(steps, int) and steps >= 2):
+        raise ValueError(f"steps = {steps!r}; valid: an integer >= 2 (MuJoCo keeps t_c >= 2 Δt)")
+    kwargs["solref"] = (max(sim.contact_timeconst, steps * sim.timestep), 1.0)
     kwargs["solreffriction"] = (0.0, -d / sim.timestep)
     return kwargs
+
+
+#: Least ``t_c/Δt`` of :func:`wheel_floor_pairs`. The normal gain λ of the robots with a
+#: few wheels is 1.1 to 1.8 at rest (``tests/models/builders/test_common.py`` computes
+#: it), under MuJoCo's 2; in motion 2 steps still let the wheels of diffdrive,
+#: single_steer and double_steer leave the floor (0.35 to 1.2 % of samples over random
+#: steps, docs/floor-contact.md), 3 do not.
+WHEEL_PAIR_STEPS = 3
+
+
+def wheel_floor_pairs(scene: mjcf.RootElement, params: object) -> None:
+    """The remedy's floor pair for every wheel collider (a ``scene_extras``).
+
+    ``params``: the robot's parameters, whose ``sim`` (:class:`SimParams`) is read. With
+    ``sim.floor_impedance`` > 0, every named ``collision``-class geom of a body
+    jointed to its parent by hinges or a ball (a wheel, a caster; not the chassis on its
+    free joint) gets an explicit pair with the scene's ``floor`` with
+    :func:`sliding_pair_kwargs` (MuJoCo makes no contact-bit contact for a geom pair a
+    ``<pair>`` names), and the model's ``impratio`` becomes :func:`sliding_impratio`.
+    With 0 nothing changes.
+    """
+    sim: SimParams = params.sim  # type: ignore[attr-defined]
+    d = sim.floor_impedance
+    if d == 0.0:
+        return
+    kwargs = sliding_pair_kwargs(sim, d, steps=WHEEL_PAIR_STEPS)
+    for geom in scene.find_all("geom"):
+        cls = getattr(geom.dclass, "dclass", geom.dclass)  # an element or its name
+        if geom.name is None or cls != "collision":
+            continue
+        joints = geom.parent.get_children("joint")
+        if not joints or geom.parent.get_children("freejoint") or any(
+                (j.type or "hinge") not in ("hinge", "ball") for j in joints):
+            continue
+        scene.contact.add("pair", geom1="floor", geom2=geom.name, **kwargs)
+    scene.option.impratio = sliding_impratio(d)
 
 
 def add_roller_default(root: mjcf.RootElement, sim: SimParams, damping: float,

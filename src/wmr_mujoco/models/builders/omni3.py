@@ -181,13 +181,13 @@ def build(params: OmniParams) -> mjcf.RootElement:
     root = common.new_root("omni3", p.sim)
     roller = common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
     if p.floor_impedance > 0.0:
-        # The scene's explicit pairs (floor_pairs) make the roller contacts (MuJoCo skips
-        # a geom pair's bit contact where a <pair> names it). The rollers keep their bits
-        # and take the pairs' solimp and solref, because the hybrid model
-        # (validation.omni_wheels.hybrid_from_model) finds the rollers and reads their
-        # contact from the geoms; so the broadphase still bounds the roller bodies.
+        # The scene's explicit pairs (floor_pairs) make the roller contacts, and with no
+        # contact bits the broadphase bounds none of the roller bodies (cheaper). The
+        # rollers take the pairs' solimp and solref, from which the hybrid model
+        # (roller_wheels.model_info.hybrid_from_model) reads their contact.
         pair = common.sliding_pair_kwargs(p.sim, p.floor_impedance)
         roller.geom.solimp, roller.geom.solref = pair["solimp"], pair["solref"]
+        roller.geom.conaffinity = 0
         root.option.impratio = common.sliding_impratio(p.floor_impedance)
     if p.roller_shape == "barrel":
         root.asset.add("mesh", name="barrel", vertex=barrel_vertices(p).ravel())

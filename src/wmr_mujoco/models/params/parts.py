@@ -141,6 +141,12 @@ class SimParams:
             at least twice the timestep).
         impratio: ratio of frictional to normal constraint impedance (elliptic cones).
         friction: sliding friction coefficient between wheels and floor.
+        floor_impedance: impedance ``d`` of the wheels' explicit floor pairs
+            (:func:`wmr_mujoco.models.builders.common.wheel_floor_pairs`, the remedy of
+            ``docs/floor-contact.md``) for robots whose scene adds them; 0: the wheels
+            touch the floor through contact bits with the collision class's contact.
+            0 or in [1e-4, 0.01]. (The disc, omni3 and mecanum4 carry their own
+            ``floor_impedance``.)
 
     """
 
@@ -148,6 +154,7 @@ class SimParams:
     contact_timeconst: float = 0.004
     impratio: float = 10.0
     friction: float = 1.0
+    floor_impedance: float = 0.0
 
     def __post_init__(self) -> None:
         _check_types(self)
@@ -155,3 +162,5 @@ class SimParams:
         _check_range(self, "contact_timeconst", 0.0, 0.1)
         _check_range(self, "impratio", 1.0, 1000.0, low_inclusive=True)
         _check_range(self, "friction", 0.0, 10.0)
+        if self.floor_impedance != 0.0:
+            _check_range(self, "floor_impedance", 1e-4, 0.01, low_inclusive=True)

@@ -42,7 +42,7 @@ class BicycleParams:
     fork_mass: float = 1.2
     drive: DriveParams = DriveParams(wheel_kv=200.0, wheel_torque_limit=60.0,
                                      steer_kp=1000.0, steer_kv=8.0)
-    sim: SimParams = SimParams()
+    sim: SimParams = SimParams(floor_impedance=0.001)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
@@ -93,7 +93,7 @@ class TricycleParams:
     drive: DriveParams = DriveParams(wheel_kv=10.0, wheel_armature=0.01,
                                      wheel_torque_limit=10.0,
                                      steer_kp=100.0, steer_kv=0.5)
-    sim: SimParams = SimParams()
+    sim: SimParams = SimParams(timestep=0.0015, floor_impedance=0.001)
 
     REAR_DRIVES = ("left", "differential")
 

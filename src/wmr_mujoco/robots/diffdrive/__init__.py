@@ -21,6 +21,7 @@ import numpy as np
 from wmr_mujoco.analytic import diffdrive
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import diffdrive as builder
+from wmr_mujoco.models.builders.common import wheel_floor_pairs
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots import requirements as req
@@ -114,4 +115,5 @@ SPEC = RobotSpec(
     adapters={ScenarioKind.KINEMATIC: kinematic_adapter},
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="figure eight",
     bench_scenario="figure eight", render_scenario="figure eight", command=COMMAND,
+    scene_extras=wheel_floor_pairs,
 )

@@ -18,6 +18,7 @@ from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.analytic.omni_hybrid import Drive, OmniHybrid, RollerGeometry
 from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.sim.floor_contact import FLOOR, touches_floor
 from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis, inertia_tensor_about
 from wmr_mujoco.sim.soft_contact import slip_relaxation
 
@@ -155,6 +156,7 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
     wheel = model.joint(wheel_joints[0])
     wb = int(wheel.bodyid[0])
     children = [b for b in range(model.nbody) if model.body_parentid[b] == wb]
+    floor = int(model.geom(FLOOR).id)
     if not children:
         raise ValueError(f"wheel {wheel_joints[0]!r} has no roller bodies")
     angles, offsets, size, friction, timeconst, solimp = [], [], None, 1.0, 0.0, None
@@ -163,7 +165,7 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
         angles.append(np.arctan2(x, z))
         offsets.append(y)
         geoms = [g for g in range(model.ngeom) if model.geom_bodyid[g] == c
-                 and model.geom_conaffinity[g]
+                 and touches_floor(model, g, floor)
                  and model.geom_type[g] == mujoco.mjtGeom.mjGEOM_ELLIPSOID]
         if len(geoms) != 1:
             raise ValueError(f"roller body {model.body(c).name!r} has {len(geoms)} ellipsoid "
