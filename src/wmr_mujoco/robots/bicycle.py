@@ -84,5 +84,5 @@ SPEC = RobotSpec(
     bench_scenario="steady turn 0.3 rad", render_scenario="lane change",
     picture=Picture(joint_angles={"steer": 0.35}), clips=(Clip(duration=5.0),),
     command=COMMAND,
-    scene_extras=wheel_floor_pairs,
+    scene_extras=wheel_floor_pairs(builder.build),
 )

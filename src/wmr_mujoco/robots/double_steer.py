@@ -95,5 +95,5 @@ SPEC = RobotSpec(
     bench_scenario="tight turn ±1 rad", render_scenario="tight turn ±1 rad",
     picture=Picture(joint_angles={"front_steer": 0.35, "rear_steer": -0.35}),
     command=COMMAND,
-    scene_extras=wheel_floor_pairs,
+    scene_extras=wheel_floor_pairs(builder.build_double),
 )

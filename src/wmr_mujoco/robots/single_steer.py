@@ -99,5 +99,5 @@ SPEC = RobotSpec(
     targets=req.vehicle_targets(0.5), scenarios=SCENARIOS, bench_scenario="slalom",
     render_scenario="slalom", picture=Picture(joint_angles={"drive_steer": 0.35}),
     command=COMMAND,
-    scene_extras=wheel_floor_pairs,
+    scene_extras=wheel_floor_pairs(builder.build_single),
 )

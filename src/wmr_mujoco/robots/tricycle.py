@@ -138,5 +138,5 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="figure eight",
     render_scenario="figure eight", picture=Picture(joint_angles={"steer": 0.35}),
     command=COMMAND,
-    scene_extras=wheel_floor_pairs,
+    scene_extras=wheel_floor_pairs(builder.build),
 )

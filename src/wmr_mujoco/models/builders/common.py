@@ -14,7 +14,8 @@ Conventions (all robots):
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from typing import Any
 
 from dm_control import mjcf
 from lxml import etree
@@ -175,32 +176,49 @@ def sliding_pair_kwargs(sim: SimParams, impedance: float, steps: int = SLIDING_S
 WHEEL_PAIR_STEPS = 3
 
 
-def wheel_floor_pairs(scene: mjcf.RootElement, params: object) -> None:
-    """The remedy's floor pair for every wheel collider (a ``scene_extras``).
+def wheel_collider_names(robot: mjcf.RootElement) -> list[str]:
+    """Names of the wheel colliders of a built robot.
 
-    ``params``: the robot's parameters, whose ``sim`` (:class:`SimParams`) is read. With
-    ``sim.floor_impedance`` > 0, every named ``collision``-class geom of a body
-    jointed to its parent by hinges or a ball (a wheel, a caster; not the chassis on its
-    free joint) gets an explicit pair with the scene's ``floor`` with
-    :func:`sliding_pair_kwargs` (MuJoCo makes no contact-bit contact for a geom pair a
-    ``<pair>`` names), and the model's ``impratio`` becomes :func:`sliding_impratio`.
-    With 0 nothing changes.
+    Every named ``collision``-class geom of a body jointed to its parent by hinges only
+    (a wheel, what :class:`~wmr_mujoco.sim.floor_contact.WheelMap` reads; not a ball
+    caster, whose own ``condim`` the caster-drag measurement sets, nor the chassis on its
+    free joint).
     """
-    sim: SimParams = params.sim  # type: ignore[attr-defined]
-    d = sim.floor_impedance
-    if d == 0.0:
-        return
-    kwargs = sliding_pair_kwargs(sim, d, steps=WHEEL_PAIR_STEPS)
-    for geom in scene.find_all("geom"):
+    names = []
+    for geom in robot.find_all("geom"):
         cls = getattr(geom.dclass, "dclass", geom.dclass)  # an element or its name
         if geom.name is None or cls != "collision":
             continue
-        joints = geom.parent.get_children("joint")
-        if not joints or geom.parent.get_children("freejoint") or any(
-                (j.type or "hinge") not in ("hinge", "ball") for j in joints):
-            continue
-        scene.contact.add("pair", geom1="floor", geom2=geom.name, **kwargs)
-    scene.option.impratio = sliding_impratio(d)
+        body = geom.parent
+        joints = body.get_children("joint")
+        if joints and not body.get_children("freejoint") and all(
+                (j.type or "hinge") == "hinge" for j in joints):
+            names.append(geom.name)
+    return names
+
+
+def wheel_floor_pairs(build: Callable[[Any], mjcf.RootElement]
+                      ) -> Callable[[mjcf.RootElement, Any], None]:
+    """The ``scene_extras`` of a robot built by ``build`` whose wheels take the remedy.
+
+    The returned ``extras(scene, params)`` reads ``params.sim`` (:class:`SimParams`).
+    With ``sim.floor_impedance`` > 0 it adds to the scene an explicit pair of every
+    wheel collider (:func:`wheel_collider_names` of ``build(params)``) with the
+    ``floor``, with :func:`sliding_pair_kwargs` at :data:`WHEEL_PAIR_STEPS` (MuJoCo makes
+    no contact-bit contact for a geom pair a ``<pair>`` names), and sets the model's
+    ``impratio`` to :func:`sliding_impratio`. With 0 it adds nothing.
+    """
+    def extras(scene: mjcf.RootElement, params: Any) -> None:
+        sim: SimParams = params.sim
+        d = sim.floor_impedance
+        if d == 0.0:
+            return
+        kwargs = sliding_pair_kwargs(sim, d, steps=WHEEL_PAIR_STEPS)
+        for name in wheel_collider_names(build(params)):
+            scene.contact.add("pair", geom1="floor", geom2=name, **kwargs)
+        scene.option.impratio = sliding_impratio(d)
+
+    return extras
 
 
 def add_roller_default(root: mjcf.RootElement, sim: SimParams, damping: float,

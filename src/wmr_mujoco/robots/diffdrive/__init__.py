@@ -115,5 +115,5 @@ SPEC = RobotSpec(
     adapters={ScenarioKind.KINEMATIC: kinematic_adapter},
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="figure eight",
     bench_scenario="figure eight", render_scenario="figure eight", command=COMMAND,
-    scene_extras=wheel_floor_pairs,
+    scene_extras=wheel_floor_pairs(builder.build),
 )
