@@ -145,7 +145,8 @@ def real_time_factors(spec: RobotSpec, settings: Sequence[RobotParams | None],
             for t, w in zip(prepared, walls, strict=True)]
 
 
-def _describe(params: Any) -> str:
+def describe(params: Any) -> str:
+    """``<timestep> ms, <floor contact>`` of a robot's parameters."""
     sim = params.sim
     d = getattr(params, "floor_impedance", sim.floor_impedance)
     contact = f"floor pairs d = {d:g}" if d else "collision class"
@@ -160,9 +161,9 @@ def rows(robots: Sequence[str], how: Rounds) -> list[dict[str, object]]:
         before = previous(spec)
         settings = [None] if before is None else [None, before]
         rtf = real_time_factors(spec, settings, how)
-        out.append({"robot": name, "default": _describe(spec.params_type()),
+        out.append({"robot": name, "default": describe(spec.params_type()),
                     "rtf": rtf[0],
-                    "previous": None if before is None else _describe(before),
+                    "previous": None if before is None else describe(before),
                     "rtf_previous": rtf[1] if before is not None else None})
         print(f"{name}: done", flush=True)
     return out

@@ -1,30 +1,29 @@
 """Wheels on the floor, per robot: off-floor share, penetration and cost (issue 24 § 3).
 
 ``python -m wmr_mujoco.bench.floor_study [--quick] [--no-write]`` runs, for every robot
-with a kinematic adapter, the two input families of :mod:`wmr_mujoco.bench.floor_runs`
-(steps from rest, read over their first 0.1 s; seeded random stepped inputs, a new input
-every 0.1 s) and prints, and pastes between the ``floor contact`` markers of
-``docs/floor-contact.md``:
+the family drives, the members of the random-steps family
+(:mod:`wmr_mujoco.validation.floor_family`: seeded random stepped commands, the first
+a step from rest, the wheel phase drawn) for seeds 0 and 1, and prints, and pastes
+between the ``floor contact`` markers of ``docs/floor-contact.md``, the family's judged
+metrics (median and worst over the members):
 
-* the share of wheel samples with no floor contact after the steps (mean over the draws
-  and the worst draw) and over the random runs (the worst run);
-* the deepest penetration of a wheel into the floor over every run;
-* the real-time factor of bare ``mj_step`` loops on the random inputs, one thread, at the
+* the share of wheel samples with no floor contact in the first 0.1 s after the step from
+  rest, and over the whole run;
+* the deepest penetration of a wheel into the floor;
+* the real-time factor of bare ``mj_step`` loops on random inputs, one thread, at the
   robot's timestep and at 2× and 4× it (the same model with ``opt.timestep`` scaled;
   MuJoCo keeps each contact's time constant at least twice the step), the settings timed
   in alternating rounds of one run, median of the rounds.
 
-Robots with a ``floor_impedance`` parameter off by default (omni3, mecanum4) get a second
-row with the disc's remedy (:func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs`)
-at :data:`REMEDY_IMPEDANCE`, at the longest step whose
-contact rests within the depth bound (:func:`remedy_timestep`). ``--quick`` judges fewer draws and
-shorter runs, and its table says so.
+Each robot gets a row at its defaults and, where they differ, one at main's defaults
+before issue 24 § 4 (:data:`~wmr_mujoco.bench.default_speed.PREVIOUS_DEFAULTS`: contact
+bits, the older timesteps). ``--quick`` judges fewer draws and shorter runs, and its table
+says so.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import math
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -38,17 +37,15 @@ from wmr_mujoco.bench.floor_runs import (
     STEP_WINDOW,
     Settled,
     command_bounds,
-    floor_figures,
     settled,
 )
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
-from wmr_mujoco.models.builders.common import SLIDING_STEPS, sliding_impratio
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import REPO_ROOT
 from wmr_mujoco.robots import ROBOTS, get_spec
 from wmr_mujoco.sim.stepped_inputs import CONTROL_PERIOD, random_steps
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
-from wmr_mujoco.validation.scenarios import ScenarioKind
+from wmr_mujoco.validation import floor_family
 
 DOC = REPO_ROOT / "docs" / "floor-contact.md"
 MARKER = "floor contact"
@@ -56,69 +53,57 @@ MARKER = "floor contact"
 STEP_BOUND_PCT = 1.0
 RANDOM_BOUND_PCT = 0.1
 DEPTH_BOUND_MM = 0.5
-#: The remedy's impedance: the disc's. Its push ``μ d s/Δt`` stays under g up to a slip of
-#: ``g Δt/(μ d)``, above the largest slip a wheel at its rate limit can have against a
-#: platform at full speed the other way, ``2 r ω_max`` (docs/floor-contact.md).
-REMEDY_IMPEDANCE = 0.001
-#: Gravity, m/s².
-GRAVITY = 9.81
-#: Grid of the remedy's timestep, s.
-STEP_GRID = 0.0005
 #: Timestep multiples timed.
 STEP_FACTORS = (1, 2, 4)
 
 
 @dataclass(frozen=True)
 class Draws:
-    """How many draws a run judges."""
+    """How many draws a run judges: ``draws`` members per seed of ``seeds``."""
 
-    steps: int
+    draws: int
     seeds: tuple[int, ...]
     duration: float
     timed: float
     rounds: int
 
 
-FULL = Draws(steps=20, seeds=(1, 2, 3), duration=10.0, timed=2.0, rounds=3)
-QUICK = Draws(steps=5, seeds=(1,), duration=2.0, timed=0.5, rounds=1)
+FULL = Draws(draws=floor_family.DRAWS, seeds=(0, 1), duration=floor_family.DURATION,
+             timed=2.0, rounds=3)
+QUICK = Draws(draws=3, seeds=(0,), duration=2.0, timed=0.5, rounds=1)
 
 
 def _kinematic_robots() -> list[str]:
-    return [r for r in ROBOTS
-            if ScenarioKind.KINEMATIC in get_spec(r).adapters
-            and any(s.kind is ScenarioKind.KINEMATIC and not s.world_frame
-                    for s in get_spec(r).scenarios)]
+    return [r for r in ROBOTS if floor_family.applies(get_spec(r))]
+
+
+def family_figures(robot: str, params: RobotParams | None, draws: Draws) -> np.ndarray:
+    """(members, 3) judged metrics of the random-steps family's members.
+
+    Per member: off-floor share after the step from rest, %; over the run, %; deepest
+    penetration, mm.
+
+    Raises:
+        SimulationDivergedError: a member diverged.
+    """
+    spec = get_spec(robot)
+    nominal = dataclasses.replace(spec.scenario(floor_family.NAME), duration=draws.duration)
+    assert nominal.family is not None
+    members = [nominal.member(d) for seed in draws.seeds
+               for d in nominal.family.sample(seed, nominal.key, draws.draws)]
+    return np.array([[m.value for m in floor_family.measure(spec, member, params).metrics]
+                     for member in members])
 
 
 def _settings(robot: str) -> list[tuple[str, RobotParams | None]]:
-    spec = get_spec(robot)
+    """The robot's defaults, and main's previous defaults where they differ."""
+    from wmr_mujoco.bench.default_speed import previous
+
     out: list[tuple[str, RobotParams | None]] = [("default", None)]
-    ptype = spec.params_type
-    # A row with the remedy where the robot has it as an option, off by default.
-    defaults = ({f.name: f.default for f in dataclasses.fields(ptype)}
-                if ptype is not None else {})
-    if defaults.get("floor_impedance") == 0.0:
-        sim = defaults["sim"]
-        dt = remedy_timestep(sim.timestep)
-        params = ptype(floor_impedance=REMEDY_IMPEDANCE,
-                       sim=dataclasses.replace(sim, timestep=dt,
-                                               contact_timeconst=SLIDING_STEPS * dt))
-        out.append((f"floor pairs d={REMEDY_IMPEDANCE:g}, impratio "
-                    f"{sliding_impratio(REMEDY_IMPEDANCE):g}, "
-                    f"step {1e3 * dt:g} ms, t_c {1e3 * SLIDING_STEPS * dt:g} ms", params))
+    before = previous(get_spec(robot))
+    if before is not None and before != get_spec(robot).params_type():
+        out.append(("previous default", before))
     return out
-
-
-def remedy_timestep(timestep: float) -> float:
-    """The longest step (0.5 ms grid, at most ``timestep``) whose sliding pair rests in bound.
-
-    The remedy's contact rests ``(1 − d) g t_c²`` deep with ``t_c`` =
-    :data:`~wmr_mujoco.models.builders.common.SLIDING_STEPS` ``· Δt``, so
-    ``Δt ≤ √(depth / ((1 − d) g)) / SLIDING_STEPS``.
-    """
-    bound = math.sqrt(DEPTH_BOUND_MM * 1e-3 / ((1.0 - REMEDY_IMPEDANCE) * GRAVITY))
-    longest = bound / SLIDING_STEPS
-    return min(timestep, math.floor(longest / STEP_GRID) * STEP_GRID)
 
 
 def _loop(run: Settled, inputs: np.ndarray, factor: int, seconds: float) -> float:
@@ -167,7 +152,7 @@ def real_time_factors(robot: str, params: RobotParams | None, draws: Draws,
 
 
 def collision_cost(rounds: int = 5, calls: int = 2000) -> tuple[float, float]:
-    """omni3's ``mj_collision`` time per call, µs: contact bits (default), plain pairs.
+    """omni3's ``mj_collision`` time per call, µs: contact bits, plain explicit pairs.
 
     Both models settled 0.5 s at rest; the pairs are the collision class's contact
     (``floor_pairs(plain=True)``, the same physics), timed in alternating rounds.
@@ -177,10 +162,11 @@ def collision_cost(rounds: int = 5, calls: int = 2000) -> tuple[float, float]:
     from wmr_mujoco.models.builders import omni3 as builder
     from wmr_mujoco.models.params import OmniParams
 
-    root = build_scene("omni3")
-    builder.floor_pairs(root, OmniParams(), plain=True)
+    bits = OmniParams(floor_impedance=0.0)
+    root = build_scene("omni3", bits)
+    builder.floor_pairs(root, bits, plain=True)
     root.default.find("default", "roller").geom.conaffinity = 0
-    models = [load("omni3"), mujoco.MjModel.from_xml_string(common.to_xml(root))]
+    models = [load("omni3", bits), mujoco.MjModel.from_xml_string(common.to_xml(root))]
     datas = []
     for m in models:
         d = mujoco.MjData(m)
@@ -202,45 +188,52 @@ def rows(draws: Draws, robots: Sequence[str] | None = None) -> list[dict[str, ob
     out = []
     for robot in robots or _kinematic_robots():
         for label, params in _settings(robot):
-            row: dict[str, object] = {"robot": robot, "setting": label}
+            row: dict[str, object] = {"robot": robot, "setting": label,
+                                      "params": _describe(params, robot)}
             try:
-                f = floor_figures(robot, draws.steps, draws.seeds, params=params,
-                                  random_duration=draws.duration)
+                f = family_figures(robot, params, draws)
             except SimulationDivergedError as err:
                 row["diverged"] = str(err)
                 out.append(row)
                 continue
-            row.update(wheels=len(f.wheels), step_mean=100 * f.steps.off_floor_share,
-                       step_worst=100 * f.step_worst, random_worst=100 * f.random_worst,
-                       depth_mm=1e3 * f.max_depth,
+            row.update(median=np.median(f, axis=0), worst=f.max(axis=0), members=len(f),
                        rtf=real_time_factors(robot, params, draws))
             out.append(row)
             print(f"{robot} [{label}]: done", flush=True)
     return out
 
 
+def _describe(params: RobotParams | None, robot: str) -> str:
+    from wmr_mujoco.bench.default_speed import describe
+
+    return describe(params if params is not None else get_spec(robot).params_type())
+
+
 def table(results: list[dict[str, object]], draws: Draws, quick: bool) -> str:
     """The markdown table of :func:`rows`."""
     head = [f"{'QUICK run (fewer draws, shorter runs): ' if quick else ''}"
-            f"{draws.steps} steps from rest (off-floor read over their first "
-            f"{STEP_WINDOW:g} s), {len(draws.seeds)} random stepped run(s) of "
-            f"{draws.duration:g} s (a new input every {CONTROL_PERIOD:g} s); bounds: "
-            f"≤ {STEP_BOUND_PCT:g} % after steps, ≤ {RANDOM_BOUND_PCT:g} % over random "
-            f"steps, ≤ {DEPTH_BOUND_MM:g} mm.", "",
-            "| robot | setting | wheels | off floor after steps, mean / worst % "
-            "| off floor, random steps, worst % | deepest mm "
+            f"{draws.draws} members of the random-steps family for each seed of "
+            f"{', '.join(map(str, draws.seeds))}, {draws.duration:g} s each (a new command "
+            f"every {CONTROL_PERIOD:g} s, the first a step from rest); median / worst over "
+            f"the members. Requirements (issue 24 § 3): ≤ {STEP_BOUND_PCT:g} % in the first "
+            f"{STEP_WINDOW:g} s after the step, ≤ {RANDOM_BOUND_PCT:g} % over the run, "
+            f"≤ {DEPTH_BOUND_MM:g} mm.", "",
+            "| robot | setting | off floor after the step, % | off floor over the run, % "
+            "| deepest, mm "
             + "".join(f"| real-time factor ×{f} step " for f in STEP_FACTORS) + "|",
             "|---" * (5 + len(STEP_FACTORS)) + "|"]
     for r in results:
+        setting = f"{r['setting']}: {r['params']}"
         if "diverged" in r:
-            head.append(f"| {r['robot']} | {r['setting']} | diverged: {r['diverged']} |"
+            head.append(f"| {r['robot']} | {setting} | diverged: {r['diverged']} |"
                         + " |" * (2 + len(STEP_FACTORS)))
             continue
+        med, worst = r["median"], r["worst"]
         rtf = "".join(f"| {'diverged' if not np.isfinite(x) else f'{x:.0f}×'} "
                       for x in r["rtf"])  # type: ignore[attr-defined]
-        head.append(f"| {r['robot']} | {r['setting']} | {r['wheels']} "
-                    f"| {fixed(r['step_mean'])} / {fixed(r['step_worst'])} "  # type: ignore[arg-type]
-                    f"| {fixed(r['random_worst'], 3)} | {fixed(r['depth_mm'], 3)} {rtf}|")  # type: ignore[arg-type]
+        cells = [f"{fixed(med[k], n)} / {fixed(worst[k], n)}"  # type: ignore[index]
+                 for k, n in ((0, 2), (1, 3), (2, 3))]
+        head.append(f"| {r['robot']} | {setting} | " + " | ".join(cells) + f" {rtf}|")
     return "\n".join(head)
 
 

@@ -15,7 +15,7 @@ import numpy as np
 from wmr_mujoco.analytic import bicycle
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import bicycle as builder
-from wmr_mujoco.models.builders.common import wheel_floor_pairs
+from wmr_mujoco.models.builders.wheel_pairs import wheel_floor_pairs
 from wmr_mujoco.models.params import BicycleParams, RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec

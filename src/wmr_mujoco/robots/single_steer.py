@@ -20,7 +20,7 @@ import numpy as np
 from wmr_mujoco.analytic import steered
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders import steered as builder
-from wmr_mujoco.models.builders.common import wheel_floor_pairs
+from wmr_mujoco.models.builders.wheel_pairs import wheel_floor_pairs
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import SingleSteerParams
 from wmr_mujoco.robots import requirements as req

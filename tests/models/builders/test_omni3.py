@@ -1,5 +1,6 @@
 """omni3's layout: three wheels at L, 120° apart, axles radial; rollers tangent, staggered."""
 
+import dataclasses
 import math
 
 import mujoco
@@ -88,15 +89,22 @@ def _plain_paired(params: OmniParams) -> mujoco.MjModel:
     from wmr_mujoco.models.builders import common
     from wmr_mujoco.models.builders import omni3 as builder
 
+    params = dataclasses.replace(params, floor_impedance=0.0)  # bits, then plain pairs
     root = build_scene("omni3", params)
     builder.floor_pairs(root, params, plain=True)
     root.default.find("default", "roller").geom.conaffinity = 0
     return mujoco.MjModel.from_xml_string(common.to_xml(root))
 
 
-def test_default_keeps_contact_bits_and_no_pairs():
-    # The hybrid model reads the rollers (and their contact) from their contact bits.
-    assert load("omni3").npair == 0
+def test_default_has_the_remedy_pairs_and_no_roller_bits():
+    # The default touches the floor through the remedy's explicit roller-floor pairs
+    # (docs/floor-contact.md) and no contact bits: the broadphase bounds no roller.
+    model = load("omni3")
+    rollers = [g for g in range(model.ngeom) if model.geom_group[g] == 3
+               and "_roller" in model.body(model.geom_bodyid[g]).name]
+    assert model.npair == len(rollers) == 3 * 2 * OmniParams().rollers_per_row
+    assert not model.geom_conaffinity[rollers].any()
+    np.testing.assert_array_equal(model.pair_solimp[:, :2], OmniParams().floor_impedance)
 
 
 @pytest.mark.parametrize("params", [OmniParams(floor_impedance=0.001), None])
@@ -118,22 +126,23 @@ def test_floor_pairs_name_every_roller_collider_once(params):
     assert sorted(model.pair_geom2) == sorted(rollers)
     robot = [g for g in range(model.ngeom) if model.geom_bodyid[g] != 0]
     assert not model.geom_contype[robot].any()
-    if params is None:  # plain pairs: no bits left, the broadphase skips the rollers
-        assert not model.geom_conaffinity[robot].any()
-    else:  # the remedy's rollers keep their bits (the hybrid model reads them) and the
-        # pairs' solimp; MuJoCo makes no bit contact for a pair a <pair> names
+    # No bits left: the broadphase skips the rollers, and no contact is made twice.
+    assert not model.geom_conaffinity[robot].any()
+    if params is not None:  # the remedy's rollers carry the pairs' solimp (the hybrid
+        # model reads the roller contact from the geoms)
         np.testing.assert_array_equal(model.geom_solimp[rollers], model.pair_solimp[:1].repeat(
             len(rollers), axis=0))
-        data = _cruise(model, 300)
-        assert data.ncon == len({(c.geom1, c.geom2) for c in data.contact[:data.ncon]})
+    data = _cruise(model, 300)
+    assert data.ncon == len({(c.geom1, c.geom2) for c in data.contact[:data.ncon]})
 
 
 def test_plain_pairs_move_the_robot_as_contact_bits():
     # The same contact set with the parameters MuJoCo combines from the geoms, so the same
     # constraint problem each step; only the contacts' order may differ (rounding). Pose
     # and wheel angles agree to 1e-9 (m, rad), far below any target.
-    a = _cruise(_plain_paired(OmniParams()), COMPARE_STEPS)
-    b = _cruise(load("omni3"), COMPARE_STEPS)
+    bits = OmniParams(floor_impedance=0.0)
+    a = _cruise(_plain_paired(bits), COMPARE_STEPS)
+    b = _cruise(load("omni3", bits), COMPARE_STEPS)
     assert a.ncon == b.ncon
     np.testing.assert_allclose(a.qpos[:7], b.qpos[:7], rtol=0, atol=1e-9)
     for i in range(3):

@@ -14,8 +14,7 @@ Conventions (all robots):
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
-from typing import Any
+from collections.abc import Sequence
 
 from dm_control import mjcf
 from lxml import etree
@@ -166,59 +165,6 @@ def sliding_pair_kwargs(sim: SimParams, impedance: float, steps: int = SLIDING_S
     kwargs["solref"] = (max(sim.contact_timeconst, steps * sim.timestep), 1.0)
     kwargs["solreffriction"] = (0.0, -d / sim.timestep)
     return kwargs
-
-
-#: Least ``t_c/Δt`` of :func:`wheel_floor_pairs`. The normal gain λ of the robots with a
-#: few wheels is 1.1 to 1.8 at rest (``tests/models/builders/test_common.py`` computes
-#: it), under MuJoCo's 2; in motion 2 steps still let the wheels of diffdrive,
-#: single_steer and double_steer leave the floor (0.35 to 1.2 % of samples over random
-#: steps, docs/floor-contact.md), 3 do not.
-WHEEL_PAIR_STEPS = 3
-
-
-def wheel_collider_names(robot: mjcf.RootElement) -> list[str]:
-    """Names of the wheel colliders of a built robot.
-
-    Every named ``collision``-class geom of a body jointed to its parent by hinges only
-    (a wheel, what :class:`~wmr_mujoco.sim.floor_contact.WheelMap` reads; not a ball
-    caster, whose own ``condim`` the caster-drag measurement sets, nor the chassis on its
-    free joint).
-    """
-    names = []
-    for geom in robot.find_all("geom"):
-        cls = getattr(geom.dclass, "dclass", geom.dclass)  # an element or its name
-        if geom.name is None or cls != "collision":
-            continue
-        body = geom.parent
-        joints = body.get_children("joint")
-        if joints and not body.get_children("freejoint") and all(
-                (j.type or "hinge") == "hinge" for j in joints):
-            names.append(geom.name)
-    return names
-
-
-def wheel_floor_pairs(build: Callable[[Any], mjcf.RootElement]
-                      ) -> Callable[[mjcf.RootElement, Any], None]:
-    """The ``scene_extras`` of a robot built by ``build`` whose wheels take the remedy.
-
-    The returned ``extras(scene, params)`` reads ``params.sim`` (:class:`SimParams`).
-    With ``sim.floor_impedance`` > 0 it adds to the scene an explicit pair of every
-    wheel collider (:func:`wheel_collider_names` of ``build(params)``) with the
-    ``floor``, with :func:`sliding_pair_kwargs` at :data:`WHEEL_PAIR_STEPS` (MuJoCo makes
-    no contact-bit contact for a geom pair a ``<pair>`` names), and sets the model's
-    ``impratio`` to :func:`sliding_impratio`. With 0 it adds nothing.
-    """
-    def extras(scene: mjcf.RootElement, params: Any) -> None:
-        sim: SimParams = params.sim
-        d = sim.floor_impedance
-        if d == 0.0:
-            return
-        kwargs = sliding_pair_kwargs(sim, d, steps=WHEEL_PAIR_STEPS)
-        for name in wheel_collider_names(build(params)):
-            scene.contact.add("pair", geom1="floor", geom2=name, **kwargs)
-        scene.option.impratio = sliding_impratio(d)
-
-    return extras
 
 
 def add_roller_default(root: mjcf.RootElement, sim: SimParams, damping: float,
