@@ -8,23 +8,25 @@ import pytest
 
 from wmr_mujoco.bench import floor_study as fs
 
-TINY = dataclasses.replace(fs.QUICK, steps=2, duration=0.5, timed=0.2)
+TINY = dataclasses.replace(fs.QUICK, draws=2, duration=0.5, timed=0.2)
 
 
 def test_rows_and_table_for_the_disc():
     rows = fs.rows(TINY, ["disc"])
     assert [r["robot"] for r in rows] == ["disc"]
     r = rows[0]
-    assert r["step_mean"] == 0.0 and r["random_worst"] == 0.0  # the disc's remedy
+    assert r["members"] == 2
+    assert r["worst"][0] == 0.0 and r["worst"][1] == 0.0  # the disc's remedy
     assert all(x > 0 for x in r["rtf"])
     text = fs.table(rows, TINY, quick=True)
     assert text.startswith("QUICK run")
-    assert "| disc | default | 1 |" in text
+    assert "| disc | default: " in text
 
 
-def test_roller_robots_get_a_remedy_row():
+def test_robots_whose_defaults_changed_get_a_previous_row():
     labels = [label for label, _ in fs._settings("omni3")]
-    assert labels[0] == "default" and len(labels) == 2
+    assert labels == ["default", "previous default"]
+    assert [label for label, _ in fs._settings("disc")] == ["default"]
 
 
 def test_unknown_robot_fails_before_any_run():

@@ -171,18 +171,32 @@ def _normal_gain(robot: str, params) -> float:
     return float(np.max(np.linalg.eigvals(gain[np.ix_(normal, normal)] / imp[normal]).real))
 
 
-def test_sliding_steps_exceed_the_normal_gain_of_the_roller_robots():
-    # Stability of a soft (d ≪ 1) contact's explicit damping needs λ < t_c/Δt; the usual
-    # t_c = 2Δt is not enough for mecanum4 (λ > 2: it diverged in the study), and
-    # SLIDING_STEPS must exceed λ of every remedy setting the floor study measures (at
-    # mecanum4's own 4 ms step it rests twice as deep, on more rollers, and λ ≈ 5: that
-    # step is not one of them, docs/floor-contact.md).
-    from wmr_mujoco.bench.floor_study import _settings
+ROBOTS_WITH_PAIRS = ("bicycle", "tricycle", "omni3", "mecanum4", "diffdrive", "single_steer",
+                     "double_steer")
+
+
+@pytest.mark.parametrize("robot", ROBOTS_WITH_PAIRS)
+def test_default_pair_time_constant_exceeds_the_normal_gain(robot):
+    # Stability of a soft (d ≪ 1) contact's explicit damping needs λ < t_c/Δt
+    # (sliding_pair_kwargs); every robot's default floor pairs must keep it, with the
+    # pairs' own t_c and the model's step.
+    from wmr_mujoco import load
+
+    model = load(robot)
+    assert model.npair > 0 and np.all(model.pair_solimp[:, 0] < 0.01)  # the remedy
+    steps = float(np.min(model.pair_solref[:, 0])) / model.opt.timestep
+    assert _normal_gain(robot, None) < steps
+
+
+def test_mecanum4_needs_more_than_three_steps():
+    # mecanum4's λ exceeds 2 (at t_c = 2 Δt it diverged, docs/floor-contact.md): its
+    # default t_c is 4 steps, above SLIDING_STEPS.
+    from wmr_mujoco import load
     from wmr_mujoco.models.builders.common import SLIDING_STEPS
 
-    gains = {r: _normal_gain(r, _settings(r)[1][1]) for r in ("omni3", "mecanum4")}
-    assert gains["mecanum4"] > 2.0, gains
-    assert max(gains.values()) < SLIDING_STEPS, gains
+    assert _normal_gain("mecanum4", None) > 2.0
+    model = load("mecanum4")
+    assert float(np.min(model.pair_solref[:, 0])) / model.opt.timestep > SLIDING_STEPS
 
 
 def test_sliding_impratio_keeps_impratio_times_d():

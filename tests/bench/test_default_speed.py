@@ -1,0 +1,34 @@
+"""The default-speed table: previous defaults as recorded, a timed row, the table."""
+
+from __future__ import annotations
+
+import pytest
+
+from wmr_mujoco.bench import default_speed as ds
+from wmr_mujoco.robots import get_spec
+
+TINY = ds.Rounds(seconds=0.2, rounds=1)
+
+
+def test_previous_defaults_are_the_recorded_overrides():
+    before = ds.previous(get_spec("omni3"))
+    assert before is not None
+    assert before.floor_impedance == 0.0
+    assert before.sim.timestep == ds.PREVIOUS_DEFAULTS["omni3"]["sim.timestep"]
+    # Every drivable robot has a record to compare with.
+    assert set(ds.drivable()) <= set(ds.PREVIOUS_DEFAULTS)
+
+
+def test_rows_and_table():
+    rows = ds.rows(["bicycle"], TINY)
+    assert rows[0]["rtf"] > 0 and rows[0]["rtf_previous"] > 0
+    assert "floor pairs" in rows[0]["default"]
+    assert "collision class" in rows[0]["previous"]
+    text = ds.table(rows, [], TINY, quick=True)
+    assert text.startswith("QUICK run")
+    assert "| bicycle |" in text and "Peer left out" in text
+
+
+def test_unknown_robot_fails_before_any_run():
+    with pytest.raises(ValueError, match="nosuch"):
+        ds.main(["--quick", "nosuch"])
