@@ -97,7 +97,7 @@ class MecanumParams:
     solver: str = "Newton"
     drive: DriveParams = DriveParams(
         wheel_kv=2.0, wheel_armature=0.004, wheel_torque_limit=3.0, wheel_rate_limit=60.0)
-    sim: SimParams = SimParams(timestep=0.00125, contact_timeconst=0.005)
+    sim: SimParams = SimParams(timestep=0.00125, contact_timeconst=0.005, floor_dampratio=0.5)
     floor_impedance: float = 0.001
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")

@@ -146,7 +146,10 @@ def sliding_pair_kwargs(sim: SimParams, impedance: float, steps: int = SLIDING_S
       (``tests/models/builders/test_common.py`` computes it), above the 2 of the usual ``t_c
       = 2 Δt``.
 
-    The weight then rests ``(1 − d) g t_c²`` deep. ``impedance`` 0 returns
+    * ``solref`` damping ratio ``ζ = sim.floor_dampratio``: MuJoCo's damping
+      ``2/(d t_c)`` does not depend on it, its stiffness ``1/(d ζ² t_c²)`` does.
+
+    The weight then rests ``(1 − d) g ζ² t_c²`` deep. ``impedance`` 0 returns
     :func:`contact_pair_kwargs` unchanged.
 
     Raises:
@@ -162,7 +165,7 @@ def sliding_pair_kwargs(sim: SimParams, impedance: float, steps: int = SLIDING_S
     kwargs["solimp"] = (d, d, *CONTACT_SOLIMP[2:])
     if not (isinstance(steps, int) and steps >= 2):
         raise ValueError(f"steps = {steps!r}; valid: an integer >= 2 (MuJoCo keeps t_c >= 2 Δt)")
-    kwargs["solref"] = (max(sim.contact_timeconst, steps * sim.timestep), 1.0)
+    kwargs["solref"] = (max(sim.contact_timeconst, steps * sim.timestep), sim.floor_dampratio)
     kwargs["solreffriction"] = (0.0, -d / sim.timestep)
     return kwargs
 

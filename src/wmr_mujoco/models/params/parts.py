@@ -147,6 +147,10 @@ class SimParams:
             touch the floor through contact bits with the collision class's contact.
             0 or in [1e-4, 0.01]. (The disc, omni3 and mecanum4 carry their own
             ``floor_impedance``.)
+        floor_dampratio: damping ratio ζ of the remedy's floor pairs (``solref[1]``), in
+            [0.1, 1]. MuJoCo's contact damping depends on the time constant alone and its
+            stiffness on ``ζ t_c``: below 1 the pair rests ``(1 − d) g ζ² t_c²`` deep at
+            the same damping, so at the same stable ``t_c``.
 
     """
 
@@ -155,6 +159,7 @@ class SimParams:
     impratio: float = 10.0
     friction: float = 1.0
     floor_impedance: float = 0.0
+    floor_dampratio: float = 1.0
 
     def __post_init__(self) -> None:
         _check_types(self)
@@ -164,3 +169,4 @@ class SimParams:
         _check_range(self, "friction", 0.0, 10.0)
         if self.floor_impedance != 0.0:
             _check_range(self, "floor_impedance", 1e-4, 0.01, low_inclusive=True)
+        _check_range(self, "floor_dampratio", 0.1, 1.0, low_inclusive=True)
