@@ -71,10 +71,11 @@ def test_a_member_reads_the_lifting_of_the_plain_contact():
     member = dataclasses.replace(spec.scenario(ff.NAME), duration=2.0).member(
         {ff.WHEEL_PHASE: 0.3, ff.INPUTS: 0.5})
     result = ff.measure(spec, member, params)
-    step, whole, _ = (m.value for m in result.metrics)
+    step, whole = (m.value for m in result.metrics[:2])
     assert step > 5.0 and whole > 1.0
     assert all(m.target is not None and m.target.kind == "requirement"
-               for m in result.metrics)
+               for m in result.metrics[:3])
+    assert result.metrics[3].target is None  # the tilt is reported, not judged
 
 
 def test_the_disc_keeps_its_wheel_down():
@@ -84,6 +85,16 @@ def test_the_disc_keeps_its_wheel_down():
     spec = get_spec("disc")
     member = dataclasses.replace(spec.scenario(ff.NAME), duration=2.0).member(
         {ff.WHEEL_PHASE: 1.0, ff.INPUTS: 0.25})
-    step, whole, depth = (m.value for m in ff.measure(spec, member).metrics)
+    step, whole, depth, _ = (m.value for m in ff.measure(spec, member).metrics)
     assert step == 0.0 and whole == 0.0
     assert depth <= 0.5
+
+
+def test_tilt_is_the_angle_of_the_body_z_axis():
+    # A rotation by α about a horizontal axis tilts z by α; about z it tilts nothing.
+    a = math.radians(30.0)
+    about_x = [math.cos(a / 2), math.sin(a / 2), 0.0, 0.0]
+    about_y = [math.cos(a / 2), 0.0, math.sin(a / 2), 0.0]
+    about_z = [math.cos(a / 2), 0.0, 0.0, math.sin(a / 2)]
+    np.testing.assert_allclose(ff._tilt_deg(np.array([about_x, about_y, about_z])),
+                               [30.0, 30.0, 0.0], atol=1e-9)

@@ -78,10 +78,10 @@ def _kinematic_robots() -> list[str]:
 
 
 def family_figures(robot: str, params: RobotParams | None, draws: Draws) -> np.ndarray:
-    """(members, 3) judged metrics of the random-steps family's members.
+    """(members, 4) judged metrics of the random-steps family's members.
 
     Per member: off-floor share after the step from rest, %; over the run, %; deepest
-    penetration, mm.
+    penetration, mm; largest chassis tilt, deg (reported).
 
     Raises:
         SimulationDivergedError: a member diverged.
@@ -219,20 +219,20 @@ def table(results: list[dict[str, object]], draws: Draws, quick: bool) -> str:
             f"{STEP_WINDOW:g} s after the step, ≤ {RANDOM_BOUND_PCT:g} % over the run, "
             f"≤ {DEPTH_BOUND_MM:g} mm.", "",
             "| robot | setting | off floor after the step, % | off floor over the run, % "
-            "| deepest, mm "
+            "| deepest, mm | chassis tilt, deg "
             + "".join(f"| real-time factor ×{f} step " for f in STEP_FACTORS) + "|",
-            "|---" * (5 + len(STEP_FACTORS)) + "|"]
+            "|---" * (6 + len(STEP_FACTORS)) + "|"]
     for r in results:
         setting = f"{r['setting']}: {r['params']}"
         if "diverged" in r:
             head.append(f"| {r['robot']} | {setting} | diverged: {r['diverged']} |"
-                        + " |" * (2 + len(STEP_FACTORS)))
+                        + " |" * (3 + len(STEP_FACTORS)))
             continue
         med, worst = r["median"], r["worst"]
         rtf = "".join(f"| {'diverged' if not np.isfinite(x) else f'{x:.0f}×'} "
                       for x in r["rtf"])  # type: ignore[attr-defined]
         cells = [f"{fixed(med[k], n)} / {fixed(worst[k], n)}"  # type: ignore[index]
-                 for k, n in ((0, 2), (1, 3), (2, 3))]
+                 for k, n in ((0, 2), (1, 3), (2, 3), (3, 1))]
         head.append(f"| {r['robot']} | {setting} | " + " | ".join(cells) + f" {rtf}|")
     return "\n".join(head)
 

@@ -168,9 +168,25 @@ def _sensed(spec: RobotSpec, params: RobotParams | None) -> tuple[mujoco.MjModel
     return _SENSED[key]
 
 
+def _free_quaternion(model: mujoco.MjModel) -> int | None:
+    """Index in the ``mjSTATE_FULLPHYSICS`` state of the first free joint's quaternion."""
+    free = np.flatnonzero(model.jnt_type == mujoco.mjtJoint.mjJNT_FREE)
+    return None if free.size == 0 else 1 + int(model.jnt_qposadr[free[0]]) + 3
+
+
+def _tilt_deg(quaternions: np.ndarray) -> np.ndarray:
+    """Angle between the body's z axis and the world's, deg: ``acos(1 − 2(x² + y²))``."""
+    z = 1.0 - 2.0 * (quaternions[:, 1] ** 2 + quaternions[:, 2] ** 2)
+    return np.degrees(np.arccos(np.clip(z, -1.0, 1.0)))
+
+
 def run(spec: RobotSpec, s: Scenario, params: RobotParams | None = None,
-        setup: Callable[[mujoco.MjModel], None] | None = None) -> FloorReading:
-    """One member's run: the floor reading of every step after the settle.
+        setup: Callable[[mujoco.MjModel], None] | None = None
+        ) -> tuple[FloorReading, float]:
+    """One member's run: its floor reading and the chassis' largest tilt.
+
+    The floor reading of every step after the settle, and the largest tilt of the
+    chassis (its free joint's z axis against the vertical), deg.
 
     ``setup(model)`` may change a copy of the model before the settle (a timestep).
 
@@ -201,6 +217,8 @@ def run(spec: RobotSpec, s: Scenario, params: RobotParams | None = None,
     spec_state = mujoco.mjtState.mjSTATE_FULLPHYSICS
     state = np.empty(mujoco.mj_stateSize(model, spec_state))
     sensed = np.empty((len(inputs) * per, model.nsensordata))
+    quat = _free_quaternion(model)
+    tilt = 0.0
     for k, u in enumerate(inputs):
         ctrl = adapter.controls(u, np.asarray(adapter.sim_state(model, data), float))
         mujoco.mj_getState(model, data, state, spec_state)
@@ -210,16 +228,18 @@ def run(spec: RobotSpec, s: Scenario, params: RobotParams | None = None,
         if not np.all(np.isfinite(states)):
             raise SimulationDivergedError(f"{s.key}: non-finite state in control period {k}")
         sensed[k * per:(k + 1) * per] = sensordata[0]
+        if quat is not None:
+            tilt = max(tilt, float(_tilt_deg(states[0, :, quat:quat + 4]).max()))
         mujoco.mj_setState(model, data, states[0, -1], spec_state)
         mujoco.mj_forward(model, data)
         check_healthy(model, data)
-    return sensor_reading(wheels.wheels, sensor_columns(model, wheels.wheels), sensed)
+    return sensor_reading(wheels.wheels, sensor_columns(model, wheels.wheels), sensed), tilt
 
 
 def measure(spec: RobotSpec, s: Scenario, params: RobotParams | None = None
             ) -> MeasurementResult:
     """The judged metrics of one member (see the module docstring)."""
-    reading = run(spec, s, params)
+    reading, tilt = run(spec, s, params)
     dt = s.duration / len(reading.depth)
     first = max(1, round(STEP_WINDOW / dt))
     after_step = 100.0 * float(np.mean(reading.off_floor[:first]))
@@ -232,5 +252,7 @@ def measure(spec: RobotSpec, s: Scenario, params: RobotParams | None = None
          Metric(f"wheel samples off the floor, {s.duration:g} s of random steps", whole,
                 "%", RUN_TARGET),
          Metric("deepest wheel penetration into the floor", 1e3 * reading.max_depth, "mm",
-                DEPTH_TARGET)],
+                DEPTH_TARGET),
+         Metric("largest tilt of the chassis", tilt, "deg",
+                note="reported: a robot that tips over lifts its wheels for real")],
         [Series("wheels off the floor", t, off, "s", "%")])
