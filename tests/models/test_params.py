@@ -3,24 +3,17 @@ from dataclasses import MISSING, fields
 
 import pytest
 
-from wmr_mujoco.models.params import (
-    BicycleParams,
-    DiscParams,
-    DriveParams,
-    FreeDiscParams,
-    OmniParams,
-    SimParams,
-    TricycleParams,
-    WheelParams,
-)
-from wmr_mujoco.models.params_mecanum import MecanumParams
-from wmr_mujoco.models.params_wheeled import (
-    BallCasterParams,
-    DiffDriveParams,
-    DoubleSteerParams,
-    SingleSteerParams,
-)
-from wmr_mujoco.models.params_whipple import WhippleParams, WhippleSimParams
+from wmr_mujoco.models.params import DriveParams, SimParams, WheelParams
+from wmr_mujoco.models.params.wheeled import BallCasterParams
+from wmr_mujoco.robots.bicycle.params import BicycleParams
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
+from wmr_mujoco.robots.disc.params import DiscParams, FreeDiscParams
+from wmr_mujoco.robots.double_steer.params import DoubleSteerParams
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
+from wmr_mujoco.robots.omni3.params import OmniParams
+from wmr_mujoco.robots.single_steer.params import SingleSteerParams
+from wmr_mujoco.robots.tricycle.params import TricycleParams
+from wmr_mujoco.robots.whipple.params import WhippleParams, WhippleSimParams
 
 
 def test_wheel_inertia_is_thin_disc():

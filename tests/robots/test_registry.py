@@ -11,9 +11,10 @@ import json
 import numpy as np
 import pytest
 
-from wmr_mujoco.models.builders import disc as disc_builder
-from wmr_mujoco.models.params import DiscParams, WheelParams, params_or_default
+from wmr_mujoco.models.params import WheelParams, params_or_default
 from wmr_mujoco.robots import ROBOTS, RobotSpec, disc, get_spec, register, registered
+from wmr_mujoco.robots.disc import builder as disc_builder
+from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.validation.metrics import Metric, Series
 from wmr_mujoco.validation.runner import jobs, run_all
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind

@@ -6,7 +6,7 @@ import mujoco
 import pytest
 
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.params_wheeled import DiffDriveParams
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 
 CASTER_ROBOTS = ("diffdrive", "single_steer", "double_steer")
 

@@ -6,8 +6,8 @@ import pytest
 
 from wmr_mujoco import ROBOTS, load
 from wmr_mujoco.models.builders.common import to_xml
-from wmr_mujoco.models.builders.disc import build
-from wmr_mujoco.models.params import DiscParams
+from wmr_mujoco.robots.disc.builder import build
+from wmr_mujoco.robots.disc.params import DiscParams
 
 WHEELS = {
     "disc": {"wheel": lambda p: p.wheel},
