@@ -158,3 +158,23 @@ def rk4_path(f: Callable[[np.ndarray], np.ndarray], x0: np.ndarray, dt: float,
 def rk4() -> Callable[..., np.ndarray]:
     """:func:`rk4_path`, for the kinematics tests."""
     return rk4_path
+
+
+# --- Parameter bounds at their edges (tests/models/test_params.py, tests/robots/*/) ---------
+
+def assert_bound_edge(cls: type, base: dict, field: str, ok: float, bad: float,
+                      valid: str) -> None:
+    """``cls(field=ok)`` is valid, ``cls(field=bad)`` a ValueError giving the range ``valid``."""
+    cls(**base, **{field: ok})
+    with pytest.raises(ValueError) as err:
+        cls(**base, **{field: bad})
+    assert str(err.value) == (f"{cls.__name__}.{field} = {bad!r} is not physical; "
+                              f"valid range is {valid}")
+
+
+def assert_count_edge(cls: type, field: str, ok: int, bad: int, valid: str) -> None:
+    """An integer field: ``ok`` valid, ``bad`` a ValueError giving the integer range."""
+    cls(**{field: ok})
+    with pytest.raises(ValueError) as err:
+        cls(**{field: bad})
+    assert str(err.value) == f"{cls.__name__}.{field} = {bad}; valid range is integers {valid}"

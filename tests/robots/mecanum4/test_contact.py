@@ -84,7 +84,7 @@ def test_ideal_rows_are_the_secant_law():
 
 def test_ideal_sideways_mean_is_the_mean_cosine():
     # Sideways, every wheel at the same |φ|: the rows agree and v = v_cmd cos φ, so the
-    # mean is sin φ_m / φ_m (analytic/mecanum_roller.mean_lateral_factor). The midpoint
+    # mean is sin φ_m / φ_m (robots/mecanum4/roller.mean_lateral_factor). The midpoint
     # rule over 128 samples is exact to ~φ_m²/(24·128²) ≈ 1e-7.
     pos = np.array([[0.15, 0.15], [0.15, -0.15], [-0.15, 0.15], [-0.15, -0.15]])
     signs = np.array([-1.0, 1.0, 1.0, -1.0])

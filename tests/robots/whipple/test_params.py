@@ -8,6 +8,8 @@ import pytest
 
 from wmr_mujoco.robots.whipple.params import WhippleParams, WhippleSimParams
 
+from conftest import assert_bound_edge, assert_count_edge
+
 
 def test_defaults_are_table_1():
     p = WhippleParams()
@@ -45,3 +47,38 @@ def test_bad_values_raise_naming_field_and_range(field, value, words):
 def test_bad_sim_settings_raise(field, value):
     with pytest.raises(ValueError, match=field):
         WhippleSimParams(**{field: value})
+
+
+#: Each bound at its edge: (class, other fields, field, a value on the edge or just
+#: inside it that is valid, one just outside that is not, the range the message must give).
+#: Values from the docstring's stated bounds.
+EDGES = [
+    (WhippleParams, {}, "gravity", 25.0, 25.01, "(0, 25]"),  # Jupiter
+    (WhippleParams, {}, "gravity", 1e-6, 0.0, "(0, 25]"),
+    (WhippleParams, {}, "trail", -1.0, -1.001, "[-1, 1]"),
+    (WhippleParams, {}, "trail", 1.0, 1.001, "[-1, 1]"),
+    (WhippleParams, {}, "head_angle", 1.5707, math.pi / 2, "(-1.5708, 1.5708)"),
+    (WhippleParams, {}, "head_angle", -1.5707, -math.pi / 2, "(-1.5708, 1.5708)"),
+    (WhippleParams, {"wheelbase": 6.0}, "rear_radius", 2.5, 2.51, "(0, 2.5]"),
+    (WhippleParams, {"wheelbase": 6.0}, "front_radius", 2.5, 2.51, "(0, 2.5]"),
+    (WhippleParams, {}, "rear_mass", 1e4, 1.001e4, "(0, 10000]"),
+    (WhippleParams, {}, "front_mass", 1e4, 1.001e4, "(0, 10000]"),
+    (WhippleSimParams, {}, "timestep", 0.01, 0.0101, "(0, 0.01]"),
+    (WhippleSimParams, {}, "contact_dampratio", 10.0, 10.01, "(0, 10]"),
+    (WhippleSimParams, {}, "solimp_dmax", 0.9999, 1.0, "(0.5, 0.9999]"),
+    (WhippleSimParams, {}, "solimp_dmax", 0.5001, 0.5, "(0.5, 0.9999]"),
+    (WhippleSimParams, {}, "wheel_half_width", 0.05, 0.0501, "(0, 0.05]"),
+]
+
+
+@pytest.mark.parametrize("cls, base, field, ok, bad, valid", EDGES,
+                         ids=[f"{e[0].__name__}.{e[2]}={e[4]:g}" for e in EDGES])
+def test_each_bound_holds_at_its_edge(cls, base, field, ok, bad, valid):
+    assert_bound_edge(cls, base, field, ok, bad, valid)
+
+
+@pytest.mark.parametrize("cls, field, ok, bad, valid", [
+    (WhippleSimParams, "noslip_iterations", 100, 101, "[0, 100]"),
+])
+def test_each_count_holds_at_its_edge(cls, field, ok, bad, valid):
+    assert_count_edge(cls, field, ok, bad, valid)
