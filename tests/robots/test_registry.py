@@ -42,6 +42,16 @@ def test_every_target_says_requirement_or_derived_bound():
             assert len(target.basis) > 10, key
 
 
+def test_each_robot_owns_its_parameters_and_builder():
+    # A robot is a folder: its parameter dataclass and its builder live under
+    # wmr_mujoco.robots (its own folder or its family's), never in a generic layer.
+    for name, spec in ROBOTS.items():
+        for part in (spec.params_type, spec.build):
+            if part is not None:
+                assert part.__module__.startswith("wmr_mujoco.robots."), (name, part)
+        assert type(get_spec(name)).__module__ == RobotSpec.__module__
+
+
 @dataclasses.dataclass(frozen=True)
 class WideDiscParams(DiscParams):
     """The disc's parameters with a wider, larger wheel by default."""
