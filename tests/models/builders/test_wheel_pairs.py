@@ -11,14 +11,14 @@ import pytest
 from wmr_mujoco import load
 from wmr_mujoco.lookup import build_scene
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.builders.diffdrive import build
 from wmr_mujoco.models.builders.wheel_pairs import (
     WHEEL_PAIR_STEPS,
     wheel_collider_names,
     wheel_floor_pairs,
 )
 from wmr_mujoco.models.params import SimParams
-from wmr_mujoco.models.params_wheeled import DiffDriveParams
+from wmr_mujoco.robots.diffdrive.builder import build
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 from wmr_mujoco.sim.floor_contact import WheelMap
 
 
