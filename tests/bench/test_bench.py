@@ -93,3 +93,17 @@ def test_the_peer_comparison_comes_from_the_registry(tmp_path, monkeypatch):
     assert calls == [(scene, True)]
     monkeypatch.setattr(bench, "ROBOTS", {"disc": ROBOTS["disc"]})
     assert bench.peer_side_by_side(True, scene) is None
+
+
+def test_goals_section_judges_each_default_and_the_peer_ratio():
+    from wmr_mujoco.bench.bench import _goals_section
+
+    speed = {"fast": {"timestep": 0.002, "loop_rtf": 150.0},
+             "slow": {"timestep": 0.001, "loop_rtf": 20.0}}
+    peer = [{"label": "omni3 (default)", "real_time_factor": 30.0},
+            {"label": "peer", "real_time_factor": 10.0}]
+    text = _goals_section(speed, peer)
+    assert "| fast | 2 ms | 150× | yes |" in text
+    assert "| slow | 1 ms | 20× | no |" in text
+    assert "3.00× the peer's speed" in text and "not met" in text  # 3 < 5
+    assert "peer" not in _goals_section(speed, None)

@@ -29,6 +29,11 @@ def test_rows_and_table():
     assert "| bicycle |" in text and "Peer left out" in text
 
 
+def test_an_unchanged_robot_has_no_previous_row():
+    rows = ds.rows(["disc"], TINY)
+    assert rows[0]["previous"] is None and rows[0]["rtf_previous"] is None
+
+
 def test_unknown_robot_fails_before_any_run():
     with pytest.raises(ValueError, match="nosuch"):
         ds.main(["--quick", "nosuch"])

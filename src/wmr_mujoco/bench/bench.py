@@ -188,6 +188,30 @@ def _peer_section(rows: list[dict[str, float]] | None, peer: PeerModel | None = 
                       for p in rows])
 
 
+def _goals_section(speed: dict[str, dict[str, float]],
+                   peer_rows: list[dict[str, float]] | None) -> str:
+    """Each robot's real-time factor at its defaults against issue 24 § 4's goals.
+
+    ``≥ RTF_GOAL``× real time (the stepping table's loop column), and for the robots
+    compared with the peer, ``≥ PEER_GOAL``× the peer's real-time factor on the same
+    trials in the same run (the peer table: the robot's default row, then the peer's).
+    """
+    from wmr_mujoco.bench.default_speed import PEER_GOAL, RTF_GOAL
+
+    rows = [[r, f"{v['timestep'] * 1e3:g} ms", f"{v['loop_rtf']:.0f}×",
+             "yes" if v["loop_rtf"] >= RTF_GOAL else "no"] for r, v in speed.items()]
+    text = (f"Goal: ≥ {RTF_GOAL:g}× real time at the defaults, one thread.\n\n"
+            + _md_table(["robot", "timestep", "real-time ×", "goal met"], rows))
+    if peer_rows and len(peer_rows) >= 2:
+        ours, theirs = peer_rows[0], peer_rows[-1]
+        ratio = ours["real_time_factor"] / theirs["real_time_factor"]
+        text += (f"\n\n{ours['label']} runs {ratio:.2f}× the peer's speed on the same "
+                 f"trials ({ours['real_time_factor']:.1f}× and "
+                 f"{theirs['real_time_factor']:.1f}× real time, same run); goal "
+                 f"≥ {PEER_GOAL:g}×: {'met' if ratio >= PEER_GOAL else 'not met'}.")
+    return text
+
+
 def _md_table(header: list[str], rows: list[list[str]]) -> str:
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(r) + " |" for r in rows]
@@ -265,7 +289,10 @@ def main(args: argparse.Namespace) -> int:
         "independent work, as noisy as the speedup.",
         "## Accuracy against cost", acc,
         f"## {peer_robots} and the peer model ({'a few' if quick else 'all'} open-loop "
-        "trials, same run)", peer_md, "## Rendering, 640×480",
+        "trials, same run)", peer_md,
+        "## Real-time factor at the defaults (issue 24 § 4)",
+        _goals_section(speed, results["peer"]),  # type: ignore[arg-type]
+        "## Rendering, 640×480",
         f"{ren['no_shadows']:.1f} frames/s as `wmr render` draws (no shadows or "
         f"reflections), {ren['shadows']:.1f} with shadows and reflections "
         f"({ren['backend']} backend; {ren['robot']}, the scene with the most geoms).",

@@ -159,6 +159,8 @@ def rows(robots: Sequence[str], how: Rounds) -> list[dict[str, object]]:
     for name in robots:
         spec = get_spec(name)
         before = previous(spec)
+        if before == spec.params_type():
+            before = None  # unchanged: nothing to compare
         settings = [None] if before is None else [None, before]
         rtf = real_time_factors(spec, settings, how)
         out.append({"robot": name, "default": describe(spec.params_type()),
