@@ -7,13 +7,18 @@ import numpy as np
 import pytest
 
 from wmr_mujoco import load
+from wmr_mujoco.models.builders.wheel_pairs import WHEEL_PAIR_STEPS
 from wmr_mujoco.robots.tricycle.params import TricycleParams
 from wmr_mujoco.sim.stepping import rollout
 
-#: Deepest wheel penetration in the turns, m. The wheels touch the floor through the
-#: remedy's pairs (docs/floor-contact.md), which rest (1 − d) g t_c² deep: 0.2 mm at the
-#: default t_c = 3 Δt = 4.5 ms; the turn's load transfer adds a fraction of it.
-MAX_PENETRATION = 0.3e-3
+_SIM = TricycleParams().sim
+#: The remedy's pairs (docs/floor-contact.md) rest (1 − d) g ζ² t_c² deep, with
+#: t_c = max(contact_timeconst, WHEEL_PAIR_STEPS Δt).
+REST_DEPTH = (1 - _SIM.floor_impedance) * 9.81 * (
+    _SIM.floor_dampratio * max(_SIM.contact_timeconst, WHEEL_PAIR_STEPS * _SIM.timestep)) ** 2
+#: Deepest wheel penetration in the turns, m: the rest depth, and as much again for the
+#: turn's load transfer onto the outer wheels.
+MAX_PENETRATION = 2.0 * REST_DEPTH
 #: Tolerance on the free-wheel rate, relative. The ICR prediction assumes rigid point
 #: contacts at radius R. MuJoCo's soft contacts roll at R − δ/2 with a penetration
 #: δ ≤ MAX_PENETRATION (checked below), i.e. a relative radius error ≤ δ/(2R) per

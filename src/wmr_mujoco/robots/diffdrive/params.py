@@ -55,7 +55,7 @@ class DiffDriveParams:
     chassis_com_x: float = -0.08
     chassis_size: tuple[float, float, float] = (0.34, 0.28, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = SimParams(timestep=0.00125, floor_impedance=0.001)
+    sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
 
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS

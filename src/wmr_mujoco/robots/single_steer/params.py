@@ -57,7 +57,7 @@ class SingleSteerParams:
     chassis_com_x: float = 0.16
     chassis_size: tuple[float, float, float] = (0.4, 0.3, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = SimParams(timestep=0.0015, floor_impedance=0.001)
+    sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)

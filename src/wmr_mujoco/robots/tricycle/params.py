@@ -50,7 +50,7 @@ class TricycleParams:
     drive: DriveParams = DriveParams(wheel_kv=10.0, wheel_armature=0.01,
                                      wheel_torque_limit=10.0,
                                      steer_kp=100.0, steer_kv=0.5)
-    sim: SimParams = SimParams(timestep=0.0015, floor_impedance=0.001)
+    sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
 
     REAR_DRIVES = ("left", "differential")
 
