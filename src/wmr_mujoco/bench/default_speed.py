@@ -149,7 +149,9 @@ def describe(params: Any) -> str:
     """``<timestep> ms, <floor contact>`` of a robot's parameters."""
     sim = params.sim
     d = getattr(params, "floor_impedance", sim.floor_impedance)
-    contact = f"floor pairs d = {d:g}" if d else "collision class"
+    zeta = sim.floor_dampratio
+    contact = (f"floor pairs d = {d:g}" + (f", ζ = {zeta:g}" if zeta != 1.0 else "")
+               if d else "collision class")
     return f"{1e3 * sim.timestep:g} ms, {contact}"
 
 
