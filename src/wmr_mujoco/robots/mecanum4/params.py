@@ -64,7 +64,7 @@ class MecanumParams:
         sim: simulation settings.
         floor_impedance: impedance ``d`` of the roller-floor pairs: 0 (the collision
             class's contact) or [1e-4, 0.01], the disc's remedy for a sliding contact that
-            lifts its wheel (``docs/floor-contact.md``).
+            lifts its wheel; the default (``docs/floor-contact.md`` § 4).
 
     Bounds, physical: ``wheel_radius`` at most
     :data:`~wmr_mujoco.models.params.MAX_WHEEL_RADIUS` = 2.5 m and ``hub_mass`` at most

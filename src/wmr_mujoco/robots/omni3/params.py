@@ -50,10 +50,9 @@ class OmniParams:
         drive: actuator settings (no steering).
         sim: simulation settings.
         floor_impedance: 0 (contact bits, the collision class's contact) or, in
-            [1e-4, 0.01], the impedance ``d`` of explicit roller-floor pairs with the
-            disc's remedy for a sliding contact that lifts its wheel
-            (``docs/floor-contact.md``; an option, not the default: the hybrid model's
-            hand-over terms are derived for the collision class's impedance).
+            [1e-4, 0.01], the impedance ``d`` of explicit roller-floor pairs (and no
+            contact bits) with the disc's remedy for a sliding contact that lifts its
+            wheel; the default (``docs/floor-contact.md`` § 4).
     """
 
     wheel_radius: float = 0.05
