@@ -12,15 +12,17 @@ from wmr_mujoco.models.builders import omni3 as full
 from wmr_mujoco.models.params import OmniParams
 
 #: Friction coefficient along the wheel's axle, the direction the rollers let the wheel
-#: roll sideways: a rolling-resistance coefficient of a roller (about 0.01). Smaller values
-#: (1e-3, 3e-3) made MuJoCo's Newton line search warn "objective is not convex" on the
-#: lateral translations (the elliptic cone this flat is ill-conditioned); 0.01 did not.
-ROLLER_FRICTION = 0.01
-#: Half-length of the capsule, as a fraction of the wheel radius: a near point, so both
-#: its end contacts lie in the wheel's mid-plane. Contacts at omni3's rows (±e) scrub
-#: against each other when the platform turns (the ladder's design rows,
-#: :mod:`wmr_mujoco.bench.ladder`, measure both).
-CAPSULE_HALF_LENGTH = 0.002
+#: roll sideways. Against omni3's free rollers it is pure drag (``μ_lat N`` per wheel
+#: sliding sideways), so it is small; MuJoCo clamps it at 1e-5, and below about 0.01 its
+#: Newton solver logs, now and then, that a line search "objective is not convex" (the
+#: flat elliptic cone): the step completes. The ladder (:mod:`wmr_mujoco.bench.ladder`)
+#: counts those messages and measures the drag of 0.01 beside this value.
+ROLLER_FRICTION = 1e-3
+#: Half-length of the capsule as a fraction of omni3's row offset e: its two end contacts
+#: lie near the wheel's mid-plane. At ±e they scrub against each other whenever the
+#: platform turns; nearly coincident, they make the solver's messages above more frequent
+#: (the ladder's design rows measure both).
+CAPSULE_ROW_FRACTION = 0.1
 WHEEL_RGBA = (0.55, 0.55, 0.58, 0.6)
 
 
@@ -52,7 +54,7 @@ def wheel_inertia(p: OmniParams) -> tuple[float, float, float]:
     return mass, axial, diam
 
 
-def build(params: OmniParams) -> mjcf.RootElement:
+def build(params: OmniParams, row_fraction: float = CAPSULE_ROW_FRACTION) -> mjcf.RootElement:
     """omni3 with each wheel one body on its hinge, carrying one capsule collider.
 
     Kinematic tree::
@@ -64,6 +66,10 @@ def build(params: OmniParams) -> mjcf.RootElement:
     omni3's (:func:`wmr_mujoco.models.builders.omni3.build`); each wheel's hub and
     rollers are one body (:func:`wheel_inertia`) whose collider is a capsule of radius r
     along the axle, touching the floor only through :func:`floor_pairs`.
+
+    Args:
+        params: omni3's parameters.
+        row_fraction: the capsule's half-length as a fraction of the row offset e.
     """
     p = params
     r, L = p.wheel_radius, p.wheel_distance
@@ -91,7 +97,7 @@ def build(params: OmniParams) -> mjcf.RootElement:
                           armature=p.drive.wheel_armature)
         wheel.add("inertial", pos=(0, 0, 0), mass=mass, diaginertia=(diam, axial, diam))
         wheel.add("geom", name=f"{name}_collision", type="capsule",
-                  size=(r, CAPSULE_HALF_LENGTH * r), zaxis=(0, 1, 0), contype=0,
+                  size=(r, row_fraction * p.row_offset), zaxis=(0, 1, 0), contype=0,
                   conaffinity=0, group=3, mass=0)
         wheel.add("geom", dclass="visual", type="cylinder", size=(r, width), zaxis=(0, 1, 0),
                   rgba=WHEEL_RGBA)
@@ -103,8 +109,9 @@ def build(params: OmniParams) -> mjcf.RootElement:
     return root
 
 
-def floor_pairs(scene: mjcf.RootElement, params: OmniParams) -> None:
-    """One floor pair per wheel capsule, friction ``(ROLLER_FRICTION, μ)`` on its tangents.
+def floor_pairs(scene: mjcf.RootElement, params: OmniParams,
+                roller_friction: float = ROLLER_FRICTION) -> None:
+    """One floor pair per wheel capsule, friction ``(roller_friction, μ)`` on its tangents.
 
     MuJoCo's plane-capsule collider sets the contact frame's first tangent to the capsule
     axis (the axle, projected on the floor) and the second to ``normal × axle``, the drive
@@ -113,6 +120,6 @@ def floor_pairs(scene: mjcf.RootElement, params: OmniParams) -> None:
     (:func:`~wmr_mujoco.models.builders.common.contact_pair_kwargs`).
     """
     kwargs = common.contact_pair_kwargs(params.sim)
-    kwargs["friction"] = (ROLLER_FRICTION, params.sim.friction, *kwargs["friction"][2:])
+    kwargs["friction"] = (roller_friction, params.sim.friction, *kwargs["friction"][2:])
     for i in range(3):
         scene.contact.add("pair", geom1="floor", geom2=f"wheel{i + 1}_collision", **kwargs)
