@@ -133,8 +133,8 @@ def test_a_wheel_that_does_not_slide_sideways_drives_at_omega_r(twist, wheels):
     steady force ``f`` is ``v = f R / b`` (reference acceleration ``−b v``, ``b = 2 /
     timeconst`` = 1000 /s, regulariser ``R`` below 0.05 kg⁻¹); the steady force on the
     drive direction is at most the other wheels' roller friction, ``μ_lat m g`` ≤ 0.25 N
-    (μ_lat ≤ 0.01): ``v`` ≈ 1e-5 m/s, under 0.1 % of the 0.3 m/s rim speed. Height: within 1 mm of r (the static penetration
-    of ``m g`` on the contacts is under 0.1 mm).
+    (μ_lat ≤ 0.01): ``v`` ≈ 1e-5 m/s, under 0.1 % of the 0.3 m/s rim speed. Height:
+    within 1 mm of r (the static penetration of ``m g`` on the contacts is under 0.1 mm).
     """
     model = load(NAME)
     data = _settled(model)

@@ -19,10 +19,11 @@ from wmr_mujoco.models.params import OmniParams
 #: counts those messages and measures the drag of 0.01 beside this value.
 ROLLER_FRICTION = 1e-3
 #: Half-length of the capsule as a fraction of omni3's row offset e: its two end contacts
-#: lie near the wheel's mid-plane. At ±e they scrub against each other whenever the
-#: platform turns; nearly coincident, they make the solver's messages above more frequent
-#: (the ladder's design rows measure both).
-CAPSULE_ROW_FRACTION = 0.1
+#: lie nearly in the wheel's mid-plane. Apart, they scrub against each other whenever the
+#: platform turns (a yaw drag omni3's single touching roller does not have); nearly
+#: coincident, they make the solver's messages above more frequent (the ladder's design
+#: rows measure both: 0.1 e and e).
+CAPSULE_ROW_FRACTION = 0.01
 WHEEL_RGBA = (0.55, 0.55, 0.58, 0.6)
 
 
