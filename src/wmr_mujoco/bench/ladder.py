@@ -6,9 +6,9 @@ and the reduced rung's design alternatives) and pastes the table into ``docs/lad
 
 * **cost**: degrees of freedom (``nv``), floor contacts per step (mean over the bench
   scenario), steps per second of C MuJoCo on one thread (``mujoco.rollout``, median of
-  :data:`REPEATS`), and robot-steps per second of ``simulate_batch``'s ``"rollout"``
-  backend at :data:`WORLDS` worlds on every core (and ``"warp"`` at
-  :data:`WARP_WORLDS` worlds where MuJoCo Warp is installed);
+  :data:`REPEATS`, the rungs timed round robin), and robot-steps per second of
+  ``simulate_batch``'s ``"rollout"`` backend at :data:`WORLDS` worlds on every core
+  (and ``"warp"`` at :data:`WARP_WORLDS` worlds where MuJoCo Warp is installed);
 * **kinematic errors**: the worst position error (% of path) and heading error (°) over
   omni3's kinematic scenarios, each rung judged by the validation runner against the
   ideal kinematics exactly as ``wmr validate`` judges omni3;
@@ -45,7 +45,7 @@ REFERENCE = "omni3"
 WORLDS = 64
 WARP_WORLDS = 8
 #: Timed repeats of the one-thread column (median).
-REPEATS = 3
+REPEATS = 5
 #: Steps of the bench scenario over which contacts are counted.
 CONTACT_STEPS = 2000
 #: The runner's rows read for the kinematic errors: (metric, unit).
@@ -144,30 +144,61 @@ class _Counter(logging.Handler):
         self.count += 1
 
 
+@dataclass(frozen=True)
+class BenchRun:
+    """A rung's bench scenario, settled and scheduled, ready to step from ``start``."""
+
+    model: mujoco.MjModel
+    start: mujoco.MjData
+    controls: np.ndarray
+
+    @classmethod
+    def of(cls, rung: Rung) -> BenchRun:
+        """Prepared as the validation runner prepares it."""
+        from wmr_mujoco.validation.runner import prepare
+
+        spec = rung.spec()
+        prep = prepare(spec, spec.scenario(spec.bench_scenario), rung.params())
+        return cls(prep.model, prep.data, prep.controls)
+
+    def seconds(self) -> float:
+        """Wall time of one ``mujoco.rollout`` of the whole run on one thread."""
+        from wmr_mujoco.sim.engine import Engine, simulate
+
+        data = mujoco.MjData(self.model)
+        mujoco.mj_copyData(data, self.model, self.start)
+        t0 = time.perf_counter()
+        simulate(self.model, data, self.controls, Engine.ROLLOUT)
+        return time.perf_counter() - t0
+
+    def contacts(self) -> float:
+        """Mean contacts per step over the first :data:`CONTACT_STEPS` steps."""
+        data = mujoco.MjData(self.model)
+        mujoco.mj_copyData(data, self.model, self.start)
+        counts = []
+        for ctrl in self.controls[:CONTACT_STEPS]:
+            data.ctrl[:] = ctrl
+            mujoco.mj_step(self.model, data)
+            counts.append(data.ncon)
+        return float(np.mean(counts))
+
+
+def one_thread_speeds(runs: Sequence[BenchRun], repeats: int = REPEATS) -> list[float]:
+    """Steps per second of each run, median of ``repeats`` timed round robin.
+
+    Round robin, a load on the machine that comes and goes falls on every run alike.
+    """
+    times: list[list[float]] = [[] for _ in runs]
+    for _ in range(repeats):
+        for i, run in enumerate(runs):
+            times[i].append(run.seconds())
+    return [len(run.controls) / float(np.median(t)) for run, t in zip(runs, times, strict=True)]
+
+
 def cost(rung: Rung) -> tuple[int, float, float]:
     """``(nv, mean contacts per step, one-thread steps/s)`` on the robot's bench scenario."""
-    from wmr_mujoco.sim.engine import Engine, simulate
-    from wmr_mujoco.validation.runner import prepare
-
-    spec = rung.spec()
-    scenario = spec.scenario(spec.bench_scenario)
-    prep = prepare(spec, scenario, rung.params())
-    model = prep.model
-    start = mujoco.MjData(model)
-    mujoco.mj_copyData(start, model, prep.data)
-    times = []
-    for _ in range(REPEATS):
-        mujoco.mj_copyData(prep.data, model, start)
-        t0 = time.perf_counter()
-        simulate(model, prep.data, prep.controls, Engine.ROLLOUT)
-        times.append(time.perf_counter() - t0)
-    mujoco.mj_copyData(prep.data, model, start)
-    counts = []
-    for ctrl in prep.controls[:CONTACT_STEPS]:
-        prep.data.ctrl[:] = ctrl
-        mujoco.mj_step(model, prep.data)
-        counts.append(prep.data.ncon)
-    return model.nv, float(np.mean(counts)), len(prep.controls) / float(np.median(times))
+    run = BenchRun.of(rung)
+    return run.model.nv, run.contacts(), one_thread_speeds([run])[0]
 
 
 def kinematic_errors(rung: Rung, quick: bool = False) -> tuple[float, float]:
@@ -285,27 +316,28 @@ def measure(rungs: Sequence[Rung], quick: bool = False) -> list[RungFigures]:
         specs = tuple(next(s for s in specs if s.name.startswith(p)) for p in GROUPS.values())
     reference = dynamic_poses(Rung(REFERENCE, REFERENCE), specs)
     distance = Rung(REFERENCE, REFERENCE).spec().params_type().wheel_distance
+    runs = [BenchRun.of(rung) for rung in rungs]
+    speeds = one_thread_speeds(runs)
     figures = []
     logger = logging.getLogger(MUJOCO_LOGGER)
-    for rung in rungs:
+    for rung, run, speed in zip(rungs, runs, speeds, strict=True):
         counter = _Counter()
         logger.addHandler(counter)
         try:
-            figures.append(_measure_rung(rung, reference, specs, distance, quick))
+            fig = RungFigures(rung.label, run.model.nv, run.contacts(), speed)
+            figures.append(_measure_rung(rung, fig, reference, specs, distance, quick))
         finally:
             logger.removeHandler(counter)
-        figures[-1].messages = counter.count
+        fig.messages = counter.count
     return figures
 
 
-def _measure_rung(rung: Rung, reference: dict[str, np.ndarray], specs: Sequence,
-                  distance: float, quick: bool) -> RungFigures:
-    """One rung's figures (:func:`measure`)."""
+def _measure_rung(rung: Rung, fig: RungFigures, reference: dict[str, np.ndarray],
+                  specs: Sequence, distance: float, quick: bool) -> RungFigures:
+    """The rest of one rung's figures (:func:`measure`): batched, kinematic, dynamic."""
     from wmr_mujoco.batch.simulate import installed_backends
     from wmr_mujoco.bench.batch_throughput import measure as throughput
 
-    dof, contacts, speed = cost(rung)
-    fig = RungFigures(rung.label, dof, contacts, speed)
     if rung.registered:
         fig.batched = throughput(rung.robot, "rollout", WORLDS, REPEATS).throughput
         if "warp" in installed_backends():
