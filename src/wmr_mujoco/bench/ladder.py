@@ -105,8 +105,8 @@ def _rungs() -> tuple[Rung, ...]:
              build=functools.partial(builder.build, row_fraction=1.0)),
         Rung("omni3_reduced, capsule ends 0.1 e from the mid-plane", "omni3_reduced",
              build=functools.partial(builder.build, row_fraction=0.1)),
-        Rung("omni3_reduced, roller friction 0.01", "omni3_reduced",
-             scene_extras=functools.partial(builder.floor_pairs, roller_friction=0.01)),
+        Rung("omni3_reduced, roller friction 0.001", "omni3_reduced",
+             scene_extras=functools.partial(builder.floor_pairs, roller_friction=1e-3)),
     )
 
 
