@@ -96,7 +96,7 @@ class Rung:
 
 
 def _rungs() -> tuple[Rung, ...]:
-    from wmr_mujoco.robots.omni3_reduced import builder
+    from wmr_mujoco.robots.omni3_reduced import builder, sphere
 
     return (
         Rung(REFERENCE, REFERENCE),
@@ -105,6 +105,8 @@ def _rungs() -> tuple[Rung, ...]:
              build=functools.partial(builder.build, row_fraction=1.0)),
         Rung("omni3_reduced, capsule ends 0.1 e from the mid-plane", "omni3_reduced",
              build=functools.partial(builder.build, row_fraction=0.1)),
+        Rung("spheres on ball joints, driven through sites", "omni3_reduced",
+             build=sphere.build, scene_extras=sphere.no_pairs),
         Rung("omni3_reduced, roller friction 0.001", "omni3_reduced",
              scene_extras=functools.partial(builder.floor_pairs, roller_friction=1e-3)),
     )
