@@ -45,7 +45,10 @@ def test_the_reduced_rung_measured_on_one_run_per_group():
     assert 0 <= path < 1.0 and heading >= 0
 
 
-def test_table_has_a_row_per_rung():
+def test_table_has_a_row_per_rung(monkeypatch):
+    from wmr_mujoco.batch import simulate
+
+    monkeypatch.setattr(simulate, "installed_backends", lambda: ["rollout"])
     figs = [ladder.RungFigures("omni3", 45, 3.0, 13_400.0, batched=18_500.0),
             ladder.RungFigures("cheap", 9, 6.0, 26_000.0, kin_path_pct=0.1,
                                kin_heading_deg=0.3,
@@ -53,6 +56,10 @@ def test_table_has_a_row_per_rung():
     text = ladder.table(figs)
     assert "| omni3 | 45 | 3.0 | 13.4 | 18.5 | 0 | n/a / n/a | reference |" in text
     assert "| cheap | 9 | 6.0 | 26 | - | 4 | 0.10 / 0.30 | 1.00 / 2.00 |" in text
+    monkeypatch.setattr(simulate, "installed_backends", lambda: ["rollout", "warp"])
+    text = ladder.table(figs)
+    assert "| warp, 8 worlds (k robot-steps/s) |" in text
+    assert "| omni3 | 45 | 3.0 | 13.4 | 18.5 | - | 0 |" in text
 
 
 def test_docs_hold_the_markers():

@@ -239,9 +239,9 @@ def dynamic_poses(rung: Rung, specs: Sequence) -> dict[str, np.ndarray]:
     Raises:
         SimulationDivergedError: a run diverged.
     """
-    from wmr_mujoco.analytic import omni_kinematics as ok
     from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
     from wmr_mujoco.models.loading import load
+    from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
     from wmr_mujoco.sim.stepping import check_healthy
     from wmr_mujoco.validation.adapters import base_pose
 

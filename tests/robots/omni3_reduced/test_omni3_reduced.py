@@ -12,11 +12,11 @@ import numpy as np
 import pytest
 
 from wmr_mujoco import load
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots import ROBOTS, get_spec, omni3
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3_reduced import builder
 from wmr_mujoco.robots.omni3_reduced.params import OmniReducedParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.sim.inertia import inertia_tensor_about
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.scenarios import ScenarioKind

@@ -6,11 +6,11 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.loading import load
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.robots.omni3_reduced import sphere
 from wmr_mujoco.robots.omni3_reduced.params import OmniReducedParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.validation.adapters import body_twist
 
 

@@ -8,8 +8,8 @@ import numpy as np
 from dm_control import mjcf
 
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.builders import omni3 as full
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3 import builder as full
+from wmr_mujoco.robots.omni3.params import OmniParams
 
 #: Friction coefficient along the wheel's axle, the direction the rollers let the wheel
 #: roll sideways: a roller's rolling resistance. Against omni3's free rollers it is a
@@ -64,7 +64,7 @@ def build(params: OmniParams, row_fraction: float = CAPSULE_ROW_FRACTION) -> mjc
                  └─ wheel{1,2,3} [hinge about the axle] at α = 0°, 120°, 240°
 
     The platform, wheel poses, hinges (armature included), actuators and sensors are
-    omni3's (:func:`wmr_mujoco.models.builders.omni3.build`); each wheel's hub and
+    omni3's (:func:`wmr_mujoco.robots.omni3.builder.build`); each wheel's hub and
     rollers are one body (:func:`wheel_inertia`) whose collider is a capsule of radius r
     along the axle, touching the floor only through :func:`floor_pairs`.
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass, fields
 from typing import ClassVar
 
-from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.models.params.parts import STEERING_FIELDS
+from wmr_mujoco.robots.omni3.params import OmniParams
 
 
 @dataclass(frozen=True)

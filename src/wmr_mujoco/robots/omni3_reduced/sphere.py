@@ -20,7 +20,7 @@ import math
 from dm_control import mjcf
 
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3_reduced import builder
 
 SPHERE_RGBA = (0.55, 0.55, 0.58, 0.6)
