@@ -5,7 +5,7 @@ hinge and one smooth collider, no roller joints (9 degrees of freedom against om
 45). The rollers' freedom is the contact's: the capsule lies along the axle, MuJoCo's
 plane-capsule collider puts the contact frame's first tangent along the capsule's axis,
 and the explicit floor pair gives that tangent friction :data:`builder.ROLLER_FRICTION`
-(free roll along the roller axis) and the second tangent, the drive direction, the
+(the sideways roll the rollers allow) and the second tangent, the drive direction, the
 floor's μ. Same actuators (velocity servos ``wheel1..3``), wheel order, signs, kinematic
 adapter, command and kinematic scenarios as omni3 (imported, not copied); omni3's
 dynamic scenarios read its rollers and are omni3's alone (the ladder compares the rungs'
@@ -38,7 +38,8 @@ SCENARIOS = tuple(dataclasses.replace(s, robot=NAME) for s in omni3.SCENARIOS
 SPEC = RobotSpec(
     name=NAME,
     description="omni3 reduced: each omni wheel one driven hinge carrying one capsule whose "
-                "floor friction is near zero along the roller axis (no roller joints)",
+                "floor friction is low along the axle, where the rollers let it roll (no "
+                "roller joints)",
     params_type=OmniReducedParams, build=builder.build, folder=NAME,
     robot_file=f"{NAME}.xml",
     adapters={ScenarioKind.KINEMATIC: omni3.kinematic_adapter},
