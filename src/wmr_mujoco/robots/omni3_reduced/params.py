@@ -20,6 +20,8 @@ class OmniReducedParams(OmniParams):
 
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "roller_shape", "roller_armature",
                                          "roller_damping", "floor_impedance")
+    #: Its capsule pairs take the collision class's contact (``builder.floor_pairs``).
+    floor_impedance: float = 0.0
 
     @classmethod
     def from_full(cls, params: OmniParams) -> OmniReducedParams:
