@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+from wmr_mujoco.models.params import SimParams
 from wmr_mujoco.robots.mecanum4 import SPEC, kinematic_runs
 from wmr_mujoco.robots.mecanum4.collider import realised_twist
 from wmr_mujoco.robots.mecanum4.kinematics import MecanumKinematics, is_step
@@ -14,6 +15,9 @@ from wmr_mujoco.robots.roller_wheels import pitch_averaged as pa
 from wmr_mujoco.validation.runner import run_scenario
 
 P = MecanumParams()
+#: The collision class's contact in the roller pairs at the step it was designed for.
+STIFF = dataclasses.replace(P, floor_impedance=0.0, sim=SimParams(timestep=0.004,
+                                                                  contact_timeconst=0.008))
 K = pa.mean_secant(math.pi / P.rollers_per_wheel)
 
 
@@ -66,9 +70,12 @@ def test_steady_shortfall_is_the_pitch_averaged_one(name, pose, derived):
     # Physics: at steady speed (t ≥ 1 s, ramp over) the chassis falls short of the ideal
     # model by the derived fraction (k = ⟨sec φ⟩, robots/roller_wheels/pitch_averaged.py). Tolerance
     # ±25 %: the hand-over impacts and the four wheels' different roller phases are not
-    # in the averaged model.
+    # in the averaged model. Run on the collision class's stiff contact (STIFF): the
+    # default's soft floor pairs (docs/floor-contact.md) add a shortfall of their own
+    # (rolling radius lost to the rest depth, creep of the softer friction rows) that
+    # the averaged model of rigid rollers leaves out; the kinematic targets judge the sum.
     s = dataclasses.replace(run(name), duration=2.0)
-    tr = run_scenario(SPEC, s).trace.arrays()
+    tr = run_scenario(SPEC, s, params=STIFF).trace.arrays()
     i = np.searchsorted(tr["time"], 1.0)
     moved = _advance(tr["sim"], i, pose)
     ideal = _advance(tr["analytic"][:, 3:], i, pose)
