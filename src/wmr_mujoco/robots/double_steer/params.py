@@ -54,7 +54,7 @@ class DoubleSteerParams:
     chassis_com_y: float = 0.07
     chassis_size: tuple[float, float, float] = (0.5, 0.3, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = SimParams(timestep=0.0015, floor_impedance=0.001)
+    sim: SimParams = SimParams(timestep=0.00125, floor_impedance=0.001)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)

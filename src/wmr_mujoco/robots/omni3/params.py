@@ -70,8 +70,8 @@ class OmniParams:
     roller_damping: float = 0.0
     drive: DriveParams = DriveParams(wheel_kv=2.0, wheel_armature=0.004,
                                      wheel_torque_limit=1.0, wheel_rate_limit=60.0)
-    sim: SimParams = SimParams(timestep=0.0015, contact_timeconst=0.0045,
-                               floor_dampratio=0.7)
+    sim: SimParams = SimParams(timestep=0.00125, contact_timeconst=0.00375,
+                               floor_dampratio=0.8)
     floor_impedance: float = 0.001
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
