@@ -123,14 +123,16 @@ def _never_stepped(monkeypatch):
 
 
 def test_a_run_too_long_for_memory_is_refused_first_naming_the_cap(monkeypatch):
-    """``simulate("omni3", u, 1e9)``: 1e12 steps of 1 ms, far over any memory; refused
-    before anything is stepped, with the cap and how to raise it."""
+    """``simulate("omni3", u, 1e9)``: about 1e12 steps of omni3's step, far over any
+    memory; refused before anything is stepped, with the cap and how to raise it."""
+    dt = wmr.load("omni3").opt.timestep
     _never_stepped(monkeypatch)
     monkeypatch.delenv("WMR_MAX_MEMORY", raising=False)
+    steps = re.escape(f"{1e9 / dt:.3g}")
     for call in (wmr.simulate, wmr.predict, wmr.compare):
-        with pytest.raises(ValueError, match=r"duration = 1e\+09 s is 1e\+12 steps of "
-                           r"0.001 s: .* over the memory cap of 2 GiB .* max_memory=BYTES "
-                           r"or the environment variable WMR_MAX_MEMORY"):
+        with pytest.raises(ValueError, match=rf"duration = 1e\+09 s is {steps} steps of "
+                           rf"{re.escape(f'{dt:g}')} s: .* over the memory cap of 2 GiB .* "
+                           r"max_memory=BYTES or the environment variable WMR_MAX_MEMORY"):
             call("omni3", [0.2, 0, 0], 1e9)
 
 
@@ -149,9 +151,10 @@ def test_the_memory_cap_is_raised_or_lowered_by_argument_or_environment(monkeypa
 
 
 def test_a_duration_under_one_timestep_is_named(monkeypatch):
+    dt = re.escape(f"{wmr.load('omni3').opt.timestep:g}")
     _never_stepped(monkeypatch)
-    with pytest.raises(ValueError, match=r"duration = 1e-09 s is shorter than one timestep "
-                                         r"of omni3 \(0.001 s\); give at least 0.001 s"):
+    with pytest.raises(ValueError, match=rf"duration = 1e-09 s is shorter than one timestep "
+                                         rf"of omni3 \({dt} s\); give at least {dt} s"):
         wmr.compare("omni3", [0.2, 0, 0], 1e-9)
 
 
