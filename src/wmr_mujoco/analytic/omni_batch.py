@@ -347,7 +347,8 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                 lost = 0.0
                 if impacts:
                     before = nu[b].copy()
-                    nu[b], lost = model.planar_impact(nu[b], old_m, new_m, th[b], entering)
+                    nu[b], lost = model.planar_impact(nu[b], old_m, new_m, th[b], entering,
+                                                       thdd[b])
                     pending[b] += before - nu[b]
                 for j, i in enumerate(i for i in range(3) if new_m[i] != old_m[i]):
                     # One impact, its loss counted once (on the first switching wheel).

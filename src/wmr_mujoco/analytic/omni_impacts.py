@@ -22,6 +22,28 @@ if TYPE_CHECKING:
     from wmr_mujoco.analytic.roller_geometry import RollerGeometry
 
 
+def crossing_time(window: float, rate: float, accel: float) -> float:
+    """Time a wheel at rate ``θ̇`` and acceleration ``θ̈`` takes to turn through ``window``.
+
+    ``Δφ = |θ̇| t + ½ |θ̈| t²`` solved for t (the rate's and the acceleration's magnitudes:
+    a wheel slowing down inside the window turns back and leaves it after at most the
+    same time, so this is the time to the first exit, within a factor 2 of the whole
+    stay)::
+
+        t = 2 Δφ / (|θ̇| + √(θ̇² + 2 |θ̈| Δφ))
+
+    ``Δφ/|θ̇|`` for ``θ̈ = 0``; ``√(2 Δφ/|θ̈|)`` for ``θ̇ = 0``; inf for both zero.
+
+    Raises:
+        ValueError: a negative or non-finite window.
+    """
+    if not (math.isfinite(window) and window >= 0.0):
+        raise ValueError(f"window = {window!r} rad; valid range is [0, inf)")
+    w, a = abs(float(rate)), abs(float(accel))
+    den = w + math.sqrt(w * w + 2.0 * a * window)
+    return 2.0 * window / den if den > 0.0 else math.inf
+
+
 class HybridImpacts:
     """Impact maps of the hybrid model (mixed into ``OmniHybrid``, which has the fields)."""
 
@@ -178,7 +200,7 @@ class HybridImpacts:
         return nu - np.linalg.solve(m_red, h * j)
 
     def overlap_impulse(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
-                        wheel: int, rate: float) -> float:
+                        wheel: int, rate: float, accel: float = 0.0) -> float:
         """Yaw angular impulse of the two rows' friction while both touch, N·m·s.
 
         Compliant contacts overlap over ``Δφ_w = δ / |x_c|`` of wheel rotation (the two
@@ -189,9 +211,14 @@ class HybridImpacts:
         linearly across the window, unless the soft contact's tangential damping
         ``(N/g)(2/t_c) e |r|`` is smaller (slow turning): force ``f``, at levers
         ``L ± e``: a yaw moment ``2 e f`` against r and no net force. Impulse
-        ``2 e f Δt_w``.
+        ``2 e f Δt_w``, ``Δt_w`` the time the wheel takes to cross the window
+        (:func:`crossing_time`) at its rate ``θ̇`` and acceleration ``θ̈`` (``accel``, the
+        continuous phase's at the hand-over): ``Δφ_w / |θ̇|`` while the wheel turns fast,
+        bounded by ``√(2 Δφ_w / |θ̈|)`` where it turns back inside the window (a wheel
+        whose rate passes through zero at the hand-over: ``Δφ_w/|θ̇|`` alone diverges there
+        and would stop the platform's yaw).
         """
-        if self.penetration == 0.0 or rate == 0.0:
+        if self.penetration == 0.0 or (rate == 0.0 and accel == 0.0):
             return 0.0
         g = self.rollers
         phi = float(g.phases(float(thetas[wheel]))[modes[wheel]])
@@ -202,7 +229,7 @@ class HybridImpacts:
         if self.contact_timeconst > 0.0:
             force = min(force, load / self.gravity * 2.0 / self.contact_timeconst
                         * e * abs(float(nu[2])))
-        return 2.0 * e * force * window / abs(rate)
+        return 2.0 * e * force * crossing_time(window, rate, accel)
 
     @property
     def handover_dissipation(self) -> float:
@@ -210,7 +237,8 @@ class HybridImpacts:
         return 0.5 * self.mass * self.gravity / 3.0 * self.penetration
 
     def planar_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
-                      thetas: np.ndarray, spins: np.ndarray) -> tuple[np.ndarray, float]:
+                      thetas: np.ndarray, spins: np.ndarray,
+                      wheel_accels: np.ndarray | None = None) -> tuple[np.ndarray, float]:
         """Switch from mode ``old`` to ``new`` in the planar model: ``(ν⁺, ΔT)``.
 
         1. :meth:`inplane_impact` (row lever L ± e, entering roller spins);
@@ -218,8 +246,10 @@ class HybridImpacts:
            (:meth:`vertical_impulses`): ``Δν = M_red⁻¹ H_newᵀ (x_c Λ_z)``;
         3. compliant contacts: :attr:`handover_dissipation` per switching wheel
            (:meth:`remove_energy`) and the rows' friction while both touch
-           (:meth:`overlap_impulse`).
+           (:meth:`overlap_impulse`, with the wheels' accelerations ``wheel_accels`` θ̈
+           of the continuous phase at the hand-over; None: zero).
         """
+        accels = np.zeros(3) if wheel_accels is None else np.asarray(wheel_accels, float)
         nu_plus = self.inplane_impact(nu, old, new, thetas, spins)
         J = self.vertical_impulses(nu, old, new, thetas, spins)
         H_new = self.jacobian(new)
@@ -231,7 +261,8 @@ class HybridImpacts:
                     nu_plus = self.remove_energy(nu_plus, new, thetas, i,
                                                  self.handover_dissipation)
                     rate = float(H_new[i] @ nu_plus)
-                    impulse = self.overlap_impulse(nu_plus, new, thetas, i, rate)
+                    impulse = self.overlap_impulse(nu_plus, new, thetas, i, rate,
+                                                   float(accels[i]))
                     dnu = np.linalg.solve(m_red, np.array([0.0, 0.0, impulse]))
                     if abs(dnu[2]) >= abs(nu_plus[2]):  # friction stops, never reverses
                         dnu *= abs(nu_plus[2]) / max(abs(dnu[2]), 1e-300)
