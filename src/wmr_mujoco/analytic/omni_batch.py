@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from wmr_mujoco.analytic.checks import as_array, positive
+from wmr_mujoco.analytic.omni_heave import contact_inertia, heave_loads
 from wmr_mujoco.analytic.planar import wrap_angle
 
 if TYPE_CHECKING:
@@ -47,20 +48,21 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
              pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
              roller_rates0: np.ndarray | None = None, substeps: int = 4,
              impacts: bool = True, slip: bool = True, arc: bool = False,
-             relax: float = 0.0) -> HybridRun:
+             relax: float = 0.0, heave: bool = False) -> HybridRun:
     """One run of :func:`simulate_batch` (same arguments without the batch axis)."""
     inputs = as_array("inputs", inputs, (None, 3))
     rates0 = None if roller_rates0 is None else np.asarray(roller_rates0, float)[None]
     return simulate_batch(model, [drive], inputs[None], dt, np.asarray(pose0, float)[None],
                           np.asarray(twist0, float)[None], np.asarray(thetas0, float)[None],
-                          rates0, substeps, impacts, slip, arc, relax)[0]
+                          rates0, substeps, impacts, slip, arc, relax, heave)[0]
 
 
 @dataclass(frozen=True)
 class _Geometry:
     """Mode-dependent contact geometry of a batch (B runs, 3 wheels).
 
-    ``modes`` (B, 3); ``H``, ``ks``, ``dks`` (B, 3, 3) rows per wheel; ``xc`` (B, 3).
+    ``modes`` (B, 3); ``H``, ``ks``, ``dks`` (B, 3, 3) rows per wheel; ``xc`` = R' and
+    ``dxc`` = R'' (B, 3).
     """
 
     modes: np.ndarray
@@ -68,6 +70,7 @@ class _Geometry:
     ks: np.ndarray
     dks: np.ndarray
     xc: np.ndarray
+    dxc: np.ndarray
 
 
 def _lowest(model: OmniHybrid, thetas: np.ndarray) -> np.ndarray:
@@ -114,7 +117,7 @@ def _geometry(model: OmniHybrid, thetas: np.ndarray, modes: np.ndarray | None = 
     ks /= rho[..., None]
     dks = -ks * drho_rho[..., None]
     dks[..., 2] += dxc / rho
-    return _Geometry(modes, H, ks, dks, xc)
+    return _Geometry(modes, H, ks, dks, xc, dxc)
 
 
 def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: np.ndarray,
@@ -227,7 +230,8 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                    pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
                    roller_rates0: np.ndarray | None = None, substeps: int = 4,
                    impacts: bool = True, slip: bool = True, arc: bool = False,
-                   relax: float = 0.0) -> list[HybridRun]:
+                   relax: float = 0.0, heave: bool = False, turning: bool = True
+                   ) -> list[HybridRun]:
     """Integrate B runs of the hybrid model at once (RK4; the impact map at switches).
 
     The continuous phase is vectorised over the runs (numpy, (B, 3) arrays); the rare
@@ -265,6 +269,11 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             integrates it too (``docs/omni-dynamics.md`` § 5, "Finite duration"; ρ of a
             MuJoCo contact: :func:`wmr_mujoco.sim.soft_contact.slip_relaxation`). The
             dynamics continue from ``ν⁺`` (the transient is superposed, first order).
+        heave: add to the slip test's normal loads those of the platform riding over
+            the rollers' arcs (:mod:`~wmr_mujoco.analytic.omni_heave`).
+        turning: a hand-over's overlap lasts the wheel's crossing time at its rate and
+            acceleration (:func:`~wmr_mujoco.analytic.omni_impacts.crossing_time`);
+            False: at its rate alone (the model before issue 24, for comparison).
 
     Raises:
         ValueError: non-finite or mis-shaped inputs, non-positive dt.
@@ -301,6 +310,8 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
     drift = np.zeros((nb, 3))  # its integral, world frame
 
     st = _Stepper(model, rate_mode, gain, limit_tau, arc, slipping, slip_dir, loads)
+    kz = contact_inertia(model.distance * model.radial[:, :2], model.mass,
+                         model.inertia[0, 0], model.inertia[1, 1])
     full = np.full((nb, 1), h)
     for k in range(n):
         u_in = inputs[:, k]
@@ -324,7 +335,10 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             hnu = (geo.H @ nu[..., None])[..., 0]
             thd = np.where(st.slipping, thd, hnu)  # rolling wheels stay on the constraint
             if slip:
-                st.loads = np.maximum(_normal_loads(model, forces, thdd), 0.0)
+                st.loads = _normal_loads(model, forces, thdd)
+                if heave:
+                    st.loads += heave_loads(kz, geo.xc, geo.dxc, thd, thdd)
+                np.maximum(st.loads, 0.0, out=st.loads)
                 onset = ~st.slipping & (np.abs(forces) > model.friction * st.loads)
                 st.slip_dir = np.where(onset, np.sign(forces), st.slip_dir)
                 st.slipping = st.slipping | onset
@@ -348,7 +362,7 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                 if impacts:
                     before = nu[b].copy()
                     nu[b], lost = model.planar_impact(nu[b], old_m, new_m, th[b], entering,
-                                                       thdd[b])
+                                                       thdd[b] if turning else None)
                     pending[b] += before - nu[b]
                 for j, i in enumerate(i for i in range(3) if new_m[i] != old_m[i]):
                     # One impact, its loss counted once (on the first switching wheel).

@@ -32,11 +32,11 @@ from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams, RobotParams
+from wmr_mujoco.robots.omni3.members import member_run, member_spec
 from wmr_mujoco.robots.omni3.runs import (
     CONTACT_WINDOW,
     Run,
     RunSpec,
-    cached_runs,
     hybrid,
     phase_lag_steps,
 )
@@ -188,9 +188,10 @@ def _run(scenario: Scenario, params: RobotParams | None, specs: tuple[RunSpec, .
 
     if params is not None and not isinstance(params, OmniParams):
         raise ValueError(f"params must be OmniParams, got {type(params).__name__}")
-    if scenario.name not in {s.name for s in specs}:
+    base = {s.name: s for s in specs}.get(scenario.name)
+    if base is None:
         raise ValueError(f"no dynamic run named {scenario.name!r}")
-    return cached_runs(DYNAMIC_SPECS, params)[scenario.name]
+    return member_run(member_spec(scenario, base), params, DYNAMIC_SPECS)
 
 
 def off_floor_metric(run: Run) -> Metric:
