@@ -66,6 +66,16 @@ class HybridImpacts:
         Mq.setflags(write=False)
         return Mq
 
+    @functools.cached_property
+    def _full_mass_invs(self) -> dict[int, np.ndarray]:
+        return {}
+
+    def _full_mass_inv(self, n: int) -> np.ndarray:
+        """Inverse of the leading n×n block of 𝕄 (n = 12, or 9 with massless rollers)."""
+        if n not in self._full_mass_invs:
+            self._full_mass_invs[n] = np.linalg.inv(self._full_mass[:n, :n])
+        return self._full_mass_invs[n]
+
     def full_mass(self) -> np.ndarray:
         """𝕄 of ``q̇ = (V, Ω, θ̇, β̇)``: the wheel spin couples to Ω through I_ax a_i."""
         return self._full_mass.copy()
@@ -175,8 +185,7 @@ class HybridImpacts:
         A = self.constraint_rows(new, thetas)
         cols, rows = self._massive(A)
         Ar = A[np.ix_(rows, cols)]
-        impulse = np.linalg.solve(Ar @ np.linalg.solve(self.full_mass()[np.ix_(cols, cols)],
-                                                        Ar.T), Ar @ q[cols])
+        impulse = np.linalg.solve(Ar @ self._full_mass_inv(cols.size) @ Ar.T, Ar @ q[cols])
         g = self.rollers
         xc = np.array([g.contact_ahead(float(g.phases(float(th))[m]))
                        for m, th in zip(new, thetas, strict=True)])
@@ -184,7 +193,8 @@ class HybridImpacts:
         return xc * impulse[1::step]
 
     def remove_energy(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
-                      wheel: int, energy: float) -> np.ndarray:
+                      wheel: int, energy: float, m_red: np.ndarray | None = None
+                      ) -> np.ndarray:
         """Take ``energy`` out of wheel ``wheel``'s rolling by an impulse J along ``H_i``.
 
         ``T(ν − M⁻¹H_iᵀJ) = T − s J + ½ c J²`` with ``s = H_i ν``, ``c = H_i M⁻¹ H_iᵀ``;
@@ -192,7 +202,8 @@ class HybridImpacts:
         share brought to rest, if ΔE exceeds it).
         """
         h = self.jacobian(modes)[wheel]
-        m_red = self.planar_mass(modes, thetas)
+        if m_red is None:  # the planar mass matrix of mode σ (given: already known)
+            m_red = self.planar_mass(modes, thetas)
         rate = float(h @ nu)
         c = float(h @ np.linalg.solve(m_red, h))
         disc = rate * rate - 2.0 * c * energy
@@ -253,13 +264,13 @@ class HybridImpacts:
         nu_plus = self.inplane_impact(nu, old, new, thetas, spins)
         J = self.vertical_impulses(nu, old, new, thetas, spins)
         H_new = self.jacobian(new)
-        nu_plus = nu_plus + np.linalg.solve(self.planar_mass(new, thetas), H_new.T @ J)
+        m_red = self.planar_mass(new, thetas)
+        nu_plus = nu_plus + np.linalg.solve(m_red, H_new.T @ J)
         if self.penetration > 0:
-            m_red = self.planar_mass(new, thetas)
             for i in range(3):
                 if new[i] != old[i]:
                     nu_plus = self.remove_energy(nu_plus, new, thetas, i,
-                                                 self.handover_dissipation)
+                                                 self.handover_dissipation, m_red)
                     rate = float(H_new[i] @ nu_plus)
                     impulse = self.overlap_impulse(nu_plus, new, thetas, i, rate,
                                                    float(accels[i]))
@@ -269,7 +280,7 @@ class HybridImpacts:
                     nu_plus = nu_plus - math.copysign(1.0, nu_plus[2]) * dnu
         ks, _ = self.roller_rows(new, thetas)
         lost = (self.kinetic_energy(nu, old, thetas) + 0.5 * self.roller_axial * (
-            spins @ spins - (ks @ nu) @ (ks @ nu)) - self.kinetic_energy(nu_plus, new, thetas))
+            spins @ spins - (ks @ nu) @ (ks @ nu)) - 0.5 * nu_plus @ m_red @ nu_plus)
         return nu_plus, float(lost)
 
     def full_energy(self, q: np.ndarray) -> float:

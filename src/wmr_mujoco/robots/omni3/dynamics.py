@@ -29,7 +29,6 @@ from __future__ import annotations
 import numpy as np
 
 from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import OmniParams, RobotParams
 from wmr_mujoco.robots.omni3.members import member_run, member_spec
@@ -237,11 +236,27 @@ def lagrange_twists(params: RobotParams | None, torques: np.ndarray, twist0: np.
     (:class:`~wmr_mujoco.analytic.omni_dynamics.OmniDynamics`).
     """
     dyn = lagrange_of(hybrid(params))  # type: ignore[arg-type]
+    minv = np.linalg.inv(dyn.mass_matrix)
+    force = minv @ dyn.H.T @ np.asarray(torques, float)
+    # body_acceleration with c(ν) = (−M r v, M r u, 0): ν̇ = f − M r (−v m₀ + u m₁),
+    # m_j the columns of the inverse mass matrix (plain floats: 4 stages × n steps).
+    f = [float(x) for x in force]
+    m0 = [float(x) * dyn.mass for x in minv[:, 0]]
+    m1 = [float(x) * dyn.mass for x in minv[:, 1]]
+
+    def accel(nu: list[float]) -> list[float]:
+        u, v, r = nu
+        return [f[j] + r * (v * m0[j] - u * m1[j]) for j in range(3)]
+
     out = np.zeros((n + 1, 3))
     out[0] = twist0
-    nu = np.asarray(twist0, float)
-    for k in range(n):
-        nu = rk4_step(dyn.body_acceleration, nu, torques, dt)
+    nu = [float(x) for x in twist0]
+    for k in range(n):  # RK4
+        k1 = accel(nu)
+        k2 = accel([nu[j] + 0.5 * dt * k1[j] for j in range(3)])
+        k3 = accel([nu[j] + 0.5 * dt * k2[j] for j in range(3)])
+        k4 = accel([nu[j] + dt * k3[j] for j in range(3)])
+        nu = [nu[j] + dt / 6.0 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]) for j in range(3)]
         out[k + 1] = nu
     return out
 
