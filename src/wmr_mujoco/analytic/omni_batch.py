@@ -148,17 +148,27 @@ def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: n
     return nudot, thdd, forces
 
 
-def _normal_loads(model: OmniHybrid, forces: np.ndarray, wheel_accels: np.ndarray
-                  ) -> np.ndarray:
-    """:meth:`OmniHybrid.normal_loads` for a batch of (B, 3) forces and wheel accelerations."""
+def _normal_loads(model: OmniHybrid, forces: np.ndarray, wheel_accels: np.ndarray,
+                  geo: _Geometry | None = None) -> np.ndarray:
+    """:meth:`OmniHybrid.normal_loads` for a batch of (B, 3) forces and wheel accelerations.
+
+    With ``geo`` the supports are the contacts themselves, ``(L − y_σ) ê_i + x_c t_i``
+    (the row's offset and the contact ahead of the axle move with the roller phase);
+    without, the wheel centres' ``L ê_i``.
+    """
     e, t = model.radial, model.drive_dirs
-    pos = model.distance * e[:, :2]
+    nb = forces.shape[0]
+    if geo is None:
+        pos = np.broadcast_to(model.distance * e[:, :2], (nb, 3, 2))
+    else:
+        lever = model.distance - model.rollers.offsets[geo.modes]
+        pos = lever[..., None] * e[:, :2] + geo.xc[..., None] * t[:, :2]
     dL = model.wheel_axial * wheel_accels @ -e[:, :2]
     r = model.radius
-    A = np.vstack([pos[:, 1], -pos[:, 0], np.ones(3)])
+    A = np.stack([pos[..., 1], -pos[..., 0], np.ones((nb, 3))], axis=1)
     rhs = np.stack([dL[:, 0] - r * forces @ t[:, 1], dL[:, 1] + r * forces @ t[:, 0],
-                    np.full(forces.shape[0], model.mass * model.gravity)], axis=-1)
-    return np.linalg.solve(A, rhs.T).T
+                    np.full(nb, model.mass * model.gravity)], axis=-1)
+    return np.linalg.solve(A, rhs[..., None])[..., 0]
 
 
 @dataclass
@@ -335,7 +345,7 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             hnu = (geo.H @ nu[..., None])[..., 0]
             thd = np.where(st.slipping, thd, hnu)  # rolling wheels stay on the constraint
             if slip:
-                st.loads = _normal_loads(model, forces, thdd)
+                st.loads = _normal_loads(model, forces, thdd, geo if heave else None)
                 if heave:
                     st.loads += heave_loads(kz, geo.xc, geo.dxc, thd, thdd)
                 np.maximum(st.loads, 0.0, out=st.loads)
