@@ -18,6 +18,8 @@ import numpy as np
 from wmr_mujoco.sim.engine import STATE_SPEC
 from wmr_mujoco.sim.stepping import SimulationDivergedError
 
+#: omni3's wheel hinges (and their actuators), in layout order.
+WHEELS = ("wheel1", "wheel2", "wheel3")
 #: Threads of a batch (the machine's cores, at most this many).
 MAX_THREADS = 2
 
@@ -87,7 +89,7 @@ def settle_at_phases(model: mujoco.MjModel, wheels: Sequence[str], phases: Seque
 
 
 def contact_wheels(model: mujoco.MjModel, data: mujoco.MjData,
-                   wheels: Sequence[str]) -> np.ndarray:
+                   wheels: Sequence[str] = WHEELS) -> np.ndarray:
     """The wheel of each current floor contact: (ncon,) indices into ``wheels``.
 
     A contact belongs to the wheel whose roller (a child body of the wheel) touches the
@@ -104,7 +106,7 @@ def contact_wheels(model: mujoco.MjModel, data: mujoco.MjData,
 
 
 def wheels_off_floor(model: mujoco.MjModel, states: np.ndarray,
-                     wheels: Sequence[str]) -> np.ndarray:
+                     wheels: Sequence[str] = WHEELS) -> np.ndarray:
     """(N, len(wheels)) True where no roller of a wheel touches the ``floor``.
 
     Each full-physics state (rows of ``STATE_SPEC``) is set and its contacts found

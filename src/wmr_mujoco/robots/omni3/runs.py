@@ -25,6 +25,7 @@ from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
 from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3.physics import (  # noqa: F401  (contact readers re-exported)
+    WHEELS,
     contact_wheels,
     rollout_from,
     settle_at_phases,
@@ -33,8 +34,6 @@ from wmr_mujoco.robots.omni3.physics import (  # noqa: F401  (contact readers re
 from wmr_mujoco.robots.roller_wheels import drive_from_model, hybrid_from_model, roller_rates
 from wmr_mujoco.sim.stepping import check_healthy
 
-#: omni3's wheel hinges (and their actuators), in layout order.
-WHEELS = ("wheel1", "wheel2", "wheel3")
 #: The body the platform's yaw inertia is taken about.
 CENTRE_BODY = "platform"
 #: Seconds from a run's start over which the wheels' floor contacts are read
@@ -296,8 +295,9 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
     ``relax``: each hand-over's jump spread as the soft contact makes it at the physics'
     step (:attr:`~wmr_mujoco.analytic.omni_hybrid.OmniHybrid.handover_relaxation`; on in
     ``wmr validate``); off: made at once (the rigid impact map). ``turning``: the
-    hand-over overlap's duration with the wheel's acceleration (on in ``wmr validate``;
-    off: the model before issue 24).
+    hand-over overlap's duration with the wheel's acceleration, and the normal loads at
+    the contact points with the heave (on in ``wmr validate``; off: the model before
+    issue 24).
 
     Raises:
         ValueError: duplicate names, a command beyond the actuators' range, or a bad
@@ -331,7 +331,7 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
         np.array([phys[s.name][2][0] for s in specs]),
         np.array([roller_rates(model, starts[s.name][1 + model.nq:], WHEELS)
                   for s in specs]), substeps=max(1, math.ceil(dt / HYBRID_STEP - 1e-9)), arc=arc,
-        relax=hy.handover_relaxation if relax else 0.0, turning=turning)
+        relax=hy.handover_relaxation if relax else 0.0, turning=turning, heave=turning)
     out = {}
     for s, run in zip(specs, runs, strict=True):
         pose, twist, th, rates = phys[s.name]
