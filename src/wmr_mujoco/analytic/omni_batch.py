@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from wmr_mujoco.analytic.checks import as_array, positive
+from wmr_mujoco.analytic.omni_heave import balance_loads as _normal_loads
 from wmr_mujoco.analytic.omni_heave import contact_inertia, heave_loads
 from wmr_mujoco.analytic.planar import wrap_angle
 
@@ -146,29 +147,6 @@ def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: n
     thdd = np.where(slipping, (torques - model.radius * slip_forces) / model.wheel_inertia, hnd)
     forces = np.where(slipping, slip_forces, (torques - model.wheel_inertia * hnd) / model.radius)
     return nudot, thdd, forces
-
-
-def _normal_loads(model: OmniHybrid, forces: np.ndarray, wheel_accels: np.ndarray,
-                  geo: _Geometry | None = None) -> np.ndarray:
-    """:meth:`OmniHybrid.normal_loads` for a batch of (B, 3) forces and wheel accelerations.
-
-    With ``geo`` the supports are the contacts themselves, ``(L − y_σ) ê_i + x_c t_i``
-    (the row's offset and the contact ahead of the axle move with the roller phase);
-    without, the wheel centres' ``L ê_i``.
-    """
-    e, t = model.radial, model.drive_dirs
-    nb = forces.shape[0]
-    if geo is None:
-        pos = np.broadcast_to(model.distance * e[:, :2], (nb, 3, 2))
-    else:
-        lever = model.distance - model.rollers.offsets[geo.modes]
-        pos = lever[..., None] * e[:, :2] + geo.xc[..., None] * t[:, :2]
-    dL = model.wheel_axial * wheel_accels @ -e[:, :2]
-    r = model.radius
-    A = np.stack([pos[..., 1], -pos[..., 0], np.ones((nb, 3))], axis=1)
-    rhs = np.stack([dL[:, 0] - r * forces @ t[:, 1], dL[:, 1] + r * forces @ t[:, 0],
-                    np.full(nb, model.mass * model.gravity)], axis=-1)
-    return np.linalg.solve(A, rhs[..., None])[..., 0]
 
 
 @dataclass

@@ -1,4 +1,12 @@
-"""Normal loads of a three-omni-wheel platform riding over its rollers' arcs (heave).
+"""Normal loads of a three-omni-wheel platform: its balance at the contacts, and heave.
+
+:func:`balance_loads`: the loads that hold the platform's weight and the tractions'
+moments (load transfer), supported at the contact points themselves: ``(L − y_σ) ê_i +
+x_c t_i`` moves with the roller phase by the row offset ``e`` and the contact's lead
+``x_c`` (4 % and up to 6.5 % of L), which shifts the loads by as much.
+
+Heave (:func:`contact_inertia`, :func:`heave_loads`), the platform riding over its
+rollers' arcs:
 
 On rigid contacts each wheel centre stands ``z_i = R(φ_i)`` above the floor (the axle
 height over the contact, :class:`~wmr_mujoco.analytic.roller_geometry.RollerGeometry`),
@@ -27,7 +35,13 @@ impulse, not a load) and the tilts' gyroscopic terms with the yaw rate.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
+
+if TYPE_CHECKING:
+    from wmr_mujoco.analytic.omni_batch import _Geometry
+    from wmr_mujoco.analytic.omni_hybrid import OmniHybrid
 
 
 def contact_inertia(positions: np.ndarray, mass: float, roll_inertia: float,
@@ -70,3 +84,26 @@ def heave_loads(inertia: np.ndarray, slope: np.ndarray, curvature: np.ndarray,
     """
     zdd = slope * accels + curvature * rates * rates
     return zdd @ np.asarray(inertia).T
+
+
+def balance_loads(model: OmniHybrid, forces: np.ndarray, wheel_accels: np.ndarray,
+                  geo: _Geometry | None = None) -> np.ndarray:
+    """:meth:`OmniHybrid.normal_loads` for a batch of (B, 3) forces and wheel accelerations.
+
+    With ``geo`` the supports are the contacts themselves, ``(L − y_σ) ê_i + x_c t_i``
+    (the row's offset and the contact ahead of the axle move with the roller phase);
+    without, the wheel centres' ``L ê_i``.
+    """
+    e, t = model.radial, model.drive_dirs
+    nb = forces.shape[0]
+    if geo is None:
+        pos = np.broadcast_to(model.distance * e[:, :2], (nb, 3, 2))
+    else:
+        lever = model.distance - model.rollers.offsets[geo.modes]
+        pos = lever[..., None] * e[:, :2] + geo.xc[..., None] * t[:, :2]
+    dL = model.wheel_axial * wheel_accels @ -e[:, :2]
+    r = model.radius
+    A = np.stack([pos[..., 1], -pos[..., 0], np.ones((nb, 3))], axis=1)
+    rhs = np.stack([dL[:, 0] - r * forces @ t[:, 1], dL[:, 1] + r * forces @ t[:, 0],
+                    np.full(nb, model.mass * model.gravity)], axis=-1)
+    return np.linalg.solve(A, rhs[..., None])[..., 0]
