@@ -1,6 +1,6 @@
 """omni3's measurement families: N, median, worst and target of every judged figure.
 
-``python -m wmr_mujoco.bench.omni_families [--seed S ...] [--before] [--draws N]``
+``python -m wmr_mujoco.bench.omni_families [--seed S ...] [--before] [--draws N] [--write]``
 
 Every omni3 measurement scenario's family (:mod:`wmr_mujoco.robots.omni3.families`) is
 drawn with each seed, all members run in one batch per kind
@@ -9,6 +9,8 @@ figure the table prints the number of draws, the median, the worst draw's value 
 the draw itself, the target and how many draws meet it. ``--before`` runs the models as
 they were before issue 24 (the hand-over overlap timed by the wheel's rate alone, the
 slip onset predicted quasi-statically at rest), on the same draws and physics.
+``--write`` pastes the tables of both model versions into ``docs/omni-dynamics.md``
+(§ 13; it runs each seed twice).
 """
 
 from __future__ import annotations
@@ -20,6 +22,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from wmr_mujoco.docs_sync.markers import publish
+from wmr_mujoco.models.paths import REPO_ROOT
 from wmr_mujoco.robots.omni3 import SPEC, families, members, traction
 from wmr_mujoco.validation.family import DEFAULT_SEED, describe
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind
@@ -86,6 +90,27 @@ def table(results: list[tuple[Scenario, MeasurementResult]]) -> list[dict[str, o
     return out
 
 
+#: The page and marker key of the tables.
+DOC = REPO_ROOT / "docs" / "omni-dynamics.md"
+KEY = "omni dynamics: families"
+
+
+def markdown(tables: Sequence[tuple[int, bool, float, list[dict[str, object]]]]) -> str:
+    """The tables as Markdown, one per (seed, before) with its members' wall time."""
+    out = []
+    for seed, before, wall, rows in tables:
+        out.append(f"**seed {seed}, {'before' if before else 'after'} issue 24** "
+                   f"({rows[0]['n'] if rows else 0} draws per family; "
+                   f"all members in {wall:.0f} s)\n")
+        out.append("| scenario | figure | median | worst | target | met | worst draw |")
+        out.append("|---|---|---|---|---|---|---|")
+        out += [f"| {r['scenario']} | {r['figure']} | {r['median']:.3g} | {r['worst']:.3g} "
+                f"| {r['target']:.3g} | {r['met']}/{r['n']} | {r['worst draw']} |"
+                for r in rows]
+        out.append("")
+    return "\n".join(out)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Print the families' table for each seed; exit 1 if a worst draw misses its target."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -94,27 +119,34 @@ def main(argv: Sequence[str] | None = None) -> int:
                     help=f"draws per family (default: the family's; at most {MAX_DRAWS})")
     ap.add_argument("--before", action="store_true",
                     help="the models before issue 24, on the same draws")
+    ap.add_argument("--write", action="store_true",
+                    help=f"both model versions, pasted into {DOC.name}")
     args = ap.parse_args(argv)
     if any(s < 0 for s in args.seed):
         ap.error(f"--seed {args.seed}: seeds are integers >= 0")
     if args.draws is not None and not 1 <= args.draws <= MAX_DRAWS:
         ap.error(f"--draws {args.draws}: valid range is 1..{MAX_DRAWS}")
     missed = False
-    for seed in args.seed:
+    done = []
+    for seed, before in [(s, b) for s in args.seed
+                         for b in ((False, True) if args.write else (args.before,))]:
         t0 = time.perf_counter()
-        results = evaluate_members(family_members(seed, args.draws), args.before)
+        results = evaluate_members(family_members(seed, args.draws), before)
         wall = time.perf_counter() - t0
+        done.append((seed, before, wall, table(results)))
         print(f"\nomni3 measurement families, seed {seed}"
-              f"{' (models before issue 24)' if args.before else ''}: "
+              f"{' (models before issue 24)' if before else ''}: "
               f"{len(results)} members in {wall:.1f} s")
         print(f"{'scenario':26s} {'figure':52s} {'N':>3s} {'median':>8s} {'worst':>8s} "
               f"{'target':>7s} {'met':>5s}  worst draw")
-        for r in table(results):
+        for r in done[-1][3]:
             missed |= r["worst"] > r["target"]  # type: ignore[operator]
             print(f"{r['scenario']:26.26s} {r['figure']:52.52s} {r['n']:3d} "
                   f"{r['median']:8.3g} {r['worst']:8.3g} {r['target']:7.3g} "
                   f"{r['met']:2d}/{r['n']:<2d}  {r['worst draw']}")
     traction._READY.clear()
+    if args.write:
+        publish(DOC, {KEY: markdown(done)}, True)
     return 1 if missed else 0
 
 
