@@ -10,8 +10,8 @@ from wmr_mujoco.robots.omni3.runs import hybrid
 def test_slip_onset_follows_the_wheel_phase():
     """Issue 24: the measured onset spreads by ~20 % over the wheels' start phase. The
     hybrid model on the same ramp from the same start (loads at the contact points, with
-    the heave: ``tests/analytic/test_omni_heave.py``) meets issue 16's 5 % at every phase
-    of a pitch on a 5° grid, while the quasi-static μ N at rest (one number for all
+    the heave: ``tests/robots/roller_wheels/test_omni_heave.py``) meets issue 16's 5 % at
+    every phase of a pitch on a 5° grid, while the quasi-static μ N at rest (one number for all
     phases) misses it. The grid leaves out the two exactly symmetric starts (every wheel
     at a roller's centre, 0° and 30°), where the physics' slip re-sticks once and its
     reading jumps by ~12 % (an open point, docs/omni-dynamics.md). The ramp's derived

@@ -19,8 +19,8 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3 import members, traction
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import RunSpec
 from wmr_mujoco.validation.family import Family, Vary
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind

@@ -15,7 +15,7 @@ import math
 from collections.abc import Iterable
 from dataclasses import replace
 
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import Run, RunSpec, cached_runs, simulate_runs
 from wmr_mujoco.validation.family import describe
 from wmr_mujoco.validation.scenarios import Scenario

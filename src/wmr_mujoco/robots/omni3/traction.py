@@ -3,7 +3,7 @@
 Prediction (:func:`predicted_slip_torque`): at rest, torques ``τ = s · pattern`` give
 rolling-wheel tractions ``F_t = (τ − I_w H ν̇)/r`` with ``ν̇ = (P + I_w HᵀH)⁻¹ Hᵀ τ``
 (mean lever L) and normal loads N from the robot's balance
-(:meth:`~wmr_mujoco.analytic.omni_hybrid.OmniHybrid.normal_loads`); both are affine in
+(:meth:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid.normal_loads`); both are affine in
 s, so each wheel's onset solves ``s |F₁| = μ (N₀ + s N₁)``.
 
 Measurement (:func:`measure_slip_onset`): ONE run in torque mode whose scale ramps
@@ -30,13 +30,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from wmr_mujoco.analytic import omni_hybrid as oh
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.params import OmniParams, RobotParams
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.physics import rollout_from, settle_at_phases
 from wmr_mujoco.robots.omni3.runs import SETTLE, WHEELS, base_states, hybrid, settled
 from wmr_mujoco.robots.roller_wheels import drive_from_model
+from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
@@ -161,7 +162,7 @@ def model_onsets(hy: oh.OmniHybrid, drive: oh.Drive, torques: np.ndarray, dt: fl
     """Slip speeds (N, 3) of the hybrid model under ``torques`` (N, 3) from rest, per start.
 
     The model with slip at ``μ N``, the weight's moment over the roller arcs and the
-    heave loads (:mod:`~wmr_mujoco.analytic.omni_heave`: the loads follow the wheels'
+    heave loads (:mod:`~wmr_mujoco.robots.roller_wheels.omni_heave`: the loads follow the wheels'
     phase and acceleration), from each measured start's wheel angles; slip speed
     ``|r (θ̇ − H(σ) ν)|`` with θ̇ the model's own (differenced).
     """
