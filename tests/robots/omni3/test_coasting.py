@@ -20,8 +20,8 @@ def test_slope_and_velocity_direction_on_known_motions():
     np.testing.assert_allclose(side, psi + np.pi / 2, atol=1e-12)
 
 
-def test_coast_figures_judged():
-    """The three coasting figures are judged against issue 16's 5 %, and the physics does
+def test_coast_figures_declared():
+    """The three coasting figures carry issue 16's 5 % (open over the family), and the physics does
     lose energy and yaw rate (relative figures of a coast that lost nothing would be
     vacuous): 0.005 W over the 3 s coast is over a tenth of the translational energy
     ½ M u² alone (M = 2.54 kg, u = 0.3 m/s: 0.11 J). Whether they are met is the family's
@@ -32,6 +32,7 @@ def test_coast_figures_judged():
     assert m["yaw-rate decay, physics"].value > 0
     for name in ("yaw-rate decay", "energy lost per second", "velocity-direction turn rate"):
         assert m[f"{name}: hybrid vs physics"].target is co.COAST
+    assert not co.COAST.judged  # open over the family (issue 24)
 
 
 def test_slow_coast_keeps_its_yaw_rate():

@@ -57,10 +57,19 @@ STEP_PATH = Target.requirement(0.3, f"{SOURCE}: a step command within 0.3 % of p
                                     "the dynamic model, worst over the run")
 STEP_HEADING = Target.requirement(0.2, f"{SOURCE}: a step command within 0.2° of the "
                                        "dynamic model, worst over the run")
-TORQUE_COMPONENT = Target.requirement(
-    1.0, f"{SOURCE}: each body-velocity component within 1 % of its peak over the whole run")
-TORQUE_PATH = Target.requirement(0.5, f"{SOURCE}: pose within 0.5 % of path under torque "
-                                      "inputs, worst over the run")
+#: Open over their families (issue 24; spreads: ``python -m wmr_mujoco.bench.omni_families``).
+TORQUE_COMPONENT = Target.open(
+    1.0, f"{SOURCE}: each body-velocity component within 1 % of its peak over the whole run",
+    "over the start phase the model's hand-overs land a sample or more from the physics' "
+    "(the one-sample allowance holds only where its wheel phase stays within one step's "
+    "turn), and a wheel starting in a valley with both rows touching creeps out through "
+    "the soft contact's slip, which the rigid-contact model does not hold "
+    "(docs/omni-dynamics.md § 13)")
+TORQUE_PATH = Target.open(0.5, f"{SOURCE}: pose within 0.5 % of path under torque "
+                               "inputs, worst over the run",
+                          "a wheel starting in a valley with both rows touching creeps out "
+                          "through the soft contact's slip; the rigid-contact model keeps it "
+                          "there (docs/omni-dynamics.md § 13)")
 TRACTION = Target.derived(1.0, "Coulomb friction: a wheel rolls without slip while |F_t| ≤ "
                                "μ N, N from the robot's balance with load transfer; the "
                                "torque inputs must stay below it for the rolling models")

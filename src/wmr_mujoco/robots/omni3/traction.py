@@ -41,8 +41,11 @@ from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 
-SLIP = Target.requirement(5.0, "accuracy asked of the traction model: slip-onset "
-                                    "torque predicted within 5 %")
+SLIP = Target.open(5.0, "accuracy asked of the traction model: slip-onset torque predicted "
+                        "within 5 %",
+                   "the reading (the slip stays above the threshold for good) jumps where "
+                   "the physics' slip re-sticks once, at the symmetric starts and a few "
+                   "others (docs/omni-dynamics.md § 13)")
 #: Torque pattern of the scenario (a push along x), scaled to a largest entry of 1.
 PATTERN = (0.0, -1.0, 1.0)
 #: Slip speed that counts as slipping for good, m/s.
