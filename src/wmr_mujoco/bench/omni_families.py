@@ -30,6 +30,8 @@ from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, Scenari
 
 #: Most draws per family from the command line.
 MAX_DRAWS = 100
+#: Most members prepared at once (below ``members.MAX_READY``).
+BATCH = 320
 
 
 def family_members(seed: int, draws: int | None = None) -> list[Scenario]:
@@ -57,18 +59,28 @@ def _before(result: MeasurementResult) -> MeasurementResult:
 
 def evaluate_members(scenarios: Sequence[Scenario], before: bool = False
                      ) -> list[tuple[Scenario, MeasurementResult]]:
-    """Prepare all members in one batch, then evaluate each."""
-    if before:
-        from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
+    """Members run in batches of whole scenarios, then evaluated one by one.
 
-        base = {s.name: s for s in DYNAMIC_SPECS}
-        members.prepare([members.member_spec(s, base[s.name]) for s in scenarios
-                         if s.name in base], None, turning=False)
-    families.prepare(scenarios, None)
+    A batch holds at most :data:`BATCH` members (a scenario's draws stay together).
+    """
+    from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
+
+    base = {s.name: s for s in DYNAMIC_SPECS}
+    batches: list[list[Scenario]] = [[]]
+    for name in dict.fromkeys(s.name for s in scenarios):
+        group = [s for s in scenarios if s.name == name]
+        if batches[-1] and len(batches[-1]) + len(group) > BATCH:
+            batches.append([])
+        batches[-1] += group
     out = []
-    for sc in scenarios:
-        res = sc.evaluate(sc, None)
-        out.append((sc, _before(res) if before else res))
+    for batch in batches:
+        if before:
+            members.prepare([members.member_spec(s, base[s.name]) for s in batch
+                             if s.name in base], None, turning=False)
+        families.prepare(batch, None)
+        for sc in batch:
+            res = sc.evaluate(sc, None)
+            out.append((sc, _before(res) if before else res))
     return out
 
 

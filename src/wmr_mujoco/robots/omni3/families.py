@@ -42,8 +42,9 @@ SLIP_FAMILY = Family((PHASE,), draws=DRAWS)
 def prepare(scenarios: Sequence[Scenario], params: OmniParams | None) -> None:
     """Run every given omni3 measurement member at once (see the module docstring).
 
-    Members of other scenarios are ignored; each kind (dynamic runs, slip ramps) is one
-    batch.
+    Members of other scenarios are ignored; the dynamic runs are one batch (the physics
+    in chunks, :data:`~wmr_mujoco.robots.omni3.runs.CHUNK`; the hybrid model vectorised
+    over all), the slip ramps another.
     """
     from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
 

@@ -243,45 +243,59 @@ def _ramp(twist: Sequence[float], hy: oh.OmniHybrid, n: int, dt: float,
     return share[:, None] * (H @ np.asarray(twist))
 
 
+#: Most runs of one rollout call: a batch's states (~3 MB a run) are reduced to what the
+#: runs keep (:func:`physics_states`) before the next chunk is simulated.
+CHUNK = 40
+
+
+def _chunks(items: list, size: int = CHUNK) -> list[list]:
+    return [items[k:k + size] for k in range(0, len(items), size)]
+
+
 def physics_states(specs: Sequence[RunSpec], models: dict[ActuationMode, mujoco.MjModel],
-                   hy: oh.OmniHybrid) -> dict[str, np.ndarray]:
-    """Every run's full-physics states, in at most four threaded batches.
+                   hy: oh.OmniHybrid, keep: Callable[[RunSpec, np.ndarray], object]
+                   ) -> dict[str, object]:
+    """Every run's full-physics states, reduced by ``keep(spec, states)`` chunk by chunk.
 
     Settled at each spec's phase (rate servo holding the wheels, :data:`SETTLE` s); then
-    the runs from rest and the lead-ins (rate servo on the ramped twist), one batch per
-    mode; then, from each lead-in's end, the judged phase in the spec's mode.
+    the runs from rest and the lead-ins (rate servo on the ramped twist), in threaded
+    batches of at most :data:`CHUNK` runs per mode; then, from each lead-in's end, the
+    judged phase in the spec's mode.
     """
     rate = models[ActuationMode.RATE]
     dt = rate.opt.timestep
     limit = float(rate.actuator(WHEELS[0]).ctrlrange[1])
     phases = sorted({s.phase for s in specs})
     rest = dict(zip(phases, settle_at_phases(rate, WHEELS, phases, SETTLE), strict=True))
-    first: dict[ActuationMode, list[tuple[str, np.ndarray, np.ndarray]]] = {
-        m: [] for m in ActuationMode}
+    first: dict[ActuationMode, list[tuple[RunSpec, np.ndarray]]] = {m: [] for m in ActuationMode}
     for s in specs:
         if s.mode is ActuationMode.RATE and np.any(np.abs(s.command) > limit):
             raise ValueError(f"{s.name}: wheel rates {s.command} beyond the rate limit "
                              f"±{limit:g} rad/s")
         if s.lead_in is not None:
-            first[ActuationMode.RATE].append((s.name, rest[s.phase], _ramp(
+            first[ActuationMode.RATE].append((s, _ramp(
                 s.lead_in, hy, round(s.lead_time / dt), dt, s.lead_ramp)))
         else:
-            first[s.mode].append((s.name, rest[s.phase], np.tile(
-                np.asarray(s.command, float), (round(s.duration / dt), 1))))
-    states: dict[str, np.ndarray] = {}
+            first[s.mode].append((s, np.tile(np.asarray(s.command, float),
+                                             (round(s.duration / dt), 1))))
+    out: dict[str, object] = {}
+    lead_end: dict[str, np.ndarray] = {}
     for mode, group in first.items():
-        if group:
-            trajs = rollout_from(models[mode], np.array([g[1] for g in group]),
-                                 [g[2] for g in group])
-            states.update({g[0]: t for g, t in zip(group, trajs, strict=True)})
+        for chunk in _chunks(group):
+            trajs = rollout_from(models[mode], np.array([rest[g[0].phase] for g in chunk]),
+                                 [g[1] for g in chunk])
+            for (spec, _), traj in zip(chunk, trajs, strict=True):
+                if spec.lead_in is not None:
+                    lead_end[spec.name] = traj[-1]
+                else:
+                    out[spec.name] = keep(spec, traj)
     for mode in ActuationMode:
-        led = [s for s in specs if s.lead_in is not None and s.mode is mode]
-        if led:
-            trajs = rollout_from(models[mode], np.array([states[s.name][-1] for s in led]),
+        for chunk in _chunks([s for s in specs if s.lead_in is not None and s.mode is mode]):
+            trajs = rollout_from(models[mode], np.array([lead_end[s.name] for s in chunk]),
                                  [np.tile(np.asarray(s.command, float),
-                                          (round(s.duration / dt), 1)) for s in led])
-            states.update({s.name: t for s, t in zip(led, trajs, strict=True)})
-    return states
+                                          (round(s.duration / dt), 1)) for s in chunk])
+            out.update({s.name: keep(s, t) for s, t in zip(chunk, trajs, strict=True)})
+    return out
 
 
 def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
@@ -310,18 +324,21 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
     if len(set(names)) != len(names):
         raise ValueError(f"run names must be unique: {names}")
     models = {m: settled(m, params, timestep) for m in ActuationMode}
-    hy = _read(models[ActuationMode.TORQUE][0], params)
+    hy = hybrid(params) if timestep is None else _read(models[ActuationMode.TORQUE][0], params)
     dt = models[ActuationMode.TORQUE][0].opt.timestep
-    states = physics_states(specs, {m: mm for m, (mm, _) in models.items()}, hy)
-    starts: dict[str, np.ndarray] = {}
     model = models[ActuationMode.TORQUE][0]
-    phys = {}
-    for s in specs:
-        pose, twist, th, rates = base_states(model, states[s.name])
-        phys[s.name] = (relative(pose, pose[0]), twist, th, rates)
-        starts[s.name] = states[s.name][0]
+    window = round(CONTACT_WINDOW / dt) + 1
+
+    def keep(spec: RunSpec, states: np.ndarray) -> tuple:
+        pose, twist, th, rates = base_states(model, states)
+        return ((relative(pose, pose[0]), twist, th, rates), states[0],
+                wheels_off_floor(model, states[:window], WHEELS))
+
+    kept = physics_states(specs, {m: mm for m, (mm, _) in models.items()}, hy, keep)
+    phys = {name: k[0] for name, k in kept.items()}  # type: ignore[index]
+    starts = {name: k[1] for name, k in kept.items()}  # type: ignore[index]
     # 3. The hybrid model, every run in one batch from the measured starts.
-    nmax = max(len(states[s.name]) - 1 for s in specs)
+    nmax = max(len(phys[s.name][0]) - 1 for s in specs)
     inputs = np.zeros((len(specs), nmax, 3))
     for b, s in enumerate(specs):
         inputs[b] = np.asarray(s.command, float)
@@ -339,9 +356,8 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
         n = len(pose)
         cut = oh.HybridRun(run.t[:n], run.pose[:n], run.twist[:n], run.thetas[:n],
                            run.torques[:n], [w for w in run.switches if w[0] <= run.t[n - 1]])
-        window = states[s.name][:round(CONTACT_WINDOW / dt) + 1]
         out[s.name] = Run(s, cut.t, pose, twist, th, rates, cut, dt,
-                          wheels_off_floor(model, window, WHEELS))
+                          kept[s.name][2])  # type: ignore[index]
     return out
 
 
