@@ -38,6 +38,10 @@ Extras = Callable[[mujoco.MjModel, mujoco.MjData], Mapping[str, float]]
 #: robot's ``data.ctrl``) the actuator controls that hold ``command`` over the next
 #: ``period`` seconds.
 Controller = Callable[[mujoco.MjData, np.ndarray, float, np.ndarray], None]
+#: ``pushed(model, data, params, speed, lean_rate)``: puts ``data`` in upright straight
+#: rolling at ``speed`` m/s with a sideways push, a lean rate ``lean_rate`` rad/s
+#: (``data.time`` 0): the start of a balancing robot's upright scenarios.
+Pushed = Callable[[mujoco.MjModel, mujoco.MjData, "RobotParams | None", float, float], None]
 
 
 @dataclass(frozen=True)
@@ -54,6 +58,9 @@ class CommandMap(abc.ABC):
             0 for a robot that cannot stand still, the Whipple bicycle).
         keyframe: keyframe a reset starts from (None: the model's rest pose ``qpos0``).
         extras: robot-specific readings of the MuJoCo state (None: none).
+        pushed: a balancing robot's pushed start (:data:`Pushed`; None: the robot stands
+            by itself). With it, the validation closes the balancing loop
+            (:mod:`wmr_mujoco.loop.tasks.families`).
     """
 
     names: tuple[str, ...]
@@ -63,6 +70,7 @@ class CommandMap(abc.ABC):
     settle: float = 0.5
     keyframe: str | None = None
     extras: Extras | None = None
+    pushed: Pushed | None = None
 
     def __post_init__(self) -> None:
         if len(self.names) != len(self.units):

@@ -18,7 +18,7 @@ from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.robots.whipple import eigen, stability
-from wmr_mujoco.robots.whipple.rolling import NAME, compile_model, readings
+from wmr_mujoco.robots.whipple.rolling import NAME, compile_model, pushed, readings
 from wmr_mujoco.validation.command import TorqueCommand
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
 
@@ -53,7 +53,7 @@ SCENARIOS = (
 COMMAND = TorqueCommand(("rear_torque", "steer_torque"), ("N·m", "N·m"),
                         wheels=("rear_wheel", "front_wheel"), steers=("steer",),
                         settle=0.0, keyframe="rolling", extras=readings,
-                        actuators=("rear_torque", "steer_torque"))
+                        actuators=("rear_torque", "steer_torque"), pushed=pushed)
 
 SPEC = RobotSpec(
     name=NAME,

@@ -1,4 +1,4 @@
-"""Reading a :class:`~wmr_mujoco.drive.state.RobotState` from MuJoCo, and placing a robot.
+"""Reading a :class:`~wmr_mujoco.loop.state.RobotState` from MuJoCo, and placing a robot.
 
 Everything is looked up once per compiled model (:class:`Reader`, :func:`place`), so that a
 control step reads its state with a few array reads and one ``mj_objectVelocity``; the
@@ -14,7 +14,7 @@ from types import MappingProxyType
 import mujoco
 import numpy as np
 
-from wmr_mujoco.drive.state import RobotState
+from wmr_mujoco.loop.state import RobotState
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 from wmr_mujoco.validation.command import CommandMap
 
