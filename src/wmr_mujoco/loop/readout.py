@@ -66,6 +66,12 @@ class Reader:
         self.site = model.site("base").id
         self.wheel_dofs = np.array([model.jnt_dofadr[model.joint(w).id]
                                     for w in command.wheels], dtype=int)
+        dofs = self.wheel_dofs.tolist()
+        #: The wheel rates' rows of ``qvel``: a slice where they are consecutive (a copy
+        #: of a slice costs a third of fancy indexing), else the index array.
+        self.wheel_rows: slice | np.ndarray = (
+            slice(dofs[0], dofs[-1] + 1) if dofs and dofs == list(range(dofs[0], dofs[-1] + 1))
+            else self.wheel_dofs)
         self.nsteer = len(command.steers)
         self.steer_qpos = np.array([model.jnt_qposadr[model.joint(s).id]
                                     for s in command.steers], dtype=int)
@@ -138,7 +144,8 @@ class Reader:
                  if self.extras is not None else NO_EXTRAS)
         qpos = self._qpos.copy()
         state = MujocoState(self, time, (x, y, h, u, v, r), qpos,
-                            self._qvel[self.wheel_dofs], data.contact.geom.copy(), extra)
+                            self._qvel[self.wheel_rows].copy(), data.contact.geom.copy(),
+                            extra)
         return state, qpos, h
 
 

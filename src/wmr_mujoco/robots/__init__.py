@@ -5,7 +5,8 @@ its parameters type, builder, model files, analytic adapters per scenario kind, 
 probes, targets and scenarios. Generic code (validation, report, rendering, benchmarks,
 command line) reads robots only from :data:`ROBOTS`, never by name. Adding a robot is its
 own modules and one line in :data:`ROBOTS`; :func:`registered` adds one for a while (tests,
-a foreign model).
+a foreign model). Every entry gets the closed-loop scenario families that fit its command
+map (:func:`~wmr_mujoco.loop.tasks.families.with_loop_scenarios`).
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 
 from wmr_mujoco.choices import match_name
+from wmr_mujoco.loop.tasks.families import with_loop_scenarios
 from wmr_mujoco.robots import (
     bicycle,
     diffdrive,
@@ -31,7 +33,7 @@ from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 __all__ = ["ROBOTS", "Clip", "Picture", "RobotSpec", "get_spec", "register", "registered",
            "unregister"]
 
-ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
+ROBOTS: dict[str, RobotSpec] = {spec.name: with_loop_scenarios(spec) for spec in (
     disc.SPEC,
     disc_free.SPEC,
     bicycle.SPEC,

@@ -235,10 +235,20 @@ class RateCommand(CommandMap):
         joints = np.array([model.jnt_qposadr[model.actuator_trnid[
             model.actuator(s.actuator).id, 0]] for s in self.servo], dtype=int)
 
+        acts_list = acts.tolist()
+        #: The last ``data`` seen and its ``act`` array (a new view on every attribute read).
+        seen: list[object] = [None, None]
+
         def controller(data: mujoco.MjData, command: np.ndarray, period: float,
                        ctrl: np.ndarray) -> None:
-            u = command if direct else self._inputs(adapter, command.tolist(),
-                                                    data.act[acts], period, channels)
+            if direct:
+                u = command
+            else:
+                if seen[0] is not data:
+                    seen[0], seen[1] = data, data.act
+                act = seen[1].tolist()  # type: ignore[union-attr]
+                u = self._inputs(adapter, command.tolist(),
+                                 np.array([act[i] for i in acts_list]), period, channels)
             if w is not None:
                 np.matmul(w, u, out=ctrl)  # W u, written in place
                 return

@@ -8,7 +8,12 @@ from scipy.integrate import solve_ivp
 from scipy.linalg import solve_continuous_lyapunov
 
 from wmr_mujoco.analytic import whipple
-from wmr_mujoco.loop.control.whipple_lean import STATE_KEYS, BrysonWeights, WhippleLean, input_matrix
+from wmr_mujoco.loop.control.whipple_lean import (
+    STATE_KEYS,
+    BrysonWeights,
+    WhippleLean,
+    input_matrix,
+)
 
 SPEEDS = (2.0, 3.0)
 PUSH = np.array([0.0, 0.0, 0.5, 0.0])  # the 0.5 rad/s lean-rate push

@@ -176,10 +176,12 @@ def run(robot: Robot, controller: Controller, path: Path, start: np.ndarray, sec
 def compare(spec: RobotSpec, controller_name: str, path: Path,
             offset: tuple[float, float, float] = (0.0, 0.0, 0.0),
             params: RobotParams | None = None, control_period: float = PERIOD,
-            robots: dict[str, Robot] | None = None) -> Comparison:
+            robots: dict[str, Robot] | None = None,
+            seconds: float | None = None) -> Comparison:
     """One task on both backends from the same start (module docstring).
 
-    ``robots``: the two stepped robots by backend to reuse (None: built here).
+    ``robots``: the two stepped robots by backend to reuse (None: built here);
+    ``seconds``: the run's length (None: :func:`duration`, the whole path).
 
     Raises:
         ValueError: a controller that cannot drive the robot or follows no path, or a
@@ -199,6 +201,7 @@ def compare(spec: RobotSpec, controller_name: str, path: Path,
     runs = {}
     for backend in ("mujoco", "kinematic"):
         controller = registry.build(controller_name, spec.command.names, p)
+        length = duration(controller, path, registry.SPEED) if seconds is None else seconds
         runs[backend] = run(robots[backend], controller, path, start_pose(path, offset),
-                            duration(controller, path, registry.SPEED))
+                            length)
     return Comparison(runs["mujoco"], runs["kinematic"])
