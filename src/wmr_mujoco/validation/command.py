@@ -125,7 +125,7 @@ class RateCommand(CommandMap):
         adjust: ``(adapter, u, φ) -> u``, where a command channel is not the adapter's
             input (the tricycle's speed of the rear-axle midpoint, the adapter's the
             driven wheel's); ``φ`` are the servo channels' steering targets at the start
-            of the period (None: the command is the input).
+            of the period, an array or a list of floats (None: the command is the input).
     """
 
     kinematics: Callable[[RobotParams | None], Adapter] | None = None
@@ -155,11 +155,14 @@ class RateCommand(CommandMap):
         return self._inputs(adapter, np.asarray(command, float).tolist(), targets, period,
                             channels)
 
-    def _inputs(self, adapter: Adapter, values: list[float], targets: np.ndarray,
+    def _inputs(self, adapter: Adapter, values: list[float], targets: np.ndarray | list[float],
                 period: float, channels: list[tuple[int, float]]) -> np.ndarray:
-        """:meth:`inputs` of the command ``values``; ``channels``: ``(channel, ω_max)``."""
+        """:meth:`inputs` of the command ``values``; ``channels``: ``(channel, ω_max)``.
+
+        ``targets``: the steering targets, an array or (a control step's) a list of floats.
+        """
         if channels:
-            phi = targets.tolist()
+            phi = targets if type(targets) is list else targets.tolist()
             for k, (channel, limit) in enumerate(channels):
                 values[channel] = servo_rate(values[channel], phi[k], period, limit)
         u = np.array(values)
@@ -247,8 +250,8 @@ class RateCommand(CommandMap):
                 if seen[0] is not data:
                     seen[0], seen[1] = data, data.act
                 act = seen[1].tolist()  # type: ignore[union-attr]
-                u = self._inputs(adapter, command.tolist(),
-                                 np.array([act[i] for i in acts_list]), period, channels)
+                u = self._inputs(adapter, command.tolist(), [act[i] for i in acts_list],
+                                 period, channels)
             if w is not None:
                 np.matmul(w, u, out=ctrl)  # W u, written in place
                 return
