@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from wmr_mujoco.loop.control import registry
+from wmr_mujoco.control import registry
 from wmr_mujoco.loop.control.paths import Path, make_path
 from wmr_mujoco.loop.tasks import tracking
 from wmr_mujoco.loop.tasks.tracking import (

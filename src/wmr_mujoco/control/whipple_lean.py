@@ -1,10 +1,10 @@
-"""The public names of :mod:`wmr_mujoco.loop.control.whipple_lean`, importable from here.
+"""The public names of :mod:`wmr_mujoco.robots.whipple.lean`, importable from here.
 
-The controllers and paths live below the registry (:mod:`wmr_mujoco.loop`), so that
-validation scenarios close loops with them.
+The law reads the Whipple bicycle's own model, so it lives in the robot's folder; its
+registry entry hands it to the balancing scenarios (``Balance.law``).
 """
 
-from wmr_mujoco.loop.control.whipple_lean import (
+from wmr_mujoco.robots.whipple.lean import (
     STATE_KEYS,
     BrysonWeights,
     WhippleLean,

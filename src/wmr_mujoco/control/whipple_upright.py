@@ -1,6 +1,7 @@
 """The Whipple bicycle kept upright by name, and its seeded family (``docs/control.md``).
 
-The runs are :mod:`wmr_mujoco.loop.tasks.upright`'s (re-exported here).
+The runs are :mod:`wmr_mujoco.loop.tasks.upright`'s on the Whipple bicycle's registry
+entry (its pushed start, LQR and linear model: :mod:`wmr_mujoco.robots.whipple.lean`).
 """
 
 from __future__ import annotations
@@ -10,18 +11,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from wmr_mujoco.loop.tasks import upright
-from wmr_mujoco.loop.tasks.upright import (
-    DURATION,
-    FALLEN,
-    PERIOD,
-    PUSH,
-    PUSH_RANGE,
-    SPEED_RANGE,
-    SPEEDS,
-    Upright,
-    linear,
-)
+from wmr_mujoco.loop.tasks.upright import DURATION, Upright
 from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple.lean import PERIOD, PUSH, PUSH_RANGE, SPEED_RANGE, SPEEDS
+from wmr_mujoco.robots.whipple.stability import FALLEN
 
 __all__ = ["DURATION", "FALLEN", "PERIOD", "PUSH", "PUSH_RANGE", "SPEEDS", "SPEED_RANGE",
            "Upright", "UprightFamily", "draw", "family", "linear", "physics"]
@@ -37,6 +30,17 @@ def physics(speed: float, push: float = PUSH, controlled: bool = True,
     from wmr_mujoco.robots import get_spec
 
     return upright.physics(get_spec(ROBOT), speed, push, controlled, params, duration, period)
+
+
+def linear(speed: float, push: float = PUSH, controlled: bool = True,
+           params: WhippleParams | None = None, duration: float = DURATION,
+           period: float = PERIOD) -> Upright:
+    """:func:`wmr_mujoco.loop.tasks.upright.linear` on the Whipple bicycle."""
+    from wmr_mujoco.robots import get_spec
+
+    run = upright.linear(get_spec(ROBOT), speed, push, controlled, params, duration, period)
+    assert run is not None  # the Whipple entry has its linear model
+    return run
 
 
 def draw(k: int) -> tuple[float, float]:

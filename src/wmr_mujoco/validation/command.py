@@ -25,6 +25,7 @@ from __future__ import annotations
 import abc
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -42,6 +43,40 @@ Controller = Callable[[mujoco.MjData, np.ndarray, float, np.ndarray], None]
 #: rolling at ``speed`` m/s with a sideways push, a lean rate ``lean_rate`` rad/s
 #: (``data.time`` 0): the start of a balancing robot's upright scenarios.
 Pushed = Callable[[mujoco.MjModel, mujoco.MjData, "RobotParams | None", float, float], None]
+#: ``law(speed, params)``: a feedback law ``law(state, None, t) -> command`` (the robot's
+#: natural command) that keeps the robot upright riding at ``speed``.
+BalanceLaw = Callable[[float, "RobotParams | None"], Callable[[Any, None, float], np.ndarray]]
+#: ``linear(speed, push, controlled, params, duration, period) -> leans``: the lean angle
+#: after every period of the robot's linear model from the push, the law on (or the
+#: torques zero), until it passes the fall threshold.
+LinearLeans = Callable[[float, float, bool, "RobotParams | None", float, float], np.ndarray]
+
+
+@dataclass(frozen=True)
+class Balance:
+    """How a robot that cannot stand still is pushed and kept upright (its own data).
+
+    Attributes:
+        pushed: its pushed start (:data:`Pushed`).
+        law: its balancing law (:data:`BalanceLaw`).
+        speeds: the riding speeds its upright claim is made at, m/s.
+        push: the nominal push, a lean rate, rad/s.
+        push_range: the range of push sizes drawn (the sign drawn too), rad/s.
+        period: the law's control period, s.
+        fallen: the lean past which it has fallen, rad.
+        lean: the key of the lean angle in the command map's extras.
+        linear: its linear model under the same law (:data:`LinearLeans`; None: none).
+    """
+
+    pushed: Pushed
+    law: BalanceLaw
+    speeds: tuple[float, ...]
+    push: float
+    push_range: tuple[float, float]
+    period: float
+    fallen: float
+    lean: str = "lean"
+    linear: LinearLeans | None = None
 
 
 @dataclass(frozen=True)
@@ -58,9 +93,9 @@ class CommandMap(abc.ABC):
             0 for a robot that cannot stand still, the Whipple bicycle).
         keyframe: keyframe a reset starts from (None: the model's rest pose ``qpos0``).
         extras: robot-specific readings of the MuJoCo state (None: none).
-        pushed: a balancing robot's pushed start (:data:`Pushed`; None: the robot stands
-            by itself). With it, the validation closes the balancing loop
-            (:mod:`wmr_mujoco.loop.tasks.families`).
+        balance: how a robot that cannot stand still is pushed and kept upright
+            (:class:`Balance`; None: it stands by itself). With it, the validation closes
+            the balancing loop (:mod:`wmr_mujoco.loop.tasks.families`).
     """
 
     names: tuple[str, ...]
@@ -70,7 +105,7 @@ class CommandMap(abc.ABC):
     settle: float = 0.5
     keyframe: str | None = None
     extras: Extras | None = None
-    pushed: Pushed | None = None
+    balance: Balance | None = None
 
     def __post_init__(self) -> None:
         if len(self.names) != len(self.units):

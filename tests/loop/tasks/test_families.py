@@ -38,7 +38,7 @@ def test_the_registry_adds_the_families_with_at_least_twenty_draws() -> None:
     assert families.BRACKET_NAME in names["disc"]
     assert families.tracking_name("holonomic", "figure_eight") in names["omni3"]
     assert families.tracking_name("stanley", "lane_change") in names["bicycle"]
-    assert [families.upright_name(v) for v in upright.SPEEDS] == [
+    assert [families.upright_name(v) for v in (3.0, 2.0)] == [
         n for n in names["whipple"] if n.startswith("upright")]
     for spec in ROBOTS.values():
         for s in families.loop_scenarios(spec):
@@ -101,7 +101,7 @@ def test_a_bracket_member_on_the_physics_and_the_kinematic_backend() -> None:
 def test_the_whipple_bicycle_stays_upright_and_falls_without_the_law() -> None:
     s = ROBOTS["whipple"].scenario(families.upright_name(2.0))
     got = metrics(s)  # the nominal member: 0.5 rad/s push at 2 m/s
-    assert got["peak lean, physics"].value < upright.FALLEN
+    assert got["peak lean, physics"].value < ROBOTS["whipple"].command.balance.fallen
     assert got["upright time, physics"].value == pytest.approx(upright.DURATION)
     # Below the weave speed the uncontrolled bicycle falls well within the 10 s.
     assert got["upright time, torques 0"].value < upright.DURATION / 2

@@ -4,6 +4,10 @@ A robot's command kind is read from its command channel names (``robot.command_s
 carried by its registry entry), never from its name: ``(v, omega)`` is a unicycle,
 ``(v, steer)`` a car, ``(u, v, r)`` a holonomic base, ``(rear_torque, steer_torque)``
 the Whipple bicycle. A car's wheelbase is its parameters' ``wheelbase``.
+
+The planar laws are here; a law that reads one robot's own model (the Whipple bicycle's
+LQR, :mod:`wmr_mujoco.robots.whipple.lean`) lives with that robot and is added by name
+with :func:`register` (:mod:`wmr_mujoco.control.registry` adds ``whipple_lean``).
 """
 
 from __future__ import annotations
@@ -17,7 +21,6 @@ from wmr_mujoco.loop.control.holonomic import HolonomicPose
 from wmr_mujoco.loop.control.kanayama import Kanayama
 from wmr_mujoco.loop.control.pure_pursuit import PurePursuit
 from wmr_mujoco.loop.control.stanley import Stanley
-from wmr_mujoco.loop.control.whipple_lean import WhippleLean
 from wmr_mujoco.models.params import RobotParams
 
 #: Command channel names -> the command kind.
@@ -65,14 +68,18 @@ CONTROLLERS: dict[str, Factory] = {
     "kanayama": lambda kind, p, v: Kanayama(
         wheelbase=_wheelbase(p) if kind is CommandKind.CAR else None),
     "holonomic": lambda kind, p, v: HolonomicPose(),
-    "whipple_lean": lambda kind, p, v: WhippleLean(speed=v, params=p),
 }
 #: The kinds each controller can drive.
 SUPPORTS: dict[str, tuple[CommandKind, ...]] = {
     "go_to_pose": GoToPose.kinds, "pure_pursuit": PurePursuit.kinds, "stanley": Stanley.kinds,
     "kanayama": Kanayama.kinds, "holonomic": HolonomicPose.kinds,
-    "whipple_lean": WhippleLean.kinds,
 }
+
+
+def register(name: str, factory: Factory, kinds: tuple[CommandKind, ...]) -> None:
+    """Add a controller by name (again: replaced), building for the command ``kinds``."""
+    CONTROLLERS[name] = factory
+    SUPPORTS[name] = tuple(kinds)
 
 
 def check_controller(name: str) -> str:

@@ -17,9 +17,9 @@ from __future__ import annotations
 from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
-from wmr_mujoco.robots.whipple import eigen, stability
+from wmr_mujoco.robots.whipple import eigen, lean, stability
 from wmr_mujoco.robots.whipple.rolling import NAME, compile_model, pushed, readings
-from wmr_mujoco.validation.command import TorqueCommand
+from wmr_mujoco.validation.command import Balance, TorqueCommand
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
 
 
@@ -53,7 +53,10 @@ SCENARIOS = (
 COMMAND = TorqueCommand(("rear_torque", "steer_torque"), ("N·m", "N·m"),
                         wheels=("rear_wheel", "front_wheel"), steers=("steer",),
                         settle=0.0, keyframe="rolling", extras=readings,
-                        actuators=("rear_torque", "steer_torque"), pushed=pushed)
+                        actuators=("rear_torque", "steer_torque"),
+                        balance=Balance(pushed, lean.law, lean.SPEEDS, lean.PUSH,
+                                        lean.PUSH_RANGE, lean.PERIOD, stability.FALLEN,
+                                        linear=lean.linear_leans))
 
 SPEC = RobotSpec(
     name=NAME,

@@ -25,6 +25,12 @@ riding speed ``v`` by a proportional law with time constant ``τ_v``,
 
 ``u`` the measured forward speed and ``m_e`` the longitudinal inertia seen at the rear
 contact (mass plus both wheels' spin inertia): the speed error decays as ``e^{−t/τ_v}``.
+
+The law is the robot's own (it reads the robot's linear model): the registry entry hands
+it to the generic balancing scenarios (``Balance.law``, :func:`law`), with the linear
+model under the same law (:func:`linear_leans`: ``ẋ = A(v) x + B T_δ`` from
+``x₀ = (0, 0, φ̇₀, 0)``, the law held over each control period, exact zero-order-hold
+discretisation ``[Φ Γ; 0 I] = exp([A B; 0 0] T)``).
 """
 
 from __future__ import annotations
@@ -32,14 +38,22 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import solve_continuous_are
+from scipy.linalg import expm, solve_continuous_are
 
 from wmr_mujoco.analytic import whipple
 from wmr_mujoco.loop.control.base import CommandKind, Controller, StateLike, positive
+from wmr_mujoco.models.params import params_or_default
 from wmr_mujoco.models.params_whipple import DEFAULT_PARAMS, WhippleParams
+from wmr_mujoco.robots.whipple.stability import FALLEN
 
 #: The state the law reads from ``RobotState.extra``.
 STATE_KEYS = ("lean", "steer", "lean_rate", "steer_rate")
+#: Speeds of the upright claim, m/s (below the weave speed: it falls uncontrolled); the
+#: nominal push, rad/s; the drawn push sizes, rad/s; the drawn speeds of the study, m/s.
+SPEEDS, PUSH, PUSH_RANGE, SPEED_RANGE = (3.0, 2.0), 0.5, (0.25, 0.75), (2.0, 3.0)
+#: Control period, s (the closed loop's fastest pole, ≈ −43 1/s, moves by λT = 0.09 per
+#: period).
+PERIOD = 0.002
 
 
 @dataclass(frozen=True)
@@ -130,3 +144,32 @@ class WhippleLean(Controller):
         rear = self.speed_gain * (self.speed - float(state.twist[0]))
         return np.array([float(np.clip(rear, -self.max_torque, self.max_torque)),
                          self.torque(x)])
+
+
+def law(speed: float, params: WhippleParams | None) -> WhippleLean:
+    """The balancing law at ``speed`` (``Balance.law`` of the registry entry)."""
+    return WhippleLean(speed, params_or_default(params, WhippleParams))
+
+
+def linear_leans(speed: float, push: float, controlled: bool, params: WhippleParams | None,
+                 duration: float, period: float) -> np.ndarray:
+    """Leans of the linearised benchmark after the push, every period (module docstring).
+
+    Stops after the first lean past :data:`~wmr_mujoco.robots.whipple.stability.FALLEN`.
+    """
+    p = params_or_default(params, WhippleParams)
+    mats = whipple.matrices(p)
+    a, b = whipple.state_matrix(positive("speed", speed), mats), input_matrix(mats)
+    big = np.zeros((5, 5))
+    big[:4, :4], big[:4, 4:] = a * period, b * period
+    e = expm(big)
+    phi, gamma = e[:4, :4], e[:4, 4]
+    controller = WhippleLean(speed, p)
+    x = np.array([0.0, 0.0, push, 0.0])
+    leans = [0.0]
+    for _ in range(round(positive("duration", duration) / period)):
+        x = phi @ x + gamma * (controller.torque(x) if controlled else 0.0)
+        leans.append(x[0])
+        if abs(x[0]) > FALLEN:
+            break
+    return np.array(leans)
