@@ -160,13 +160,10 @@ class MujocoState(RobotState):
                  qpos: np.ndarray, wheel_rates: np.ndarray, pairs: np.ndarray,
                  extra: MappingProxyType[str, float]) -> None:
         # Written into __dict__ as the frozen dataclass's own __init__ does; few Python
-        # containers per state (the garbage collector tracks each one in the history).
+        # containers per state (the garbage collector tracks each one in the history),
+        # and three keys: a small dict is never resized while the state is recorded.
         fields = self.__dict__
-        fields["_reader"] = reader
-        fields["_time"] = time
-        fields["_pose_twist"] = pose_twist
-        fields["_qpos"] = qpos
-        fields["_pairs"] = pairs
+        fields["_raw"] = (reader, time, pose_twist, qpos, pairs)
         fields["wheel_rates"] = wheel_rates
         fields["extra"] = extra
 
@@ -178,20 +175,21 @@ class MujocoState(RobotState):
     def __getattr__(self, name: str) -> np.ndarray:
         """Compute a field on its first access (later ones find it in ``__dict__``)."""
         fields = self.__dict__
-        reader = fields.get("_reader")
-        if reader is None or name not in _LAZY:
+        raw = fields.get("_raw")
+        if raw is None or name not in _LAZY:
             raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        reader, time, pose_twist, qpos, pairs = raw
         if name == "time":
-            fields["time"] = np.array(fields["_time"])
+            fields["time"] = np.array(time)
         elif name in ("pose", "twist"):
-            both = np.array(fields["_pose_twist"])  # one array, two views
+            both = np.array(pose_twist)  # one array, two views
             fields["pose"], fields["twist"] = both[:3], both[3:]
         elif name == "steer_angles":
-            fields[name] = fields["_qpos"][reader.steer_qpos] if reader.nsteer else _EMPTY
+            fields[name] = qpos[reader.steer_qpos] if reader.nsteer else _EMPTY
         else:
             out = [False] * (reader.nwheel + 1)
             owner = reader.geom_wheel_list
-            for g1, g2 in fields["_pairs"].tolist():
+            for g1, g2 in pairs.tolist():
                 out[owner[g1]] = out[owner[g2]] = True
             fields[name] = np.array(out[:reader.nwheel])
         return fields[name]
