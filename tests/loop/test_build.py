@@ -32,6 +32,7 @@ def test_a_spec_the_registry_does_not_know_is_driven_like_the_registered_one() -
 
 @pytest.mark.parametrize(("name", "expected"), [
     ("diffdrive", ["mujoco", "kinematic"]), ("mecanum4", ["mujoco", "kinematic", "dynamic"]),
+    ("omni3", ["mujoco", "kinematic", "dynamic"]),
     ("whipple", ["mujoco"]), ("disc_free", [])])
 def test_backends_lists_what_each_robot_has(name: str, expected: list[str]) -> None:
     assert backends(ROBOTS[name]) == expected

@@ -29,7 +29,8 @@ def make(robot: str, backend: str = "mujoco", control_period: float = 0.02,
             robot but ``disc_free``, which has no actuators).
         backend: ``"mujoco"`` (contact physics), ``"kinematic"`` (the robot's analytic
             kinematic model, the same natural commands) or ``"dynamic"`` (its Lagrange
-            model under wheel torques, where it has one with a planar pose: mecanum4).
+            model under wheel torques, where it has one with a planar pose: omni3,
+            mecanum4).
         control_period: seconds each :meth:`~Robot.step` holds its command; a multiple
             of the model's timestep.
         params: the robot's parameters (None: the checked-in model).
