@@ -12,8 +12,8 @@ import numpy as np
 
 from wmr_mujoco.loop.tasks import upright
 from wmr_mujoco.loop.tasks.upright import DURATION, Upright
-from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.whipple.lean import PERIOD, PUSH, PUSH_RANGE, SPEED_RANGE, SPEEDS
+from wmr_mujoco.robots.whipple.params import WhippleParams
 from wmr_mujoco.robots.whipple.stability import FALLEN
 
 __all__ = ["DURATION", "FALLEN", "PERIOD", "PUSH", "PUSH_RANGE", "SPEEDS", "SPEED_RANGE",

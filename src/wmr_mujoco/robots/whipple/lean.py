@@ -1,6 +1,6 @@
 """Steer into the lean: keeping the Whipple bicycle upright below its weave speed.
 
-The linearised Whipple bicycle (Meijaard et al. 2007; :mod:`wmr_mujoco.analytic.whipple`)
+The linearised Whipple bicycle (Meijaard et al. 2007; :mod:`wmr_mujoco.robots.whipple.analytic`)
 with the steer torque ``T_δ`` as input, state ``x = (φ, δ, φ̇, δ̇)`` (lean and steer,
 positive to the right):
 
@@ -40,10 +40,10 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import expm, solve_continuous_are
 
-from wmr_mujoco.analytic import whipple
 from wmr_mujoco.loop.control.base import CommandKind, Controller, StateLike, positive
 from wmr_mujoco.models.params import params_or_default
-from wmr_mujoco.models.params_whipple import DEFAULT_PARAMS, WhippleParams
+from wmr_mujoco.robots.whipple import analytic as whipple
+from wmr_mujoco.robots.whipple.params import DEFAULT_PARAMS, WhippleParams
 from wmr_mujoco.robots.whipple.stability import FALLEN
 
 #: The state the law reads from ``RobotState.extra``.
