@@ -48,7 +48,9 @@ SCENARIOS = (
 
 #: Driven by its own actuators, the rear-wheel and steer torques. It cannot stand still:
 #: a reset starts it rolling upright at the ``rolling`` keyframe's speed (inside the
-#: self-stable range), with no settling.
+#: self-stable range), with no settling. Its balancing data (pushed start, LQR, linear
+#: model: :mod:`.lean`) give it the upright scenarios at 3 and 2 m/s
+#: (:mod:`wmr_mujoco.loop.tasks.families`).
 COMMAND = TorqueCommand(("rear_torque", "steer_torque"), ("N·m", "N·m"),
                         wheels=("rear_wheel", "front_wheel"), steers=("steer",),
                         settle=0.0, keyframe="rolling", extras=readings,
