@@ -274,8 +274,12 @@ class RateCommand(CommandMap):
             model.actuator(s.actuator).id, 0]] for s in self.servo], dtype=int)
 
         acts_list = acts.tolist()
-        #: The last ``data`` seen and its ``act`` array (a new view on every attribute read).
-        seen: list[object] = [None, None]
+        #: The analytic state's steering angles and their ``qpos`` rows.
+        angles = list(zip(states, joints.tolist(), strict=True))
+        state = rest.copy()
+        #: The last ``data`` seen and its ``act`` and ``qpos`` arrays (a new view on every
+        #: attribute read).
+        seen: list[object] = [None, None, None, None]
 
         def controller(data: mujoco.MjData, command: np.ndarray, period: float,
                        ctrl: np.ndarray) -> None:
@@ -292,8 +296,12 @@ class RateCommand(CommandMap):
                 return
             x = rest
             if self.state_dependent:
-                x = rest.copy()
-                x[states] = data.qpos[joints]
+                if seen[2] is not data:
+                    seen[2], seen[3] = data, data.qpos
+                q = seen[3].tolist()  # type: ignore[union-attr]
+                x = state  # the controller's own buffer: the rest state but the angles
+                for k, j in angles:
+                    x[k] = q[j]
             ctrl[:] = adapter.controls(u, x)
 
         return controller
