@@ -25,10 +25,11 @@ from wmr_mujoco.analytic.checks import positive
 
 def _k(steer: float, track: float, wheelbase: float) -> float:
     """``k = w tan φ / (2ℓ)``; the checks only on a failing value (a control step calls it)."""
-    if not (0.0 < track < math.inf and 0.0 < wheelbase < math.inf):
+    if type(track) is not float or type(wheelbase) is not float or not (
+            0.0 < track < math.inf and 0.0 < wheelbase < math.inf):
         positive("track", track)
         positive("wheelbase", wheelbase)
-    return track / (2.0 * wheelbase) * math.tan(steer)
+    return float(track) / (2.0 * float(wheelbase)) * math.tan(steer)
 
 
 def icr_radius(steer: float, wheelbase: float) -> float:
