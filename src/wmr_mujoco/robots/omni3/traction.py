@@ -1,10 +1,14 @@
 """omni3's traction limit: the torque at which a wheel starts to slip (issue 16).
 
-Prediction (:func:`predicted_slip_torque`): at rest, torques ``τ = s · pattern`` give
+Prediction (issue 24, :func:`model_onsets`): the hybrid model with slip at μ N on the
+same ramp from the same measured start, read the same way; its loads sit at the contact
+points and include the heave (:mod:`~wmr_mujoco.robots.roller_wheels.omni_heave`), so the
+onset follows the wheels' phase. Quasi-static reference (:func:`predicted_slip_torque`,
+reported, and the ramp's centre): at rest, torques ``τ = s · pattern`` give
 rolling-wheel tractions ``F_t = (τ − I_w H ν̇)/r`` with ``ν̇ = (P + I_w HᵀH)⁻¹ Hᵀ τ``
 (mean lever L) and normal loads N from the robot's balance
-(:meth:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid.normal_loads`); both are affine in
-s, so each wheel's onset solves ``s |F₁| = μ (N₀ + s N₁)``.
+(:meth:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid.normal_loads`); both are
+affine in s, so each wheel's onset solves ``s |F₁| = μ (N₀ + s N₁)``.
 
 Measurement (:func:`measure_slip_onset`): ONE run in torque mode whose scale ramps
 linearly, ``s(t) = s₀ + ṡ t``, from rest. The slip speed of wheel i,
