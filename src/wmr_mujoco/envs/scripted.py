@@ -23,7 +23,7 @@ The controller is chosen by the command space's channel names (never by robot na
   ``Q = diag(10, 10, 1, 1)``, ``R = 0.1``; and a speed loop ``T_r = k_v (v* − u)``.
 
 GoToGoal (non-holonomic) follows a cubic Hermite path from the start pose to the goal pose
-(:func:`~wmr_mujoco.envs.paths.hermite_path`), so the goal is reached with its heading.
+(:func:`~wmr_mujoco.control.paths.hermite_path`), so the goal is reached with its heading.
 """
 
 from __future__ import annotations
@@ -35,8 +35,8 @@ import numpy as np
 from scipy.linalg import expm, solve_discrete_are
 
 from wmr_mujoco.analytic import whipple as analytic
+from wmr_mujoco.control.paths import Path, extend, hermite_path
 from wmr_mujoco.envs.episode import Episode
-from wmr_mujoco.envs.paths import Path, hermite_path
 from wmr_mujoco.envs.tasks import FollowPath, GoToGoal, StayUpright
 from wmr_mujoco.envs.tasks.base import to_body, wrap
 from wmr_mujoco.models.params_whipple import WhippleParams
@@ -76,7 +76,8 @@ class Scripted:
         self.speed = min(SPEED * episode.profile.scale, 0.5 * float(high[0]))
         self.lookahead = LOOKAHEAD * episode.profile.scale
         self.path: Path | None = None
-        self.index: int | None = None
+        #: Arc length of the last nearest point on the path (the search's hint), m.
+        self.s: float | None = None
         if self.kind == "carlike":
             self.wheelbase = float(params.wheelbase)
         if self.kind == "double":
@@ -87,12 +88,12 @@ class Scripted:
     def reset(self) -> None:
         """Plan the episode: the path to follow, or the balance gains at the target speed."""
         task, state = self.ep.task, self.ep.state
-        self.index = None
+        self.s = None
         if isinstance(task, FollowPath):
             self.path = task.path
         elif isinstance(task, GoToGoal):
-            self.path = hermite_path(np.asarray(state.pose, float), task.goal,
-                                     run_out=2.0 * self.ep.profile.scale)
+            self.path = extend(hermite_path(np.asarray(state.pose, float), task.goal),
+                               2.0 * self.ep.profile.scale)
         else:
             self.gain = lqr_gain(task.speed, self.ep.dt)
 
@@ -103,11 +104,12 @@ class Scripted:
         if self.kind == "holonomic" and isinstance(self.ep.task, GoToGoal):
             return self._holonomic_goal(state)
         pose = np.asarray(state.pose, float)
-        proj = self.path.project(pose[:2], self.index)
-        self.index = proj.index
-        target = to_body(pose, self.path.ahead(proj.index, np.array([self.lookahead]))[0])
+        near = (self.path.closest(pose[:2]) if self.s is None
+                else self.path.track(pose[:2], self.s))
+        self.s = near.s
+        target = to_body(pose, self.path.positions(near.s + self.lookahead))
         if self.kind == "holonomic":
-            e = wrap(proj.heading - pose[2])
+            e = wrap(near.heading - pose[2])
             return np.array([*(self.speed * target / max(np.linalg.norm(target), 1e-6)),
                              K_HEADING * e])
         kappa = 2.0 * target[1] / max(float(target @ target), 1e-6)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -38,9 +38,9 @@ class Field:
 EFFORT = 0.01
 
 
-def effort(action: np.ndarray) -> float:
-    """``−EFFORT mean(a²)`` of a normalised action."""
-    return -EFFORT * float(action @ action) / len(action)
+def effort(action: Sequence[float]) -> float:
+    """``−EFFORT mean(a²)`` of a normalised action (floats, or an array)."""
+    return -EFFORT * float(sum(a * a for a in action)) / len(action)
 
 
 def wrap(angle: float) -> float:
@@ -90,13 +90,16 @@ class Task(ABC):
         """Set the robot's initial motion after ``robot.reset`` (default: at rest)."""
 
     @abstractmethod
-    def observe(self, state: Any) -> np.ndarray:
-        """The task's observation block (float64, length :attr:`size`)."""
+    def observe(self, state: Any) -> list[float]:
+        """The task's observation block (:attr:`size` floats)."""
 
     @abstractmethod
-    def reward_terms(self, prev: Any, state: Any, action: np.ndarray, dt: float
-                     ) -> Mapping[str, float]:
-        """The reward terms of one step from ``prev`` to ``state`` under ``action``."""
+    def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                     ) -> dict[str, float]:
+        """The reward terms of one step from ``prev`` to ``state`` under ``action``.
+
+        A new dict every step (the environments hand it out in ``info``).
+        """
 
     @abstractmethod
     def outcome(self, state: Any) -> tuple[bool, bool]:

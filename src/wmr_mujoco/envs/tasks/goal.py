@@ -20,12 +20,12 @@ Success: ``d < position_tolerance`` and ``|e_ψ| < heading_tolerance``. Failure:
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, to_body, wrap
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, wrap
 
 BONUS = 10.0
 
@@ -61,38 +61,48 @@ class GoToGoal(Task):
         self._cache = None
         return np.array([0.0, 0.0, heading])
 
-    def errors(self, state: Any) -> tuple[float, float]:
-        """``(d, e_ψ)``: distance to the goal, m, and heading error, rad."""
+    def measure(self, state: Any) -> tuple[float, float, float, float]:
+        """``(x_g, y_g, d, e_ψ)``: body-frame goal, m, distance, m, heading error, rad.
+
+        Computed once per state (the last one is kept).
+        """
         if self._cache is not None and self._cache[0] is state:
             return self._cache[1]
         x, y, psi = state.pose.tolist()
         gx, gy, gpsi = self.goal.tolist()
-        out = math.hypot(gx - x, gy - y), wrap(gpsi - psi)
+        dx, dy = gx - x, gy - y
+        c, s = math.cos(psi), math.sin(psi)
+        out = c * dx + s * dy, c * dy - s * dx, math.hypot(dx, dy), wrap(gpsi - psi)
         self._cache = (state, out)
         return out
 
-    def observe(self, state: Any) -> np.ndarray:
-        """``(goal_xy, sin e_ψ, cos e_ψ, d)``."""
-        d, e = self.errors(state)
-        return np.array([*to_body(np.asarray(state.pose), self.goal[:2]), math.sin(e),
-                         math.cos(e), d])
+    def errors(self, state: Any) -> tuple[float, float]:
+        """``(d, e_ψ)``: distance to the goal, m, and heading error, rad."""
+        return self.measure(state)[2:]
 
-    def _potentials(self, state: Any) -> tuple[float, float]:
-        d, e = self.errors(state)
+    def observe(self, state: Any) -> list[float]:
+        """``(goal_xy, sin e_ψ, cos e_ψ, d)``."""
+        bx, by, d, e = self.measure(state)
+        return [bx, by, math.sin(e), math.cos(e), d]
+
+    def _potentials(self, d: float, e: float) -> tuple[float, float]:
         return -d / self.scale, -0.5 * abs(e) / math.pi * math.exp(-d / self.scale)
 
-    def reward_terms(self, prev: Any, state: Any, action: np.ndarray, dt: float
-                     ) -> Mapping[str, float]:
+    def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                     ) -> dict[str, float]:
         """Progress, heading, effort, success and failure terms (docstring)."""
-        (d0, h0), (d1, h1) = self._potentials(prev), self._potentials(state)
-        success, failure = self.outcome(state)
-        return {"progress": d1 - d0, "heading": h1 - h0,
-                "effort": effort(action),
-                "success": BONUS * success, "failure": -BONUS * failure}
+        d0, h0 = self._potentials(*self.measure(prev)[2:])
+        _, _, d, e = self.measure(state)
+        d1, h1 = self._potentials(d, e)
+        o = self.options
+        success = d < o["position_tolerance"] and abs(e) < o["heading_tolerance"]
+        return {"progress": d1 - d0, "heading": h1 - h0, "effort": effort(action),
+                "success": BONUS if success else 0.0,
+                "failure": -BONUS if d > o["arena"] else 0.0}
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """Success inside both tolerances; failure outside the arena."""
-        d, e = self.errors(state)
+        _, _, d, e = self.measure(state)
         o = self.options
         return (d < o["position_tolerance"] and abs(e) < o["heading_tolerance"],
                 d > o["arena"])
