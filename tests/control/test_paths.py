@@ -131,7 +131,7 @@ def test_hermite_path_joins_the_two_poses_and_extend_runs_on_straight():
     assert path.heading[0] == pytest.approx(start[2], abs=1e-12)
     longer = paths.extend(path, 0.5)
     assert longer.length == pytest.approx(path.length + 0.5, abs=1e-12)
-    np.testing.assert_allclose(longer.xy[-1], goal[:2] + [0.0, 0.5], atol=1e-12)
+    np.testing.assert_allclose(longer.xy[-1], goal[:2] + np.array([0.0, 0.5]), atol=1e-12)
     assert longer.at(path.length + 0.25).curvature == 0.0
 
 

@@ -150,7 +150,7 @@ class Path:
             t = min(1.0, max(0.0, ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy)))
             return (ax + t * dx - px) ** 2 + (ay + t * dy - py) ** 2, t
 
-        i = min(bisect.bisect_right(s, self._s(hint)) - 1, n - 1)
+        i = max(0, min(bisect.bisect_right(s, hint % s[-1] if self.closed else hint) - 1, n - 1))
         best, t = foot(i)
         for step in (1, -1):
             while self.closed or 0 <= i + step < n:

@@ -40,7 +40,7 @@ EFFORT = 0.01
 
 def effort(action: Sequence[float]) -> float:
     """``−EFFORT mean(a²)`` of a normalised action (floats, or an array)."""
-    return -EFFORT * float(sum(a * a for a in action)) / len(action)
+    return -EFFORT * float(sum([a * a for a in action])) / len(action)
 
 
 def wrap(angle: float) -> float:
