@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from wmr_mujoco.drive import make
-from wmr_mujoco.envs.profiles import Profile, profile
+from wmr_mujoco.envs.profiles import Profile, profile, robot_name
 from wmr_mujoco.envs.randomization import Band, Bands, Randomizer
 from wmr_mujoco.envs.tasks import Field, Task, task_class
 
@@ -45,9 +45,12 @@ def check_action(action: Any, n: int) -> list[float]:
         else:
             return out
     try:
-        a = np.asarray(action, dtype=float)
+        a = np.asarray(action)
+        if a.dtype.kind not in "biuf":  # complex, strings, objects: not real numbers
+            raise TypeError
+        a = a.astype(float)
     except (TypeError, ValueError):
-        raise ValueError(f"action {action!r} is not numeric; expected {n} numbers in "
+        raise ValueError(f"action {action!r} is not numeric (real); expected {n} numbers in "
                          "[-1, 1]") from None
     if a.shape != (n,):
         raise ValueError(f"action has shape {a.shape}; expected ({n},) in [-1, 1]")
@@ -78,6 +81,7 @@ class Episode:
                  randomize: bool | Bands | Mapping[str, Band | None] = False,
                  task_kwargs: Mapping[str, float] | None = None,
                  control_period: float | None = None) -> None:
+        robot = robot_name(robot)
         prof: Profile = profile(robot)
         if task not in prof.tasks:
             raise ValueError(f"robot {robot!r} has no task {task!r}; its tasks: "

@@ -71,16 +71,26 @@ def drivable() -> list[str]:
     return drive.drivable()
 
 
+def robot_name(robot: str) -> str:
+    """The registry name of a drivable robot (typed loosely, as ``get_spec`` takes it).
+
+    Raises:
+        ValueError: unknown robot, or one without actuators; the message lists valid ones.
+    """
+    name = get_spec(robot).name
+    if name not in drivable():
+        raise ValueError(f"robot {name!r} has no natural command (no actuators); robots "
+                         f"with environments: {', '.join(drivable())}")
+    return name
+
+
 def profile(robot: str) -> Profile:
     """The robot's profile (the default one, with a stem from its name, if not listed).
 
     Raises:
         ValueError: unknown robot, or one without actuators; the message lists valid ones.
     """
-    get_spec(robot)
-    if robot not in drivable():
-        raise ValueError(f"robot {robot!r} has no natural command (no actuators); robots "
-                         f"with environments: {', '.join(drivable())}")
-    if robot in PROFILES:
-        return PROFILES[robot]
-    return replace(DEFAULT, stem="".join(w.title() for w in robot.split("_")))
+    name = robot_name(robot)
+    if name in PROFILES:
+        return PROFILES[name]
+    return replace(DEFAULT, stem="".join(w.title() for w in name.split("_")))

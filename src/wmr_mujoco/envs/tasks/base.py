@@ -34,6 +34,10 @@ class Field:
     unit: str
 
 
+#: Longest distance a task spans, m (a goal's arena, a path's length): the paths are
+#: sampled every 2 cm, so this bounds an episode's path at 5·10⁴ points.
+MAX_LENGTH = 1000.0
+
 #: Weight of the effort term, ``effort = −EFFORT mean(a²)``.
 EFFORT = 0.01
 
@@ -110,8 +114,11 @@ class Task(ABC):
         return False
 
 
-def check_options(task: str, given: Mapping[str, Any], valid: Mapping[str, Any]) -> dict:
+def check_options(task: str, given: Mapping[str, Any], valid: Mapping[str, Any],
+                  lengths: tuple[str, ...] = ()) -> dict:
     """Merge ``given`` into the defaults ``valid``; every value a positive finite number.
+
+    The options named in ``lengths`` (m) must not exceed :data:`MAX_LENGTH`.
 
     Raises:
         ValueError: an unknown option (the valid names listed) or a bad value.
@@ -126,4 +133,7 @@ def check_options(task: str, given: Mapping[str, Any], valid: Mapping[str, Any])
                 math.isfinite(value) and value > 0):
             raise ValueError(f"task {task!r}: option {key}={value!r} must be a positive "
                              "finite number")
+        if key in lengths and value > MAX_LENGTH:
+            raise ValueError(f"task {task!r}: option {key}={value!r} m is above the "
+                             f"{MAX_LENGTH:g} m a task may span")
     return out

@@ -59,7 +59,7 @@ class FollowPath(Task):
         super().__init__(scale, max_curvature)
         o = check_options(self.name, options, {
             "time_limit": 30.0, "path_length": 4.0 * scale, "max_deviation": 0.5 * scale,
-            "max_curvature": max_curvature})
+            "max_curvature": max_curvature}, lengths=("path_length",))
         self.options = o
         self.time_limit = o["time_limit"]
         self.path: Path | None = None

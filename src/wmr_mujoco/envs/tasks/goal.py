@@ -41,10 +41,12 @@ class GoToGoal(Task):
         super().__init__(scale, max_curvature)
         o = check_options(self.name, options, {
             "time_limit": 20.0, "min_distance": 1.0 * scale, "max_distance": 2.5 * scale,
-            "position_tolerance": 0.1 * scale, "heading_tolerance": 0.3, "arena": 5.0 * scale})
-        if o["min_distance"] > o["max_distance"]:
-            raise ValueError(f"GoToGoal: min_distance={o['min_distance']} m is above "
-                             f"max_distance={o['max_distance']} m")
+            "position_tolerance": 0.1 * scale, "heading_tolerance": 0.3, "arena": 5.0 * scale},
+            lengths=("arena",))
+        if not o["min_distance"] <= o["max_distance"] < o["arena"]:
+            raise ValueError(f"GoToGoal: need min_distance <= max_distance < arena (a goal "
+                             f"outside the arena fails at once); got {o['min_distance']}, "
+                             f"{o['max_distance']}, {o['arena']} m")
         self.options = o
         self.time_limit = o["time_limit"]
         self.goal = np.zeros(3)
