@@ -186,3 +186,10 @@ def test_readme_example_runs_as_written():
     exec(compile(README_EXAMPLE, "README", "exec"), scope)
     assert scope["obs"].shape == (12,) and set(scope["info"]["reward_terms"]) >= {"progress"}
     scope["env"].close()
+
+
+def test_step_before_reset_is_refused():
+    # Registered without Gymnasium's order-enforcing wrapper: the environment refuses it.
+    env = gym.make("wmr/DiffDrive-GoToGoal-v0")
+    with pytest.raises(RuntimeError, match=r"call reset\(\) before step\(\)"):
+        env.step(np.zeros(2))
