@@ -4,7 +4,7 @@
 prints, for each Gymnasium environment (default: one GoToGoal per drivable robot, and the
 Whipple bicycle's StayUpright), the steps/s of
 
-* ``env.step`` (``gymnasium.make``, its wrappers included), resets included;
+* ``env``: ``env.step`` of ``gymnasium.make(id)`` (whatever wrappers it registers);
 * ``vector``: ``gymnasium.make_vec`` of ``--vector`` copies (``"sync"``: stepped one after
   the other in this process), counting every copy's steps;
 * ``drive``: the stepping API alone, ``robot.step(command)`` (:mod:`wmr_mujoco.drive`, the
