@@ -87,18 +87,16 @@ class GoToGoal(Task):
         bx, by, d, e = self.measure(state)
         return [bx, by, math.sin(e), math.cos(e), d]
 
-    def _potentials(self, d: float, e: float) -> tuple[float, float]:
-        return -d / self.scale, -0.5 * abs(e) / math.pi * math.exp(-d / self.scale)
-
     def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
                      ) -> dict[str, float]:
         """Progress, heading, effort, success and failure terms (docstring)."""
-        d0, h0 = self._potentials(*self.measure(prev)[2:])
+        _, _, d0, e0 = self.measure(prev)
         _, _, d, e = self.measure(state)
-        d1, h1 = self._potentials(d, e)
-        o = self.options
+        o, scale = self.options, self.scale
+        # Φ_ψ(s′) − Φ_ψ(s) with Φ_ψ = −½ (|e_ψ| / π) e^{−d/L}
+        heading = 0.5 / math.pi * (abs(e0) * math.exp(-d0 / scale) - abs(e) * math.exp(-d / scale))
         success = d < o["position_tolerance"] and abs(e) < o["heading_tolerance"]
-        return {"progress": d1 - d0, "heading": h1 - h0, "effort": effort(action),
+        return {"progress": (d0 - d) / scale, "heading": heading, "effort": effort(action),
                 "success": BONUS if success else 0.0,
                 "failure": -BONUS if d > o["arena"] else 0.0}
 
