@@ -45,6 +45,9 @@ ROLLER_BANDS = Bands(wheel_radius=None)
 PROFILES: dict[str, Profile] = {
     "diffdrive": Profile("DiffDrive", scale=1.0, max_curvature=1.5),
     "omni3": Profile("Omni3", scale=0.5, max_curvature=3.0, bands=ROLLER_BANDS),
+    # omni3's size; its wheels touch the floor through one low-friction capsule each.
+    "omni3_reduced": Profile("Omni3Reduced", scale=0.5, max_curvature=3.0,
+                             bands=ROLLER_BANDS),
     "mecanum4": Profile("Mecanum4", scale=1.0, max_curvature=1.5, bands=ROLLER_BANDS),
     # Planar model: its joints hold the frame level (no pitch), so wheels of different
     # radii would lift one of them off the floor (test_randomization checks the others).
@@ -63,7 +66,9 @@ PROFILES: dict[str, Profile] = {
                                    servo_gain=(0.9, 1.1))),
 }
 
-DEFAULT = Profile("")
+#: A robot not in the table: unit scale, and no wheel-radius band (its wheels may roll on
+#: rollers or other bodies, whose radius is not one geom's).
+DEFAULT = Profile("", bands=Bands(wheel_radius=None))
 
 
 def drivable() -> list[str]:
