@@ -52,7 +52,7 @@ PREVIOUS_DEFAULTS: Mapping[str, Mapping[str, float]] = {
     "bicycle": {"sim.floor_impedance": 0.0},
     "tricycle": {"sim.timestep": 0.002, "sim.floor_impedance": 0.0},
     "omni3": {"floor_impedance": 0.0, "sim.timestep": 0.001, "sim.contact_timeconst": 0.002},
-    "omni3_reduced": {"sim.timestep": 0.001, "sim.contact_timeconst": 0.002},
+    "omni3_reduced": {},
     "mecanum4": {"floor_impedance": 0.0, "sim.timestep": 0.004,
                  "sim.contact_timeconst": 0.008},
     "diffdrive": {"sim.timestep": 0.002, "sim.floor_impedance": 0.0},

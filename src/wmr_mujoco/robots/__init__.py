@@ -9,6 +9,8 @@ of one family share a family folder (``roller_wheels/``, ``steered/``). Generic 
 :data:`ROBOTS`, never by name, and nothing below this package imports it. Adding a robot
 is its own folder and one line in :data:`ROBOTS`; :func:`registered` adds one for a while
 (tests, a foreign model).
+Every entry gets the closed-loop scenario families that fit its command map
+(:func:`~wmr_mujoco.loop.tasks.families.with_loop_scenarios`).
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 
 from wmr_mujoco.choices import match_name
+from wmr_mujoco.loop.tasks.families import with_loop_scenarios
 from wmr_mujoco.robots import (
     bicycle,
     diffdrive,
@@ -36,8 +39,10 @@ from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 __all__ = ["ROBOTS", "Clip", "Picture", "RobotSpec", "get_spec", "register", "registered",
            "unregister"]
 
-#: Each entry with its "random steps" family where it applies (robots.floor_steps).
-ROBOTS: dict[str, RobotSpec] = {spec.name: with_floor_family(spec) for spec in (
+#: Each entry with the closed-loop families and its "random steps" family where they apply
+#: (wmr_mujoco.loop.tasks.families, robots.floor_steps).
+ROBOTS: dict[str, RobotSpec] = {spec.name: with_floor_family(with_loop_scenarios(spec))
+                                for spec in (
     disc.SPEC,
     disc_free.SPEC,
     bicycle.SPEC,
