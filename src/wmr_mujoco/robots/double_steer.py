@@ -22,8 +22,10 @@ from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.models.params_wheeled import DoubleSteerParams
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.command import RateCommand, Servo
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const, steer_to
 
@@ -67,10 +69,16 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
 SCENARIOS = (
     # Steering first (0.5 s at rest), then speed over a 0.5 s ramp: crabbing (both
     # wheels parallel, a translation) and turning about a near ICR (opposite angles).
+    # Families: speed and both steering angles by one factor ±20 % (one factor keeps
+    # the crab's angles equal and the tight turn's opposite), the length ±20 %.
     Scenario(NAME, "crab 0.5 rad", (const(0.4, 0.5), steer_to(0.5), steer_to(0.5)),
-             duration=2.5),
+             duration=2.5, family=Family(
+                 (var.speeds(), var.around(var.DURATION, 2.5)),
+                 var.KINEMATIC_DRAWS)),
     Scenario(NAME, "tight turn ±1 rad", (const(0.3, 0.5), steer_to(1.0), steer_to(-1.0)),
-             duration=3.0),
+             duration=3.0, family=Family(
+                 (var.speeds(), var.around(var.DURATION, 3.0)),
+                 var.KINEMATIC_DRAWS)),
 )
 
 #: Driven by ``(v₁, β₁, β₂)``: front wheel ground speed and both steering angles

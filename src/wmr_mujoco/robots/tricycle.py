@@ -22,8 +22,10 @@ from wmr_mujoco.models.builders import tricycle as builder
 from wmr_mujoco.models.params import RobotParams, TricycleParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.spec import Picture, RobotSpec
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose
 from wmr_mujoco.validation.command import RateCommand, Servo
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const, pulses, steer_to
@@ -102,11 +104,15 @@ TARGETS: Mapping[str, Target] = req.vehicle_targets(0.5)
 SCENARIOS = (
     # The driven wheel is the inner one in left turns: speed first, then steering, so
     # that the midpoint's acceleration v_L/(1 − k) stays below the traction limit.
-    *(Scenario(NAME, f"steady turn {phi:g} rad", (const(1.0, 1.0), steer_to(phi, 1.0)))
+    # Families: speed and steering (rate, so angle) ±20 %; a steady turn's length ±20 %.
+    *(Scenario(NAME, f"steady turn {phi:g} rad", (const(1.0, 1.0), steer_to(phi, 1.0)),
+               family=Family((var.channel(0), var.channel(1),
+                              var.around(var.DURATION, 10.0)), var.KINEMATIC_DRAWS))
       for phi in (0.2, 0.4, 0.6)),
     # Steer to +0.5 rad, one full circle (about 4.5 s), steer through to −0.5, a second.
     Scenario(NAME, "figure eight", (const(1.0, 1.0), pulses(
-        (1.0, 1.5, 1.0), (5.7, 6.7, -1.0))), duration=12.0),
+        (1.0, 1.5, 1.0), (5.7, 6.7, -1.0))), duration=12.0, family=Family(
+        (var.channel(0), var.channel(1)), var.KINEMATIC_DRAWS)),
 )
 
 def left_wheel_speed(adapter: TricycleKinematics, u: np.ndarray,

@@ -125,3 +125,16 @@ def duration(low: float, high: float) -> Vary:
 def lead_in(low: float, high: float) -> Vary:
     """Lead-in ramp in ``[low, high]`` seconds (below one time step: a step)."""
     return Vary(LEAD_IN, low, high, "s")
+
+
+#: Draws of every dynamic family (the project's rule: at least 20).
+DYNAMIC_DRAWS = 20
+#: Draws of a cheap kinematic family whose spread is shown small: the worst of
+#: :data:`DYNAMIC_DRAWS` draws within half its target (``python -m
+#: wmr_mujoco.bench.family_spread`` prints it for every such family).
+KINEMATIC_DRAWS = 5
+
+
+def around(name: str, nominal: float, fraction: float = 0.2, unit: str = "s") -> Vary:
+    """``name`` in ``nominal · (1 ± fraction)`` (e.g. a duration ±20 %)."""
+    return Vary(name, nominal * (1.0 - fraction), nominal * (1.0 + fraction), unit)

@@ -32,8 +32,10 @@ from wmr_mujoco.robots.roller_wheels import (
 )
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Probe, Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
@@ -50,6 +52,16 @@ TURN_DURATION = 10.0
 TORQUE_AHEAD = (0.04, 0.04, 0.04, 0.04)
 TORQUE_MIXED = (0.04, -0.01, 0.03, 0.0)
 TORQUE_DURATION = 2.0
+#: What a user would vary in a kinematic run: speeds and yaw rate ±20 %, the wheels'
+#: start angle over one roller pitch (the contact moves from roller to roller).
+KINEMATIC_FAMILY = Family((var.speeds(), var.roller_pitch(MecanumParams().rollers_per_wheel)),
+                          var.KINEMATIC_DRAWS)
+#: And in a torque run: the torques ±20 %, from a step or a ramp of up to 0.2 s, the
+#: run's length ±20 %, the start angle over one roller pitch.
+TORQUE_FAMILY = Family((var.speeds(), var.lead_in(0.0, 0.2),
+                        var.around(var.DURATION, TORQUE_DURATION),
+                        var.roller_pitch(MecanumParams().rollers_per_wheel)),
+                       var.DYNAMIC_DRAWS)
 
 TARGETS: Mapping[str, Target] = {
     mt.POSITION_PCT: req.position_pct(1.0, SOURCE),
@@ -70,7 +82,8 @@ TAGS = ((RAMP, "ramp"), (0.0, "step"))
 def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
     """The eight translations at 0.3 m/s (a ramp of ``ramp`` seconds; 0: a step)."""
     return tuple(Scenario(NAME, f"translate {deg}° ({tag})",
-                          twist_inputs(translation(deg), ramp), duration=TRANSLATE_DURATION)
+                          twist_inputs(translation(deg), ramp), duration=TRANSLATE_DURATION,
+                          family=KINEMATIC_FAMILY)
                  for deg in DIRECTIONS_DEG)
 
 
@@ -80,9 +93,10 @@ def turning(ramp: float, tag: str) -> tuple[Scenario, ...]:
     The first is the robot's first kinematic scenario: the bench's cruising controls.
     """
     return (Scenario(NAME, f"translate+rotate ({tag})",
-                     twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE), ramp), duration=TURN_DURATION),
+                     twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE), ramp), duration=TURN_DURATION,
+                     family=KINEMATIC_FAMILY),
             Scenario(NAME, f"rotate ({tag})", twist_inputs((0.0, 0.0, YAW_RATE), ramp),
-                     duration=TURN_DURATION))
+                     duration=TURN_DURATION, family=KINEMATIC_FAMILY))
 
 
 def kinematic_runs() -> tuple[Scenario, ...]:
@@ -96,12 +110,13 @@ def _scenarios() -> tuple[Scenario, ...]:
     for ramp, tag in TAGS:
         out.append(Scenario(NAME, f"8 translations ({tag})", kind=ScenarioKind.MEASUREMENT,
                             evaluate=Group(translations(ramp, tag)),
-                            description="eight kinematic runs, each judged over the run"))
+                            description="eight kinematic runs, each judged over the run",
+                            family=KINEMATIC_FAMILY))
         out += turning(ramp, tag)
     out += [Scenario(NAME, f"{dynamics.JUDGED_PREFIX}", tuple(const(t) for t in TORQUE_AHEAD),
-                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC),
+                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC, family=TORQUE_FAMILY),
             Scenario(NAME, "torque mixed", tuple(const(t) for t in TORQUE_MIXED),
-                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC),
+                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC, family=TORQUE_FAMILY),
             Scenario(NAME, "rolling-radius ripple", kind=ScenarioKind.MEASUREMENT,
                      evaluate=ripple.ripple,
                      description="collision geometry of wheel FL over one revolution")]

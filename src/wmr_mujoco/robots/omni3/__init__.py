@@ -38,8 +38,10 @@ from wmr_mujoco.robots.roller_wheels import (
 )
 from wmr_mujoco.robots.spec import Clip, RobotSpec
 from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Piecewise, Signal, const
@@ -139,12 +141,20 @@ def square_with_rotation(side: float = 0.6, speed: float = 0.24, yaw_rate: float
 #: Every dynamic run, simulated together once per parameter set (:mod:`.runs`).
 DYNAMIC_SPECS = (*dynamics.STEP_SPECS, *dynamics.TORQUE_SPECS, coasting.COAST_SPEC)
 
+#: What a user would vary in a kinematic run: speeds and yaw rate ±20 %, the wheels' start
+#: angle over one full roller pitch (both rows: the pattern repeats after ``2π / n`` for
+#: ``n`` rollers per row).
+KINEMATIC_FAMILY = Family((var.speeds(), var.roller_pitch(OmniParams().rollers_per_row)),
+                          var.KINEMATIC_DRAWS)
+
 SCENARIOS = (
-    *(Scenario(NAME, f"translate {deg}°", twist_inputs(translation(deg)))
-      for deg in DIRECTIONS_DEG),
-    Scenario(NAME, "rotate", twist_inputs((0.0, 0.0, YAW_RATE))),
-    Scenario(NAME, "translate+rotate", twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE))),
-    Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True),
+    *(Scenario(NAME, f"translate {deg}°", twist_inputs(translation(deg)),
+               family=KINEMATIC_FAMILY) for deg in DIRECTIONS_DEG),
+    Scenario(NAME, "rotate", twist_inputs((0.0, 0.0, YAW_RATE)), family=KINEMATIC_FAMILY),
+    Scenario(NAME, "translate+rotate", twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE)),
+             family=KINEMATIC_FAMILY),
+    Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True,
+             family=KINEMATIC_FAMILY),
     *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_step,
                duration=s.duration, description="rate servo stepped to a twist (no ramp): "
                "physics vs the hybrid model (servo law, torque limit) and the kinematics")
