@@ -10,6 +10,7 @@ Derivations: docs/mecanum.md.
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Mapping
 
 import mujoco
@@ -56,6 +57,9 @@ TORQUE_DURATION = 2.0
 #: start angle over one roller pitch (the contact moves from roller to roller).
 KINEMATIC_FAMILY = Family((var.speeds(), var.roller_pitch(MecanumParams().rollers_per_wheel)),
                           var.KINEMATIC_DRAWS)
+#: The eight translations together: their spread over the start angle is not small (the
+#: diagonals' worst position error moves by more than half the target), so 20 draws.
+GROUP_FAMILY = dataclasses.replace(KINEMATIC_FAMILY, draws=var.DYNAMIC_DRAWS)
 #: And in a torque run: the torques ±20 %, from a step or a ramp of up to 0.2 s, the
 #: run's length ±20 %, the start angle over one roller pitch.
 TORQUE_FAMILY = Family((var.speeds(), var.lead_in(0.0, 0.2),
@@ -69,10 +73,22 @@ TARGETS: Mapping[str, Target] = {
     ROLLER_RATE_PCT: Target.requirement(5.0, "accuracy asked of the roller model (as of "
                                              "omni3's rollers): spin rates within "
                                              "5 % of slide speed / ρ (median over contacts)"),
-    dynamics.VELOCITY_PCT: Target.requirement(3.0, "accuracy asked of the Lagrange model (as "
-                                                   "of omni3's under torque): "
-                                                   "body velocity within 3 % of the "
-                                                   "Lagrange model"),
+    # Open over the torque family: the Lagrange model's rollers touch the floor as a
+    # pitch-averaged line, while the physics' contact moves from roller to roller, so
+    # the wheels' start angle moves the velocity error (the report shows its spread).
+    dynamics.VELOCITY_PCT: Target.open(3.0, "accuracy asked of the Lagrange model (as of "
+                                            "omni3's under torque): body velocity within "
+                                            "3 % of the Lagrange model",
+                                       "the model averages the roller contact over the "
+                                       "roller pitch; over the wheels' start angle the "
+                                       "worst draws miss it (spread in the families "
+                                       "table)"),
+    # Open over the step translations' family: the step model averages the roller
+    # contact over its pitch too; the diagonal steps' worst draws miss 1 %.
+    kinematics.STEP_POSITION_PCT: Target.open(
+        1.0, SOURCE, "the step model averages the roller contact over the roller pitch; "
+        "over the wheels' start angle the diagonal steps' worst draws miss it (spread in "
+        "the families table)"),
 }
 
 
@@ -111,7 +127,7 @@ def _scenarios() -> tuple[Scenario, ...]:
         out.append(Scenario(NAME, f"8 translations ({tag})", kind=ScenarioKind.MEASUREMENT,
                             evaluate=Group(translations(ramp, tag)),
                             description="eight kinematic runs, each judged over the run",
-                            family=KINEMATIC_FAMILY))
+                            family=GROUP_FAMILY))
         out += turning(ramp, tag)
     out += [Scenario(NAME, f"{dynamics.JUDGED_PREFIX}", tuple(const(t) for t in TORQUE_AHEAD),
                      duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC, family=TORQUE_FAMILY),
