@@ -67,3 +67,15 @@ def test_batched_members_are_the_single_runs():
     assert res.members[0].scenario.draw != res.members[1].scenario.draw
     # The family's trace is its worst member's, the run plotted.
     assert any(res.trace is m.trace for m in res.members)
+
+
+def test_a_scenarios_own_target_replaces_the_robots():
+    """An open target on one scenario: its row is shown against it, not judged."""
+    from wmr_mujoco.validation import metrics as mt
+
+    spec = get_spec("diffdrive")
+    s = dataclasses.replace(spec.scenario("straight"), duration=1.0, family=None, targets={
+        mt.POSITION_PCT: Target.open(1e-6, "asked", "a bound nothing meets")})
+    row = next(r for r in run_scenario(spec, s).rows if r.unit == "% of path"
+               and r.metric == "worst position error")
+    assert row.open and row.passed is None and row.target == 1e-6 and row.verdict == "open"

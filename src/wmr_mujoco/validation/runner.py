@@ -283,8 +283,9 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     judge = spec.judge(s.kind)
     if judge is None:
         raise ValueError(f"robot {s.robot!r} has no judge for {s.kind.value} scenarios")
+    targets = {**spec.targets, **s.targets}  # a scenario's own targets replace the robot's
     probes: list[Probe] = [p for factory in spec.probes
-                           if (p := factory(s, model, adapter, spec.targets)) is not None]
+                           if (p := factory(s, model, adapter, targets)) is not None]
     trace.state_names, trace.state_units = adapter.state_names, adapter.state_units
     dt = model.opt.timestep
     nstep = len(prep.controls)
@@ -308,9 +309,9 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
         trace.time.append(data.time - s.settle)
         trace.sim.append(adapter.sim_state(model, data))
         trace.analytic.append(prep.analytic[k + 1])
-    metrics = judge(s, trace, adapter, spec.targets)
+    metrics = judge(s, trace, adapter, targets)
     if adapter.lateral_wheels:
-        metrics += slip_metrics(trace, adapter.lateral_wheels, spec.targets)
+        metrics += slip_metrics(trace, adapter.lateral_wheels, targets)
     for probe in probes:
         metrics += probe.metrics()
     return metrics

@@ -25,7 +25,7 @@ import numpy as np
 
 from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.validation.family import Family
-from wmr_mujoco.validation.metrics import Metric, Series
+from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.signals import Signal
 from wmr_mujoco.validation.variations import DURATION, envelope, is_generic, scale_factors
 
@@ -129,6 +129,8 @@ class Scenario:
         family: what a user would vary in it and how many draws are judged (None: the
             scenario is one run; see :mod:`wmr_mujoco.validation.family`).
         draw: the values of this member of the family (empty: the nominal scenario).
+        targets: targets that replace the robot's for this scenario's kinematic or dynamic
+            run, by key (e.g. an open target where only this scenario's family misses it).
     """
 
     robot: str
@@ -143,6 +145,8 @@ class Scenario:
     description: str = field(default="", compare=False)
     family: Family | None = field(default=None, compare=False)
     draw: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
+    targets: Mapping[str, Target] = field(default_factory=lambda: MappingProxyType({}),
+                                          compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kind", parse_choice(ScenarioKind, self.kind, "scenario kind"))

@@ -34,14 +34,7 @@ from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import collider, traction
 from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
-from wmr_mujoco.validation.metrics import (
-    POSITION_PCT,
-    Metric,
-    Target,
-    Trace,
-    pose_tracking,
-    rms,
-)
+from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking, rms
 from wmr_mujoco.validation.scenarios import Scenario
 
 #: Names of the kinematic model's pose in a step run's analytic state.
@@ -190,10 +183,6 @@ def heading_rms(trace: Trace) -> float:
     return rms(np.degrees(wrap_angle(tr["sim"][:, 2] - tr["analytic"][:, 2])))
 
 
-#: Target key of a step run's worst position error (else the robot's position target).
-STEP_POSITION_PCT = "worst position error % of path, step run"
-
-
 def judge_kinematic(scenario: Scenario, trace: Trace, adapter: MecanumKinematics,
                     targets: Mapping[str, Target]) -> list[Metric]:
     """Pose tracking against the judged model; the other models' errors beside it.
@@ -201,12 +190,9 @@ def judge_kinematic(scenario: Scenario, trace: Trace, adapter: MecanumKinematics
     Worst, RMS and final errors over the whole run
     (:func:`~wmr_mujoco.validation.metrics.pose_tracking`) and the RMS heading error,
     judged at the requirement: a ramped run against the kinematic model (the colliders'),
-    a step run against the step model (at :data:`STEP_POSITION_PCT` where the robot has
-    that target). Reported, not judged: for a step run the kinematic
+    a step run against the step model. Reported, not judged: for a step run the kinematic
     model's worst and RMS errors, and for every run the ideal Lynch & Park model's.
     """
-    if adapter.step is not None and STEP_POSITION_PCT in targets:
-        targets = {**targets, POSITION_PCT: targets[STEP_POSITION_PCT]}
     metrics = pose_tracking(scenario, trace, adapter, targets)
     metrics.append(Metric("RMS heading error", heading_rms(trace), "deg"))
     ideal = slice(3, 6) if adapter.step is None else slice(6, 9)
