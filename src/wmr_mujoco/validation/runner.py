@@ -160,7 +160,8 @@ def _evaluate(s: Scenario, params: RobotParams | None) -> ScenarioResult:
     assert s.evaluate is not None  # guaranteed by Scenario for this kind
     result = s.evaluate(s, params)
     trace = Trace(series=list(result.series))
-    return ScenarioResult(s, [Row.of(s.robot, s.name, m) for m in result.metrics], trace)
+    return ScenarioResult(s, [Row.of(s.robot, s.name, m) for m in s.opened(result.metrics)],
+                          trace)
 
 
 def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: int
@@ -283,9 +284,8 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     judge = spec.judge(s.kind)
     if judge is None:
         raise ValueError(f"robot {s.robot!r} has no judge for {s.kind.value} scenarios")
-    targets = {**spec.targets, **s.targets}  # a scenario's own targets replace the robot's
     probes: list[Probe] = [p for factory in spec.probes
-                           if (p := factory(s, model, adapter, targets)) is not None]
+                           if (p := factory(s, model, adapter, spec.targets)) is not None]
     trace.state_names, trace.state_units = adapter.state_names, adapter.state_units
     dt = model.opt.timestep
     nstep = len(prep.controls)
@@ -309,12 +309,12 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
         trace.time.append(data.time - s.settle)
         trace.sim.append(adapter.sim_state(model, data))
         trace.analytic.append(prep.analytic[k + 1])
-    metrics = judge(s, trace, adapter, targets)
+    metrics = judge(s, trace, adapter, spec.targets)
     if adapter.lateral_wheels:
-        metrics += slip_metrics(trace, adapter.lateral_wheels, targets)
+        metrics += slip_metrics(trace, adapter.lateral_wheels, spec.targets)
     for probe in probes:
         metrics += probe.metrics()
-    return metrics
+    return s.opened(metrics)
 
 
 def run_all(work: Sequence[Job], progress: Callable[[str], None] | None = None,

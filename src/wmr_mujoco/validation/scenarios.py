@@ -25,7 +25,7 @@ import numpy as np
 
 from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.validation.family import Family
-from wmr_mujoco.validation.metrics import Metric, Series, Target
+from wmr_mujoco.validation.metrics import Metric, Series
 from wmr_mujoco.validation.signals import Signal
 from wmr_mujoco.validation.variations import DURATION, envelope, is_generic, scale_factors
 
@@ -129,8 +129,9 @@ class Scenario:
         family: what a user would vary in it and how many draws are judged (None: the
             scenario is one run; see :mod:`wmr_mujoco.validation.family`).
         draw: the values of this member of the family (empty: the nominal scenario).
-        targets: targets that replace the robot's for this scenario's kinematic or dynamic
-            run, by key (e.g. an open target where only this scenario's family misses it).
+        open_targets: metric name -> reason, for the requirements this scenario's family
+            misses (its worst members): those metrics' targets become open
+            (:meth:`~wmr_mujoco.validation.targets.Target.opened`), shown, not judged.
     """
 
     robot: str
@@ -145,8 +146,8 @@ class Scenario:
     description: str = field(default="", compare=False)
     family: Family | None = field(default=None, compare=False)
     draw: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
-    targets: Mapping[str, Target] = field(default_factory=lambda: MappingProxyType({}),
-                                          compare=False)
+    open_targets: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}),
+                                            compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kind", parse_choice(ScenarioKind, self.kind, "scenario kind"))
@@ -201,6 +202,14 @@ class Scenario:
     def value(self, name: str, nominal: float) -> float:
         """The drawn value of a varied quantity, or ``nominal`` (the nominal scenario)."""
         return float(self.draw.get(name, nominal))
+
+    def opened(self, metrics: list[Metric]) -> list[Metric]:
+        """``metrics`` with the targets named in :attr:`open_targets` made open."""
+        if not self.open_targets:
+            return metrics
+        return [m._replace(target=m.target.opened(self.open_targets[m.name]))
+                if m.target is not None and m.target.judged and m.name in self.open_targets
+                else m for m in metrics]
 
     @property
     def key(self) -> str:

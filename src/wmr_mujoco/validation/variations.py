@@ -132,7 +132,7 @@ DYNAMIC_DRAWS = 20
 #: Draws of a cheap kinematic family whose spread is shown small: the worst of
 #: :data:`DYNAMIC_DRAWS` draws within half its target (``python -m
 #: wmr_mujoco.bench.family_spread`` prints it for every such family).
-KINEMATIC_DRAWS = 5
+KINEMATIC_DRAWS = 3
 
 
 def around(name: str, nominal: float, fraction: float = 0.2, unit: str = "s") -> Vary:

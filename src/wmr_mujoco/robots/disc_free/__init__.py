@@ -91,6 +91,17 @@ def _sweep_clip(model: mujoco.MjModel) -> list[FreeRun]:
                              stop_lean=1.2)
 
 
+#: The leaning start's requirements are open over its family: the slower draws (below the
+#: nominal speed, toward the upright disc's stability limit) miss all three, the energy
+#: drift too, so the physics itself loses energy there (the families table shows the
+#: spread against the speed).
+LEANING_OPEN = dict.fromkeys(
+    ("worst contact path error, first 5 s", "worst lean error, first 5 s",
+     "worst energy drift"),
+    "the family's slower draws miss it (the errors grow as the speed falls; the energy "
+    "drift too, so not only the comparison: not yet explained; spread in the families "
+    "table)")
+
 SCENARIOS = (
     Scenario(NAME, "incline", duration=1.0, kind=ScenarioKind.MEASUREMENT,
              evaluate=_evaluate(ms.incline), film=_film(ms.incline_runs),
@@ -114,7 +125,8 @@ SCENARIOS = (
              description="leaning rolling start: path and lean against the nonlinear "
                          "equations over 5 s, energy over 10 s",
              family=Family((_around("lean", ms.LEANING_START[0], "rad"),
-                            _around("speed", ms.LEANING_START[1], "m/s")), DYNAMIC_DRAWS)),
+                            _around("speed", ms.LEANING_START[1], "m/s")), DYNAMIC_DRAWS),
+             open_targets=LEANING_OPEN),
 )
 
 SPEC = RobotSpec(
