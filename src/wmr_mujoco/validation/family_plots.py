@@ -41,7 +41,7 @@ def plot_spreads(results: Sequence[ScenarioResult], title: str, path: Path) -> P
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(9.0, MARGINS + ROW_HEIGHT * len(rows)))
+    fig, ax = plt.subplots(figsize=(11.0, MARGINS + ROW_HEIGHT * len(rows)))
     rng = np.random.default_rng(0)  # jitter only: where a dot sits within its row
     top = 1.0
     for k, (_, s) in enumerate(rows):
