@@ -86,7 +86,10 @@ def run_batched(spec: RobotSpec, members: list[Scenario],
     """
     out: dict[int, ScenarioResult] = {}
     preps: dict[int, Prepared] = {}
-    model = load(spec, params)
+    try:
+        model = load(spec, params)
+    except Exception:  # each member's own run says why
+        return [run_scenario(spec, m, progress, params=params) for m in members]
     for i, m in enumerate(members):
         try:
             preps[i] = prepare(spec, m, params, model=model)

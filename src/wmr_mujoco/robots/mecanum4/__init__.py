@@ -97,6 +97,14 @@ STEP_OPEN = {"worst position error": "the step model averages the roller contact
              "miss it (spread in the families table)"}
 
 
+#: The stepped rotation's heading requirement is open over its family: its worst draws
+#: start near a roller hand-over (a start angle near a multiple of the roller pitch) at
+#: the higher yaw rates, which the step model's pitch-averaged contact leaves out.
+ROTATE_STEP_OPEN = {"worst heading error": "the family's worst draws start near a roller "
+                    "hand-over at the higher yaw rates; the step model averages the roller "
+                    "contact over the pitch (spread in the families table)"}
+
+
 def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
     """The eight translations at 0.3 m/s (a ramp of ``ramp`` seconds; 0: a step)."""
     return tuple(Scenario(NAME, f"translate {deg}° ({tag})",
@@ -113,8 +121,11 @@ def turning(ramp: float, tag: str) -> tuple[Scenario, ...]:
     return (Scenario(NAME, f"translate+rotate ({tag})",
                      twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE), ramp), duration=TURN_DURATION,
                      family=KINEMATIC_FAMILY),
+            # Its spread is not small (bench.family_spread): 20 draws; stepped, its
+            # heading requirement is open over them (ROTATE_STEP_OPEN).
             Scenario(NAME, f"rotate ({tag})", twist_inputs((0.0, 0.0, YAW_RATE), ramp),
-                     duration=TURN_DURATION, family=KINEMATIC_FAMILY))
+                     duration=TURN_DURATION, family=GROUP_FAMILY,
+                     open_targets={} if ramp else ROTATE_STEP_OPEN))
 
 
 def kinematic_runs() -> tuple[Scenario, ...]:
