@@ -105,7 +105,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     from wmr_mujoco.lookup import validation_jobs
     from wmr_mujoco.progress import bar, shown
     from wmr_mujoco.robots import ROBOTS
-    from wmr_mujoco.validation.family_report import spread_text
+    from wmr_mujoco.validation.family_report import slowest, spread_text
     from wmr_mujoco.validation.members import run_families
     from wmr_mujoco.validation.report import (
         check_report_folder,
@@ -133,7 +133,8 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     finally:
         progress_bar.close()
     print(text_table(results, judged_only=not args.all_metrics))
-    print(f"\nover each family (seed {args.seed}):\n{spread_text(results)}")
+    print(f"\nover each family (seed {args.seed}):\n{spread_text(results)}\n"
+          f"{slowest(results)}")
     path = write_report(results, args.out, robots=ROBOTS)
     failed = [r.scenario.key for r in results if not r.passed]
     print(f"\n{summary_line(results)}; report: {path}")

@@ -158,6 +158,15 @@ def restore_members(record: Mapping[str, object] | None, result: ScenarioResult
     return result
 
 
+def slowest(results: Sequence[ScenarioResult], n: int = 5) -> str:
+    """``total X s; slowest: robot/scenario (N draws) Y s, ...``: the run's wall time."""
+    timed = [r for r in results if r.seconds is not None]
+    top = sorted(timed, key=lambda r: -(r.seconds or 0.0))[:n]
+    total = sum(r.seconds or 0.0 for r in timed)
+    return (f"{len(timed)} families in {total:.1f} s; slowest: " + ", ".join(
+        f"{r.scenario.key} ({len(member_rows(r))} draws) {r.seconds:.1f} s" for r in top))
+
+
 def worst_draw(result: ScenarioResult) -> str:
     """The draw of the member whose headline is worst (``nominal`` for a single run)."""
     if not result.members:

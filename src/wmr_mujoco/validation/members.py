@@ -14,6 +14,7 @@ member's own result is kept (``ScenarioResult.members``) for the report's spread
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Sequence
 
 import mujoco
@@ -139,7 +140,9 @@ def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = N
         check_draws(draws)
     results = []
     for spec, s in work:
+        start = time.perf_counter()
         result = run_family(spec, s, seed, draws, progress)
+        result.seconds = time.perf_counter() - start
         results.append(result)
         if progress:
             progress(f"[{len(results)}/{len(work)}] {s.key}")

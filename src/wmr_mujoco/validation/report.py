@@ -242,7 +242,7 @@ def _record(r: ScenarioResult) -> dict[str, object]:
             "metrics": [{"metric": m.metric, "value": clean(m.value), "unit": m.unit,
                          "target": m.target, "basis": m.basis, "passed": m.passed,
                          "open": m.open, "note": m.note} for m in r.rows],
-            "family": members_record(r)}
+            "family": members_record(r), "seconds": r.seconds}
 
 
 def _restore(record: dict, robots: Robots) -> ScenarioResult | None:

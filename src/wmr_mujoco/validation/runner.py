@@ -68,7 +68,8 @@ class ScenarioResult:
     """Rows and trace of one scenario (``error`` set when it diverged or raised).
 
     For a family: ``rows`` are the worst member's per metric, ``trace`` the worst
-    member's, ``members`` every member's own result, ``seed`` the seed of the draws.
+    member's, ``members`` every member's own result, ``seed`` the seed of the draws;
+    ``seconds`` the wall time of the whole family (None: not timed).
     """
 
     scenario: Scenario
@@ -77,6 +78,7 @@ class ScenarioResult:
     error: str | None = None
     members: list[ScenarioResult] = field(default_factory=list)
     seed: int | None = None
+    seconds: float | None = None
 
     @property
     def passed(self) -> bool:

@@ -73,25 +73,26 @@ TARGETS: Mapping[str, Target] = {
     ROLLER_RATE_PCT: Target.requirement(5.0, "accuracy asked of the roller model (as of "
                                              "omni3's rollers): spin rates within "
                                              "5 % of slide speed / ρ (median over contacts)"),
-    # Open over the torque family: the reduced Lagrange model leaves out the roller
-    # hand-overs (the contact moving from roller to roller), so the wheels' start angle
-    # moves the velocity error (the report shows its spread).
-    dynamics.VELOCITY_PCT: Target.open(3.0, "accuracy asked of the Lagrange model (as of "
-                                            "omni3's under torque): body velocity within "
-                                            "3 % of the Lagrange model",
-                                       "the reduced model leaves out the roller "
-                                       "hand-overs; over the wheels' start angle the "
-                                       "worst draws miss it (spread in the families "
-                                       "table)"),
+    dynamics.VELOCITY_PCT: Target.requirement(3.0, "accuracy asked of the Lagrange model (as "
+                                                   "of omni3's under torque): "
+                                                   "body velocity within 3 % of the "
+                                                   "Lagrange model"),
 }
+#: The torque run's forward-speed requirement is open over its family: the reduced
+#: Lagrange model leaves out the roller hand-overs (the contact moving from roller to
+#: roller), so the wheels' start angle moves the error (the report shows its spread).
+TORQUE_OPEN = {"Lagrange: worst u error": "the reduced model leaves out the roller "
+               "hand-overs; over the wheels' start angle the worst draws miss it (spread in "
+               "the families table)"}
 
 
 TAGS = ((RAMP, "ramp"), (0.0, "step"))
 
 
-#: A step translation's position requirement is open over its family: the step model
-#: averages the roller contact over the roller pitch; over the wheels' start angle the
-#: diagonal steps' worst draws miss it (the families table shows the spread).
+#: A diagonal step translation's position requirement is open over its family: the step
+#: model averages the roller contact over the roller pitch; over the wheels' start angle
+#: the diagonal steps' worst draws miss it (the families table shows the spread; the
+#: steps along the axes stay judged).
 STEP_OPEN = {"worst position error": "the step model averages the roller contact over the "
              "roller pitch; over the wheels' start angle the diagonal steps' worst draws "
              "miss it (spread in the families table)"}
@@ -109,7 +110,8 @@ def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
     """The eight translations at 0.3 m/s (a ramp of ``ramp`` seconds; 0: a step)."""
     return tuple(Scenario(NAME, f"translate {deg}° ({tag})",
                           twist_inputs(translation(deg), ramp), duration=TRANSLATE_DURATION,
-                          family=KINEMATIC_FAMILY, open_targets={} if ramp else STEP_OPEN)
+                          family=KINEMATIC_FAMILY,
+                          open_targets=STEP_OPEN if not ramp and deg % 90 else {})
                  for deg in DIRECTIONS_DEG)
 
 
@@ -143,7 +145,8 @@ def _scenarios() -> tuple[Scenario, ...]:
                             family=GROUP_FAMILY))
         out += turning(ramp, tag)
     out += [Scenario(NAME, f"{dynamics.JUDGED_PREFIX}", tuple(const(t) for t in TORQUE_AHEAD),
-                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC, family=TORQUE_FAMILY),
+                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC, family=TORQUE_FAMILY,
+                     open_targets=TORQUE_OPEN),
             Scenario(NAME, "torque mixed", tuple(const(t) for t in TORQUE_MIXED),
                      duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC, family=TORQUE_FAMILY),
             Scenario(NAME, "rolling-radius ripple", kind=ScenarioKind.MEASUREMENT,
