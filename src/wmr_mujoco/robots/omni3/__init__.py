@@ -147,6 +147,13 @@ DYNAMIC_SPECS = (*dynamics.STEP_SPECS, *dynamics.TORQUE_SPECS, coasting.COAST_SP
 #: ``n`` rollers per row).
 KINEMATIC_FAMILY = Family((var.speeds(), var.roller_pitch(OmniParams().rollers_per_row)),
                           var.KINEMATIC_DRAWS)
+#: The square with rotation's heading requirement is open over its family: the two roller
+#: rows put the contact at L ± e in turn, so the yaw rate ripples and the heading drifts
+#: (models/omni3/README.md), which the ideal kinematics leaves out; over the family's
+#: start angles and speeds its worst draws miss 1° (seeds other than the default too).
+SQUARE_OPEN = {"worst heading error": "the roller rows' contact at L ± e makes the heading "
+               "drift, which the ideal kinematics leaves out; the family's worst draws "
+               "miss it (spread in the families table)"}
 #: The same family where its spread is not small: 20 draws.
 WIDE_FAMILY = dataclasses.replace(KINEMATIC_FAMILY, draws=var.DYNAMIC_DRAWS)
 
@@ -159,7 +166,7 @@ SCENARIOS = (
     Scenario(NAME, "translate+rotate", twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE)),
              family=KINEMATIC_FAMILY),
     Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True,
-             family=WIDE_FAMILY),
+             family=WIDE_FAMILY, open_targets=SQUARE_OPEN),
     *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_step,
                duration=s.duration, description="rate servo stepped to a twist (no ramp): "
                "physics vs the hybrid model (servo law, torque limit) and the kinematics")
