@@ -7,17 +7,22 @@ imports inside functions alike (a deferred import is still a dependency).
 1. ``core``: the package root, :mod:`~wmr_mujoco.atomic`, :mod:`~wmr_mujoco.choices`,
    :mod:`~wmr_mujoco.progress`, the OpenGL helpers (``gl_env``,
    :mod:`~wmr_mujoco.render.gl_backend`: the backend is chosen before MuJoCo loads);
-2. ``parameters``: the frozen parameter dataclasses (``models.params``,
-   ``models.params_*``), the primitive solids' mass properties (``models.solids``) and the
-   file locations (``models.paths``). Analytic models read parameters;
-3. ``analytic``: the derived models. They know nothing of MJCF;
-4. ``models``: builders, scene loading, actuation, colliders, classification. Builders may
-   use derived geometry (the mecanum roller profile) and the classifier the rank theory,
-   hence above ``analytic``; an analytic model that imported a builder would run back up;
+2. ``parameters``: the generic parameter dataclasses (``models.params``: the
+   :class:`RobotParams` protocol, the field checks, the parts several robots share), the
+   primitive solids' mass properties (``models.solids``) and the file locations
+   (``models.paths``). Analytic models read parameters;
+3. ``analytic``: the textbook models several robots use. They know nothing of MJCF;
+4. ``models``: the shared MJCF pieces (``models.builders.common``, ``scene``, ``caster``),
+   scene loading, actuation, colliders, classification. The classifier uses the rank
+   theory, hence above ``analytic``; an analytic model that imported a builder would run
+   back up;
 5. ``sim``: stepping, timing, contact closed forms;
 6. ``validation``: scenarios, adapters, judges, the runner and the report. It receives a
    :class:`~wmr_mujoco.validation.spec.RobotSpec`, never a name to look up;
-7. ``robots``: the registry (``ROBOTS``, ``get_spec``) and the robots' entries;
+7. ``robots``: the registry (``ROBOTS``, ``get_spec``) and one folder per robot
+   (``robots/<robot>/``: its ``params``, ``builder``, its own analytic model, adapters,
+   judges, scenarios and the entry ``SPEC`` in ``__init__``), family code in family folders
+   (``robots/roller_wheels/``, ``robots/steered/``). Nothing below imports a robot folder;
 8. ``application``: everything else (``api``, ``cli``, ``info``, ``demo``, ``bench``,
    ``render``, ``docs_sync`` and the application packages ``drive``, ``control``,
    ``envs``, ``suite``, ``batch``, ``audit``).
@@ -44,9 +49,8 @@ MAX_LINES = 400
 LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("core", ("wmr_mujoco", "wmr_mujoco.atomic", "wmr_mujoco.choices", "wmr_mujoco.gl_env",
               "wmr_mujoco.progress", "wmr_mujoco.render.gl_backend")),
-    ("parameters", ("wmr_mujoco.models.params", "wmr_mujoco.models.params_mecanum",
-                    "wmr_mujoco.models.params_wheeled", "wmr_mujoco.models.params_whipple",
-                    "wmr_mujoco.models.solids", "wmr_mujoco.models.paths")),
+    ("parameters", ("wmr_mujoco.models.params", "wmr_mujoco.models.solids",
+                    "wmr_mujoco.models.paths")),
     ("analytic", ("wmr_mujoco.analytic",)),
     ("models", ("wmr_mujoco.models",)),
     ("sim", ("wmr_mujoco.sim",)),
@@ -125,7 +129,11 @@ def test_layers_are_assigned_as_documented() -> None:
     assert layer_of("wmr_mujoco.render.gl_backend") == "core"
     assert layer_of("wmr_mujoco.render.video") == "application"
     assert layer_of("wmr_mujoco.models.params") == "parameters"
-    assert layer_of("wmr_mujoco.models.builders.steered") == "models"
+    assert layer_of("wmr_mujoco.models.params.wheeled") == "parameters"
+    assert layer_of("wmr_mujoco.models.builders.common") == "models"
+    assert layer_of("wmr_mujoco.robots.steered.builder") == "robots"
+    assert layer_of("wmr_mujoco.robots.whipple.params") == "robots"
+    assert layer_of("wmr_mujoco.robots.roller_wheels.omni_kinematics") == "robots"
     assert layer_of("wmr_mujoco.robots.omni3.runs") == "robots"
     assert layer_of("wmr_mujoco.bench.omni_study") == "application"
 

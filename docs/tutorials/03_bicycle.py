@@ -40,7 +40,7 @@ import numpy as np
 
 import wmr_mujoco as wmr
 from wmr_mujoco.analytic import bicycle, nonholonomy
-from wmr_mujoco.models.params import BicycleParams
+from wmr_mujoco.robots.bicycle.params import BicycleParams
 from wmr_mujoco.tutorials.checks import check_parallel_park
 from wmr_mujoco.tutorials.schedule import segment_inputs
 

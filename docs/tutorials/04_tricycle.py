@@ -24,7 +24,7 @@
 # Hence the lecture's remark: if one rear wheel is driven, the other must be free to take
 # its own speed (or the two coupled by a differential); otherwise a wheel slips. The MuJoCo
 # tricycle drives its left rear wheel and leaves the right one free
-# (`wmr_mujoco.analytic.tricycle`).
+# (`wmr_mujoco.robots.tricycle.analytic`).
 #
 # ![the tricycle in MuJoCo](../../renders/tricycle.gif)
 #
@@ -36,8 +36,8 @@ import mujoco
 import numpy as np
 
 import wmr_mujoco as wmr
-from wmr_mujoco.analytic import tricycle
-from wmr_mujoco.models.params import TricycleParams
+from wmr_mujoco.robots.tricycle import analytic as tricycle
+from wmr_mujoco.robots.tricycle.params import TricycleParams
 from wmr_mujoco.tutorials.checks import check_tricycle_icr
 
 p = TricycleParams()

@@ -26,7 +26,7 @@
 #
 # $J$ is constant, which holds only if $\nu = (u, v, r)$ is the platform's velocity in
 # **its own frame** (forward, left, yaw rate); world rates are
-# $(\dot X, \dot Y) = \mathrm{Rot}(\psi)(u, v)$ (`wmr_mujoco.analytic.omni_kinematics`).
+# $(\dot X, \dot Y) = \mathrm{Rot}(\psi)(u, v)$ (`wmr_mujoco.robots.roller_wheels.omni_kinematics`).
 # Wheel 1 sits on the body's $x$ axis and rolls along $+y$. The MuJoCo `omni3` has two
 # staggered rows of six rollers per wheel, as the lecture describes, every roller a free
 # hinge.
@@ -41,8 +41,8 @@ import mujoco
 import numpy as np
 
 import wmr_mujoco as wmr
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.tutorials.checks import check_omni_wheel_rates
 
 p = OmniParams()

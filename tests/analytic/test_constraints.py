@@ -1,8 +1,9 @@
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import bicycle, constraints, tricycle, unicycle
+from wmr_mujoco.analytic import bicycle, constraints, unicycle
 from wmr_mujoco.analytic.integrate import integrate
+from wmr_mujoco.robots.tricycle import analytic as tricycle
 
 DT = 0.002
 

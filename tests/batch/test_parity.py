@@ -19,7 +19,8 @@ pytestmark = pytest.mark.extra  # MuJoCo Warp (the gpu extra)
 #: In the default run: a wheeled robot and one on rollers (its own contact set).
 QUICK = ("diffdrive", "omni3")
 #: The rest, marked slow (still run in CI).
-SLOW = ("disc", "bicycle", "tricycle", "single_steer", "double_steer", "mecanum4")
+SLOW = ("disc", "bicycle", "tricycle", "single_steer", "double_steer", "mecanum4",
+        "omni3_reduced")
 
 _results: dict[str, parity_mod.Parity] = {}
 

@@ -88,6 +88,13 @@ def test_bad_backend_lists_the_installed_ones():
         wmr.simulate_batch(ROBOT, [[0.5, 0.1]], DURATION, backend="cuda")
 
 
+def test_mjx_is_refused_with_its_reason_and_the_backend_to_use():
+    """MJX is weighed and not offered: the error gives the measured gap and names warp."""
+    with pytest.raises(ValueError, match=r"backend = 'mjx': .*12\.5 cm.*implicit.*"
+                                         r"use backend='warp'.*'rollout'"):
+        wmr.simulate_batch(ROBOT, [[0.5, 0.1]], DURATION, backend="mjx")
+
+
 def test_options_of_another_backend_are_named():
     with pytest.raises(ValueError, match=r"backend 'rollout' has no option devices; its "
                                          r"options: nthread"):

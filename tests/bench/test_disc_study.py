@@ -6,7 +6,7 @@ import mujoco
 import pytest
 
 from wmr_mujoco.bench import disc_study as ds
-from wmr_mujoco.models.params import DiscParams
+from wmr_mujoco.robots.disc.params import DiscParams
 
 
 def row(label, evals, err, passed=True):

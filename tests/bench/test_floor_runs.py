@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.bench.floor_runs import command_bounds, floor_figures
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 
 
 def test_command_range_of_the_spec_wins_else_the_scenarios():

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.bench import mecanum_phase as mp
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import collider
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
 
 
 def test_held_phases_turn_at_the_colliders_kinematics():

@@ -9,7 +9,7 @@ from wmr_mujoco.bench.mecanum_study import (
     study_scenarios,
     table,
 )
-from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
 
 
 def test_measure_splits_ramps_and_steps_and_marks_the_default():

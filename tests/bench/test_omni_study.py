@@ -3,7 +3,7 @@
 import pytest
 
 from wmr_mujoco.bench.omni_study import measure_peer, study_configs
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 
 
 def test_missing_peer_names_the_path_and_the_variable(tmp_path):

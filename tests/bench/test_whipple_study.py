@@ -5,8 +5,8 @@ from __future__ import annotations
 import dataclasses
 
 from wmr_mujoco.bench import whipple_study as ws
-from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.whipple import eigen
+from wmr_mujoco.robots.whipple.params import WhippleParams
 
 
 def test_configs_change_only_simulation_settings():

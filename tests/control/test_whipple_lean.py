@@ -7,8 +7,8 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.linalg import solve_continuous_lyapunov
 
-from wmr_mujoco.analytic import whipple
 from wmr_mujoco.control.whipple_lean import STATE_KEYS, BrysonWeights, WhippleLean, input_matrix
+from wmr_mujoco.robots.whipple import analytic as whipple
 
 SPEEDS = (2.0, 3.0)
 PUSH = np.array([0.0, 0.0, 0.5, 0.0])  # the 0.5 rad/s lean-rate push
@@ -86,3 +86,12 @@ def test_push_is_caught_on_the_linear_model(speed):
     lean = held.y[0]
     assert np.abs(lean).max() < 0.1
     assert abs(lean[-1]) < 1e-3 * np.abs(lean).max()
+
+
+def test_the_registry_lists_the_kinds_the_law_drives():
+    # The controller registry names WhippleLean's kinds without importing it (the CLI
+    # stays free of MuJoCo); the two must agree.
+    from wmr_mujoco.control.registry import SUPPORTS
+    from wmr_mujoco.control.whipple_lean import WhippleLean
+
+    assert SUPPORTS["whipple_lean"] == WhippleLean.kinds

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import whipple
 from wmr_mujoco.control import whipple_upright as wu
+from wmr_mujoco.robots.whipple import analytic as whipple
 
 
 @pytest.mark.parametrize("speed", wu.SPEEDS)

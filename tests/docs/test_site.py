@@ -48,7 +48,8 @@ def test_every_page_is_built(site: Path) -> None:
     for page in ("analytical", "rolling-disc", "omni-dynamics", "mecanum", "gallery"):
         assert (site / page / "index.html").is_file(), page
     api = (site / "api" / "analytic" / "index.html").read_text()
-    assert "wmr_mujoco.analytic.unicycle" in api and "wmr_mujoco.analytic.omni_dynamics" in api
+    assert "wmr_mujoco.analytic.unicycle" in api
+    assert "wmr_mujoco.robots.roller_wheels.omni_dynamics" in api
 
 
 def test_the_gallery_shows_every_rendered_clip(site: Path) -> None:

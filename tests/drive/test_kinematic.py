@@ -7,9 +7,10 @@ import math
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import tricycle
 from wmr_mujoco.drive import make
-from wmr_mujoco.models.params import BicycleParams, TricycleParams
+from wmr_mujoco.robots.bicycle.params import BicycleParams
+from wmr_mujoco.robots.tricycle import analytic as tricycle
+from wmr_mujoco.robots.tricycle.params import TricycleParams
 
 #: RK4 on the 2 ms timestep: global error O(Δt⁴), below 1e-9 m over 10 s for these smooth
 #: models (``wmr_mujoco.analytic.integrate``); the runs here are 2 s.
@@ -67,7 +68,7 @@ def test_bicycle_steers_like_the_servo_and_turns_at_v_tan_phi_over_l() -> None:
 
 def test_tricycle_wheels_roll_about_the_common_icr() -> None:
     """Midpoint speed v as commanded; the free right and front wheels at the ICR rates of
-    :mod:`wmr_mujoco.analytic.tricycle` (``v_R = v (1 + k)``, ``v_F = v / cos φ``), which
+    :mod:`wmr_mujoco.robots.tricycle.analytic` (``v_R = v (1 + k)``, ``v_F = v / cos φ``), which
     the backend gets from the wheel geometry of the compiled model."""
     robot = make("tricycle", backend="kinematic")
     robot.reset()

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.drive import drivable, make
-from wmr_mujoco.models.builders.whipple import KEY_SPEED
 from wmr_mujoco.robots import ROBOTS
+from wmr_mujoco.robots.whipple.builder import KEY_SPEED
 
 PERIOD = 0.02
 

@@ -36,8 +36,8 @@ def test_standing_still_does_not_succeed():
 def test_lqr_stabilises_the_linear_benchmark_below_the_weave_speed():
     from scipy.linalg import expm
 
-    from wmr_mujoco.analytic import whipple as analytic
-    from wmr_mujoco.models.params_whipple import WhippleParams
+    from wmr_mujoco.robots.whipple import analytic
+    from wmr_mujoco.robots.whipple.params import WhippleParams
 
     mats = analytic.matrices(WhippleParams())
     for v in (2.5, 3.5):

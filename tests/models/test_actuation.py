@@ -4,7 +4,7 @@ import pytest
 
 from wmr_mujoco import load, set_actuation_mode
 from wmr_mujoco.models.actuation import actuation_mode
-from wmr_mujoco.models.params import DiscParams
+from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.sim.stepping import rollout
 
 from conftest import ACTUATED, model_differences

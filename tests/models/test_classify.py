@@ -222,3 +222,17 @@ def test_a_thin_cylinder_roller_is_round_about_its_hinge():
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     assert classify.round_about(model, data, model.geom("g").id, model.joint("h").id)
+
+
+def test_a_wheel_free_sideways_in_its_contact_is_swedish():
+    """omni3_reduced's wheels are plain hinges, but their floor pairs are nearly
+    frictionless along the axle (the contact frame follows the capsule): Swedish wheels of
+    roller angle 0 and omni3's class (3,0). The same model with the pairs' friction made
+    isotropic has three fixed wheels on three axles, outside the theory."""
+    model = load("omni3_reduced")
+    c = classify.classify(model)
+    assert c.robot_class == (3, 0) and c.wheel_counts() == {"swedish": 3}
+    assert all(w.roller_angle == 0.0 for w in c.wheels)
+    model.pair_friction[:, 0] = model.pair_friction[:, 1]
+    c = classify.classify(model)
+    assert c.robot_class is None and c.wheel_counts() == {"fixed": 3}

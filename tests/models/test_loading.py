@@ -3,7 +3,8 @@ import pytest
 
 import wmr_mujoco.validation.spec
 from wmr_mujoco import ROBOTS, load
-from wmr_mujoco.models.params import TricycleParams, WheelParams
+from wmr_mujoco.models.params import WheelParams
+from wmr_mujoco.robots.tricycle.params import TricycleParams
 
 from conftest import model_differences
 

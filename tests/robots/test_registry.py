@@ -11,9 +11,10 @@ import json
 import numpy as np
 import pytest
 
-from wmr_mujoco.models.builders import disc as disc_builder
-from wmr_mujoco.models.params import DiscParams, WheelParams, params_or_default
+from wmr_mujoco.models.params import WheelParams, params_or_default
 from wmr_mujoco.robots import ROBOTS, RobotSpec, disc, get_spec, register, registered
+from wmr_mujoco.robots.disc import builder as disc_builder
+from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.validation.metrics import Metric, Series
 from wmr_mujoco.validation.runner import jobs, run_all
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind
@@ -39,6 +40,16 @@ def test_every_target_says_requirement_or_derived_bound():
         for key, target in spec.targets.items():
             assert target.kind in ("requirement", "derived bound", "open"), key
             assert len(target.basis) > 10, key
+
+
+def test_each_robot_owns_its_parameters_and_builder():
+    # A robot is a folder: its parameter dataclass and its builder live under
+    # wmr_mujoco.robots (its own folder or its family's), never in a generic layer.
+    for name, spec in ROBOTS.items():
+        for part in (spec.params_type, spec.build):
+            if part is not None:
+                assert part.__module__.startswith("wmr_mujoco.robots."), (name, part)
+        assert type(get_spec(name)).__module__ == RobotSpec.__module__
 
 
 @dataclasses.dataclass(frozen=True)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.params import DiscParams
+from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.sim.inertia import hinge_inertia
 
 

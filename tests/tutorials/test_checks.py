@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.analytic.wheel_dynamics import WheelDynamics
-from wmr_mujoco.models.params import OmniParams, TricycleParams
+from wmr_mujoco.robots.omni3.params import OmniParams
+from wmr_mujoco.robots.tricycle.params import TricycleParams
 from wmr_mujoco.tutorials import checks
 from wmr_mujoco.tutorials.checks import CheckResult
 

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 import wmr_mujoco as wmr
-from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots import ROBOTS, get_spec
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 from wmr_mujoco.validation.command import RateCommand, TorqueCommand, servo_rate
 
 

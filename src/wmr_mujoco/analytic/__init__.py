@@ -13,15 +13,6 @@ import pkgutil
 from types import ModuleType
 
 from wmr_mujoco.analytic.integrate import integrate, rk4_step
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
-from wmr_mujoco.analytic.omni_kinematics import (
-    WheelLayout,
-    body_to_world,
-    symmetric_layout,
-    wheel_jacobian,
-    wheel_rates,
-    world_to_body,
-)
 from wmr_mujoco.analytic.planar import path_length, wrap_angle
 from wmr_mujoco.analytic.wheel_dynamics import WheelDynamics
 
@@ -30,17 +21,10 @@ MODULES = tuple(m.name for m in pkgutil.iter_modules(__path__) if not m.name.sta
 
 __all__ = [
     "MODULES",
-    "OmniDynamics",
     "WheelDynamics",
-    "WheelLayout",
-    "body_to_world",
     "integrate",
     "path_length",
     "rk4_step",
-    "symmetric_layout",
-    "wheel_jacobian",
-    "wheel_rates",
-    "world_to_body",
     "wrap_angle",
     *MODULES,
 ]

@@ -39,6 +39,16 @@ from wmr_mujoco.validation.spec import RobotSpec
 
 #: The batched engines by name.
 BACKENDS: dict[str, type[Backend]] = {b.name: b for b in (RolloutBackend, WarpBackend)}
+#: Engines weighed and not offered, with the reason (the error names it and what to use).
+REFUSED: dict[str, str] = {
+    "mjx": "MJX's JAX engine (impl='jax') is not offered: issue 27's probe measured it 3 mm "
+           "(diffdrive) to 12.5 cm (bicycle) away from C MuJoCo after 500 steps in 64-bit "
+           "floats (the engine differs, not the precision), it refuses the implicit "
+           "integrator (whipple), keeps a contact slot for every possible pair (omni3: 36 "
+           "contacts and 108 rows per world against 3 and 9) and froze on omni3 batches; "
+           "use backend='warp' (MuJoCo Warp, the engine MJX's impl='warp' runs, within "
+           "microns of C MuJoCo) or 'rollout' (C MuJoCo)",
+}
 #: The most distinct parameter sets (compiled models) of one call.
 MAX_MODELS = 1024
 #: The most members of one call (checked before any per-member object is made).
@@ -55,7 +65,8 @@ def make_backend(backend: str | Backend, **options: Any) -> Backend:
 
     Raises:
         ValueError: unknown or not installed (the message lists the installed ones and
-            the extra that installs the missing one).
+            the extra that installs the missing one), or weighed and refused
+            (:data:`REFUSED`: the reason and the backend to use instead).
     """
     if isinstance(backend, Backend):
         if options:
@@ -63,6 +74,8 @@ def make_backend(backend: str | Backend, **options: Any) -> Backend:
                              "give them to its constructor")
         return backend
     cls = BACKENDS.get(backend) if isinstance(backend, str) else None
+    if isinstance(backend, str) and backend in REFUSED:
+        raise ValueError(f"backend = {backend!r}: {REFUSED[backend]}")
     if cls is None:
         raise ValueError(f"backend = {backend!r}; installed backends: "
                          f"{', '.join(installed_backends())} (all: {', '.join(BACKENDS)})")

@@ -35,7 +35,7 @@ QUICK_WORLDS = {"rollout": (1, 64, 1024), "warp": (1, 8)}
 #: Robot-steps per timed run, per backend.
 BUDGET = {"rollout": 40_000, "warp": 200}
 MIN_STEPS, MAX_STEPS = 5, 500
-ROBOTS = ("diffdrive", "omni3", "mecanum4")
+ROBOTS = ("diffdrive", "omni3", "omni3_reduced", "mecanum4")
 QUICK_ROBOTS = ("diffdrive",)
 
 

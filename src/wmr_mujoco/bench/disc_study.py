@@ -10,7 +10,7 @@ impratio, collider) and writes a table of each setting's worst errors and real-t
 between the ``disc study`` markers of ``models/disc/README.md``. The cheapest setting
 that meets every target (fewest model evaluations per simulated second: RK4 evaluates
 the model 4 times a step, the Euler-type integrators once) is marked; it is the
-default in :class:`~wmr_mujoco.models.params.DiscParams` (``free_*``) when the table says
+default in :class:`~wmr_mujoco.robots.disc.params.DiscParams` (``free_*``) when the table says
 so.
 """
 
@@ -27,9 +27,9 @@ import numpy as np
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.lookup import build_scene
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.params import DiscParams, FreeDiscParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import disc, disc_free
+from wmr_mujoco.robots.disc.params import DiscParams, FreeDiscParams
 from wmr_mujoco.robots.disc_free import measurements as ms
 from wmr_mujoco.robots.disc_free.state import disc_from_model, set_free_state
 from wmr_mujoco.validation.metrics import Metric

@@ -174,8 +174,8 @@ def collision_cost(rounds: int = 5, calls: int = 2000) -> tuple[float, float]:
     """
     from wmr_mujoco.lookup import build_scene, load
     from wmr_mujoco.models.builders import common
-    from wmr_mujoco.models.builders import omni3 as builder
-    from wmr_mujoco.models.params import OmniParams
+    from wmr_mujoco.robots.omni3 import builder
+    from wmr_mujoco.robots.omni3.params import OmniParams
 
     root = build_scene("omni3")
     builder.floor_pairs(root, OmniParams(), plain=True)

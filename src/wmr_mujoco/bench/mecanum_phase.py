@@ -18,15 +18,15 @@ from collections.abc import Sequence
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.docs_sync.markers import publish, study_parser
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.models.paths import REPO_ROOT
 from wmr_mujoco.robots.mecanum4 import collider
+from wmr_mujoco.robots.mecanum4.builder import WHEEL_NAMES
 from wmr_mujoco.robots.mecanum4.geometry import layout
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.roller_wheels import pitch_averaged as pa
 
 DOC = REPO_ROOT / "docs" / "mecanum.md"
 MARKER = "mecanum phase drift"

@@ -25,15 +25,15 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import pitch_averaged as pa
 from wmr_mujoco.bench.thread_scaling import driving_controls
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
 from wmr_mujoco.lookup import build_scene, load
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import get_spec, mecanum4, omni3
 from wmr_mujoco.robots.mecanum4 import kinematics, ripple
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
+from wmr_mujoco.robots.roller_wheels import pitch_averaged as pa
 from wmr_mujoco.robots.roller_wheels.trials import TrialRun, run_trial
 from wmr_mujoco.validation.scenarios import Scenario
 

@@ -32,7 +32,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.docs_sync.markers import publish, study_parser
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import coast_start, contact_wheels
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric

@@ -9,7 +9,7 @@ averages of what a soft contact does; as the contacts stiffen they vanish and th
 is the rigid one of ``docs/omni-dynamics.md`` §§ 1-5, with the weight's moment over the
 roller arc. This study builds omni3 at several contact stiffnesses (:data:`SETTINGS`:
 ``solref`` time constant and step, the step half the time constant as MuJoCo requires):
-the shipped setting (the defaults of :class:`~wmr_mujoco.models.params.OmniParams`), the
+the shipped setting (the defaults of :class:`~wmr_mujoco.robots.omni3.params.OmniParams`), the
 softer one shipped before it, and a stiffer one; and reports, per setting and per hybrid
 model (with the weight's moment over the arc, as judged, and without it):
 
@@ -31,9 +31,7 @@ import time
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
 from wmr_mujoco.robots.omni3.coasting import COAST_SPEC, coast_figures
 from wmr_mujoco.robots.omni3.dynamics import (
@@ -42,7 +40,9 @@ from wmr_mujoco.robots.omni3.dynamics import (
     event_shift,
     pose_metrics,
 )
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import hybrid, settled, simulate_runs
+from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
 from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 
 #: (contact time constant, step), s: the shipped setting (:data:`SHIPPED`) first, then

@@ -14,9 +14,9 @@ import dataclasses
 from collections.abc import Sequence
 
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
-from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import omni3
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.peer import Summary, measure_omni, measure_peer
 
 #: The robot this study is about (its own study: it names its model and wheels).

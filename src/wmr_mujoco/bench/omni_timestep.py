@@ -49,8 +49,6 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from wmr_mujoco.analytic import omni_hybrid as oh
-from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots.omni3.coasting import COAST_SPEC, coast_figures
 from wmr_mujoco.robots.omni3.dynamics import (
     EVENT_SHIFT,
@@ -58,7 +56,9 @@ from wmr_mujoco.robots.omni3.dynamics import (
     path_length,
     pose_metrics,
 )
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import hybrid, hybrid_at, phase_lag_steps, simulate_runs
+from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
 from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 
 #: Steps compared, s (the first is the model's own, as ``wmr validate`` runs it; then

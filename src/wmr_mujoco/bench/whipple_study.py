@@ -28,15 +28,13 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import whipple as analytic
 from wmr_mujoco.docs_sync.markers import publish, study_parser
-from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.builders.common import to_xml
 from wmr_mujoco.models.builders.scene import add_scene
-from wmr_mujoco.models.params_whipple import INTEGRATORS, WhippleParams
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import whipple
-from wmr_mujoco.robots.whipple import eigen, stability
+from wmr_mujoco.robots.whipple import analytic, builder, eigen, stability
+from wmr_mujoco.robots.whipple.params import INTEGRATORS, WhippleParams
 from wmr_mujoco.robots.whipple.rolling import compile_model
 from wmr_mujoco.validation.metrics import Row
 from wmr_mujoco.validation.plots import plot_series

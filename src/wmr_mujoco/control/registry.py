@@ -17,7 +17,6 @@ from wmr_mujoco.control.holonomic import HolonomicPose
 from wmr_mujoco.control.kanayama import Kanayama
 from wmr_mujoco.control.pure_pursuit import PurePursuit
 from wmr_mujoco.control.stanley import Stanley
-from wmr_mujoco.control.whipple_lean import WhippleLean
 from wmr_mujoco.models.params import RobotParams
 
 #: Command channel names -> the command kind.
@@ -65,14 +64,26 @@ CONTROLLERS: dict[str, Factory] = {
     "kanayama": lambda kind, p, v: Kanayama(
         wheelbase=_wheelbase(p) if kind is CommandKind.CAR else None),
     "holonomic": lambda kind, p, v: HolonomicPose(),
-    "whipple_lean": lambda kind, p, v: WhippleLean(speed=v, params=p),
+    "whipple_lean": lambda kind, p, v: _whipple_lean()(speed=v, params=p),
 }
 #: The kinds each controller can drive.
 SUPPORTS: dict[str, tuple[CommandKind, ...]] = {
     "go_to_pose": GoToPose.kinds, "pure_pursuit": PurePursuit.kinds, "stanley": Stanley.kinds,
     "kanayama": Kanayama.kinds, "holonomic": HolonomicPose.kinds,
-    "whipple_lean": WhippleLean.kinds,
+    # WhippleLean.kinds, named without importing it (tests/control/test_whipple_lean.py)
+    "whipple_lean": (CommandKind.WHIPPLE,),
 }
+
+
+def _whipple_lean() -> type[Controller]:
+    """:class:`~wmr_mujoco.control.whipple_lean.WhippleLean`, imported when first built.
+
+    It reads the Whipple robot's own model (``wmr_mujoco.robots.whipple``), whose package
+    loads MuJoCo; deferred, building the command line stays free of MuJoCo.
+    """
+    from wmr_mujoco.control.whipple_lean import WhippleLean
+
+    return WhippleLean
 
 
 def check_controller(name: str) -> str:

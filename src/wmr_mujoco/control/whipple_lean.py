@@ -1,6 +1,6 @@
 """Steer into the lean: keeping the Whipple bicycle upright below its weave speed.
 
-The linearised Whipple bicycle (Meijaard et al. 2007; :mod:`wmr_mujoco.analytic.whipple`)
+The linearised Whipple bicycle (Meijaard et al. 2007; :mod:`wmr_mujoco.robots.whipple.analytic`)
 with the steer torque ``T_δ`` as input, state ``x = (φ, δ, φ̇, δ̇)`` (lean and steer,
 positive to the right):
 
@@ -34,9 +34,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import solve_continuous_are
 
-from wmr_mujoco.analytic import whipple
 from wmr_mujoco.control.base import CommandKind, Controller, StateLike, positive
-from wmr_mujoco.models.params_whipple import DEFAULT_PARAMS, WhippleParams
+from wmr_mujoco.robots.whipple import analytic as whipple
+from wmr_mujoco.robots.whipple.params import DEFAULT_PARAMS, WhippleParams
 
 #: The state the law reads from ``RobotState.extra``.
 STATE_KEYS = ("lean", "steer", "lean_rate", "steer_rate")

@@ -25,12 +25,12 @@ from types import SimpleNamespace
 import numpy as np
 from scipy.linalg import expm
 
-from wmr_mujoco.analytic import whipple
 from wmr_mujoco.control.base import positive
 from wmr_mujoco.control.whipple_lean import WhippleLean, input_matrix
 from wmr_mujoco.models.params import params_or_default
-from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import analytic as whipple
 from wmr_mujoco.robots.whipple import rolling, stability
+from wmr_mujoco.robots.whipple.params import WhippleParams
 
 #: The bicycle has fallen past this lean, rad.
 FALLEN = stability.FALLEN

@@ -34,12 +34,12 @@ from typing import Any
 import numpy as np
 from scipy.linalg import expm, solve_discrete_are
 
-from wmr_mujoco.analytic import whipple as analytic
 from wmr_mujoco.envs.episode import Episode
 from wmr_mujoco.envs.paths import Path, hermite_path
 from wmr_mujoco.envs.tasks import FollowPath, GoToGoal, StayUpright
 from wmr_mujoco.envs.tasks.base import to_body, wrap
-from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import analytic
+from wmr_mujoco.robots.whipple.params import WhippleParams
 
 #: Cruise speed in robot lengths per second (``V = SPEED · L``, at most half the limit).
 SPEED = 0.5

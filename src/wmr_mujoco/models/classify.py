@@ -18,7 +18,11 @@ How wheels are found (heuristics):
        off-centred *castor* otherwise (offset d reported); ``[H, hinge]`` Swedish wheel
        (hub H, roller hinge at any orientation, since it turns with the hub), roller
        angle γ = angle of the roller axis to the wheel plane, signed against the
-       rolling direction; ``[ball]`` ball wheel (sphere on a ball joint).
+       rolling direction; ``[ball]`` ball wheel (sphere on a ball joint). An ``[H]`` wheel
+       whose floor contacts are nearly frictionless along its axle (an explicit pair's
+       anisotropic friction, the contact frame along a capsule) is Swedish with γ = 0:
+       its rollers are in the contact
+       (:func:`~wmr_mujoco.models.colliders.free_sideways`).
     4. A wheel rolls: a body of such a chain is a wheel (or a roller) only if one of its
        colliders is *round* about the joint it spins on (:func:`round_about`: a sphere,
        or a cylinder, capsule or ellipsoid of revolution whose symmetry axis is that
@@ -41,7 +45,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic.campion import Classification, Wheel, classify_wheels, summary
-from wmr_mujoco.models.colliders import colliders, is_collider
+from wmr_mujoco.models.colliders import colliders, free_sideways, is_collider
 from wmr_mujoco.models.support import envelope
 
 SETTLE_TIME = 0.5
@@ -279,8 +283,12 @@ def find_wheels(model: mujoco.MjModel) -> tuple[tuple[Wheel, ...], tuple[str, ..
         axle = _horizontal(local(data.xaxis[key], False))
         if kind == "fixed":
             p = local(centre, True)
-            wheels.append(Wheel(name, "fixed", (float(p[0]), float(p[1])),
-                                (float(axle[0]), float(axle[1])), radius=radius))
+            geoms = {g for b in g["bodies"] for g in range(
+                model.body_geomadr[b], model.body_geomadr[b] + model.body_geomnum[b])}
+            free = free_sideways(data, geoms, data.xaxis[key])
+            wheels.append(Wheel(name, "swedish" if free else "fixed", (float(p[0]), float(p[1])),
+                                (float(axle[0]), float(axle[1])), radius=radius,
+                                **({"roller_angle": 0.0} if free else {})))
         elif kind == "steer":
             sj = links[0].joint
             s_anchor, s_axis = data.xanchor[sj], data.xaxis[sj]

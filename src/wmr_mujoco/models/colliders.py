@@ -9,6 +9,7 @@ pair names is a collider all the same; code that looks for colliders asks here.
 from __future__ import annotations
 
 import mujoco
+import numpy as np
 
 
 def pair_geoms(model: mujoco.MjModel) -> set[int]:
@@ -41,3 +42,29 @@ def pair_with(model: mujoco.MjModel, geom1: int, geom2: int) -> int | None:
         if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} == {geom1, geom2}:
             return p
     return None
+
+
+#: A floor contact whose friction along the wheel's axle is below this fraction of the
+#: friction across it leaves the wheel free sideways (:func:`free_sideways`).
+SIDEWAYS_FRICTION_RATIO = 0.1
+
+
+def free_sideways(data: mujoco.MjData, geoms: set[int], axle: np.ndarray) -> bool:
+    """Whether a wheel's ``geoms`` slide freely along its ``axle`` where they touch.
+
+    True when they have contacts (in ``data``) and each has a frame tangent along the
+    axle (within 5°) whose friction is below :data:`SIDEWAYS_FRICTION_RATIO` of the
+    other tangent's: an explicit pair's anisotropic friction on a collider whose contact
+    frame follows its axis (MuJoCo's plane-capsule), the rollers' freedom in the contact.
+    """
+    found = False
+    for i in range(data.ncon):
+        c = data.contact[i]
+        if c.geom1 in geoms or c.geom2 in geoms:
+            along = np.abs(c.frame.reshape(3, 3)[1:] @ axle)
+            k = int(np.argmax(along))
+            if (along[k] < np.cos(np.radians(5.0))
+                    or c.friction[k] >= SIDEWAYS_FRICTION_RATIO * c.friction[1 - k]):
+                return False
+            found = True
+    return found

@@ -1,7 +1,7 @@
 """Mass properties of the primitive solids the builders use, and the steered fork's box.
 
 Parameter layer: the builders give these inertias to MuJoCo bodies, and the analytic
-models (:mod:`wmr_mujoco.analytic.steered`) read the same numbers, so neither imports the
+models (:mod:`wmr_mujoco.robots.steered.analytic`) read the same numbers, so neither imports the
 other.
 """
 

@@ -1,11 +1,14 @@
-"""The registry of robots: one module per robot, one line per robot below.
+"""The registry of robots: one folder per robot, one line per robot below.
 
-Each robot module (``robots/<name>.py``) defines ``SPEC``, a :class:`RobotSpec` holding
-its parameters type, builder, model files, analytic adapters per scenario kind, judges,
-probes, targets and scenarios. Generic code (validation, report, rendering, benchmarks,
-command line) reads robots only from :data:`ROBOTS`, never by name. Adding a robot is its
-own modules and one line in :data:`ROBOTS`; :func:`registered` adds one for a while (tests,
-a foreign model).
+Each robot folder (``robots/<name>/``) holds its parameters (``params.py``), its builder
+(``builder.py``), its own analytic model where no other robot uses it, and in its
+``__init__.py`` ``SPEC``, a :class:`RobotSpec` holding its parameters type, builder, model
+files, analytic adapters per scenario kind, judges, probes, targets and scenarios. Robots
+of one family share a family folder (``roller_wheels/``, ``steered/``). Generic code
+(validation, report, rendering, benchmarks, command line) reads robots only from
+:data:`ROBOTS`, never by name, and nothing below this package imports it. Adding a robot
+is its own folder and one line in :data:`ROBOTS`; :func:`registered` adds one for a while
+(tests, a foreign model).
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from wmr_mujoco.robots import (
     double_steer,
     mecanum4,
     omni3,
+    omni3_reduced,
     single_steer,
     tricycle,
     whipple,
@@ -37,6 +41,7 @@ ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
     bicycle.SPEC,
     tricycle.SPEC,
     omni3.SPEC,
+    omni3_reduced.SPEC,
     mecanum4.SPEC,
     diffdrive.SPEC,
     single_steer.SPEC,

@@ -17,12 +17,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic import tricycle
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.analytic.planar import path_length, wrap_angle
 from wmr_mujoco.analytic.wheel_dynamics import WheelDynamics
-from wmr_mujoco.models.params import OmniParams, TricycleParams
+from wmr_mujoco.robots.omni3.params import OmniParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.roller_wheels.omni_dynamics import OmniDynamics
+from wmr_mujoco.robots.tricycle import analytic as tricycle
+from wmr_mujoco.robots.tricycle.params import TricycleParams
 
 
 @dataclass(frozen=True, repr=False)

@@ -6,9 +6,14 @@ import mujoco
 import pytest
 
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.params_wheeled import DiffDriveParams
+from wmr_mujoco.models.params.wheeled import BallCasterParams
+from wmr_mujoco.robots import ROBOTS
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 
-CASTER_ROBOTS = ("diffdrive", "single_steer", "double_steer")
+#: Every registered robot on ball casters (its parameters have a ``caster`` ball), read
+#: from the registry.
+CASTER_ROBOTS = [name for name, spec in ROBOTS.items() if spec.params_type is not None
+                 and isinstance(getattr(spec.params_type(), "caster", None), BallCasterParams)]
 
 
 @pytest.mark.parametrize("robot", CASTER_ROBOTS)

@@ -6,8 +6,8 @@ import pytest
 
 from wmr_mujoco import ROBOTS, load
 from wmr_mujoco.models.builders.common import to_xml
-from wmr_mujoco.models.builders.disc import build
-from wmr_mujoco.models.params import DiscParams
+from wmr_mujoco.robots.disc.builder import build
+from wmr_mujoco.robots.disc.params import DiscParams
 
 WHEELS = {
     "disc": {"wheel": lambda p: p.wheel},
@@ -29,11 +29,24 @@ def _inertia_about_joint_axis(model: mujoco.MjModel, joint: str) -> float:
     return float(axis @ inertia @ axis)
 
 
-@pytest.mark.parametrize("robot", list(WHEELS))
-def test_total_mass_and_wheel_axial_inertia(robot):
+#: Every registered robot built from its parameters (read from the registry: a new robot
+#: is checked with no edit here).
+BUILT = [name for name, spec in ROBOTS.items() if spec.build is not None]
+
+
+@pytest.mark.parametrize("robot", BUILT)
+def test_total_mass_is_the_parameters_total_mass(robot):
+    # Every body's mass is a parameter or a sum of them: the compiled total equals the
+    # parameters' ``total_mass`` to rounding (rel 1e-12).
     params = ROBOTS[robot].params_type()
     model = load(robot)
     assert sum(model.body_mass[1:]) == pytest.approx(params.total_mass, rel=1e-12)
+
+
+@pytest.mark.parametrize("robot", list(WHEELS))
+def test_wheel_axial_inertia_is_the_thin_disc(robot):
+    params = ROBOTS[robot].params_type()
+    model = load(robot)
     for joint, wheel_of in WHEELS[robot].items():
         w = wheel_of(params)
         assert _inertia_about_joint_axis(model, joint) == pytest.approx(
@@ -57,9 +70,10 @@ def test_exported_xml_is_clean():
 
 # ---- Visual mounts, forks and stems leave the physics untouched (issue 17 item 8) ----
 
-#: The robots whose wheels are held by visual motor mounts, axles, forks or caster stems.
-MOUNTED = ("omni3", "mecanum4", "diffdrive", "single_steer", "double_steer", "whipple",
-           "bicycle", "tricycle", "disc")
+#: The robots whose wheels are held by visual motor mounts, axles, forks or caster stems:
+#: every registered robot built from its parameters whose model has a visual geom.
+MOUNTED = [name for name in BUILT
+           if (load(name).geom_group == 2).any()]
 #: Compiled arrays that define the dynamics: bodies, joints and dofs, actuators.
 PHYSICS_ARRAYS = ("body_parentid", "body_pos", "body_quat", "body_mass", "body_inertia",
                   "body_ipos", "body_iquat", "jnt_type", "jnt_axis", "jnt_pos", "jnt_range",

@@ -7,10 +7,10 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import diffdrive
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.params_wheeled import DiffDriveParams
+from wmr_mujoco.robots.diffdrive import analytic as diffdrive
 from wmr_mujoco.robots.diffdrive import caster_drag
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 
 P = DiffDriveParams()
 ROLLING = dataclasses.replace(P, caster=dataclasses.replace(P.caster, rolling_friction=True))

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots import diffdrive
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation.scenarios import ScenarioKind
 

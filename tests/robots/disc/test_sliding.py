@@ -40,7 +40,7 @@ def test_sliding_wheel_judges_every_pulse_of_the_family(mounted):
 def test_slip_pulse_meets_the_closed_form_and_stays_on_the_floor(mounted, ratio, on_time):
     """Sliding ẍ, pulse and coast θ̈ and re-grip time within 2 % (issue 13), and no
     sliding step off the floor: the floor pair holds the wheel down up to a slip of
-    g Δt/(μ d) (builders.disc.floor_pair), above every slip of the family."""
+    g Δt/(μ d) (robots/disc/builder.floor_pair), above every slip of the family."""
     wheel = sliding.mounted_wheel(mounted)
     pulse = sliding.SlipPulse(wheel, ratio * wheel.max_rolling_torque, on_time)
     top_slip = (wheel.radius * pulse.spin_acceleration - pulse.linear_acceleration) * on_time

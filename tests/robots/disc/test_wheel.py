@@ -5,8 +5,8 @@ from dataclasses import replace
 import pytest
 
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.params import DiscParams
 from wmr_mujoco.robots import get_spec
+from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.robots.disc.wheel import mounted_wheel
 from wmr_mujoco.validation.runner import run_scenario
 

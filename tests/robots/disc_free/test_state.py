@@ -6,7 +6,7 @@ import mujoco
 import pytest
 
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.params import DiscParams
+from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.robots.disc_free.state import (
     FreeRun,
     disc_from_model,

@@ -6,11 +6,11 @@ import math
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic import pitch_averaged as pa
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import collider
 from wmr_mujoco.robots.mecanum4.geometry import layout
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.roller_wheels import pitch_averaged as pa
 
 P = MecanumParams()
 COMMANDS = [(0.3, 0.0, 0.0), (0.0, 0.3, 0.0), (0.0, 0.0, 1.0),

@@ -3,9 +3,9 @@
 import numpy as np
 
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
-from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.robots.mecanum4.builder import WHEEL_NAMES
 from wmr_mujoco.robots.mecanum4.geometry import layout
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.roller_wheels import layout_from_model
 
 

@@ -6,11 +6,11 @@ import math
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import pitch_averaged as pa
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import SPEC, kinematic_runs
 from wmr_mujoco.robots.mecanum4.collider import realised_twist
 from wmr_mujoco.robots.mecanum4.kinematics import MecanumKinematics, is_step
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
+from wmr_mujoco.robots.roller_wheels import pitch_averaged as pa
 from wmr_mujoco.validation.runner import run_scenario
 
 P = MecanumParams()
@@ -36,7 +36,7 @@ def test_controls_are_the_ideal_wheel_rates():
 def test_rhs_carries_both_models():
     # Sideways at heading 90°: the judged model moves at the colliders' mean speed
     # (robots.mecanum4.collider, tested in test_collider.py and against MuJoCo's rolling
-    # radius in tests/analytic/test_mecanum_contact.py), the ideal one at v, both along
+    # radius in tests/robots/mecanum4/test_contact.py), the ideal one at v, both along
     # −X (Rot(90°) ŷ = −x̂).
     x = np.array([0.0, 0.0, math.pi / 2, 0.0, 0.0, math.pi / 2])
     d = MecanumKinematics(P).rhs(x, np.array([0.0, 0.3, 0.0]))
@@ -64,7 +64,7 @@ def _advance(x, start, pose):
 ])
 def test_steady_shortfall_is_the_pitch_averaged_one(name, pose, derived):
     # Physics: at steady speed (t ≥ 1 s, ramp over) the chassis falls short of the ideal
-    # model by the derived fraction (k = ⟨sec φ⟩, analytic/pitch_averaged.py). Tolerance
+    # model by the derived fraction (k = ⟨sec φ⟩, robots/roller_wheels/pitch_averaged.py). Tolerance
     # ±25 %: the hand-over impacts and the four wheels' different roller phases are not
     # in the averaged model.
     s = dataclasses.replace(run(name), duration=2.0)

@@ -4,8 +4,8 @@ import dataclasses
 
 import pytest
 
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import SPEC
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.mecanum4.ripple import ripple
 
 

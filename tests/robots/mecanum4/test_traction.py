@@ -5,12 +5,12 @@ import math
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import pitch_averaged as pa
-from wmr_mujoco.analytic.roller_stick_slip import step_response
 from wmr_mujoco.lookup import load
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4.collider import realised_twist
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.mecanum4.traction import step_acceleration_time, step_platform
+from wmr_mujoco.robots.roller_wheels import pitch_averaged as pa
+from wmr_mujoco.robots.roller_wheels.roller_stick_slip import step_response
 
 
 def test_rise_time_along_x_uses_the_model_mass_only():

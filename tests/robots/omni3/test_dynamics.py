@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.params import OmniParams
 from wmr_mujoco.robots import omni3
 from wmr_mujoco.robots.omni3 import DYNAMIC_SPECS
 from wmr_mujoco.robots.omni3 import dynamics as dy
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import (
     CONTACT_WINDOW,
     RunSpec,

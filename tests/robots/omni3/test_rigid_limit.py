@@ -14,12 +14,13 @@ the arc's moment is what makes it meet them.
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.params import OmniParams, SimParams
+from wmr_mujoco.models.params import SimParams
 from wmr_mujoco.robots.omni3.coasting import COAST_SPEC, coast_figures
 from wmr_mujoco.robots.omni3.dynamics import path_length
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import RunSpec, hybrid, simulate_runs
+from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
 from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 
 STIFF = OmniParams(sim=SimParams(timestep=0.0005, contact_timeconst=0.001))

@@ -5,10 +5,9 @@ import numpy as np
 import pytest
 
 from wmr_mujoco import load
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.models.params import OmniParams
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4.geometry import layout
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.roller_wheels import (
     drive_from_model,
     dynamics_from_model,
@@ -18,6 +17,7 @@ from wmr_mujoco.robots.roller_wheels import (
     rolling_radius_profile,
     static_penetration,
 )
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.validation.adapters import body_twist
 
 WHEELS = ("wheel1", "wheel2", "wheel3")

@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from wmr_mujoco.analytic import whipple as wa
-from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import analytic as wa
 from wmr_mujoco.robots.whipple import eigen
+from wmr_mujoco.robots.whipple.params import WhippleParams
 from wmr_mujoco.robots.whipple.rolling import compile_model, steady_rolling
 from wmr_mujoco.sim.linearize import step_map, step_map_direct
 

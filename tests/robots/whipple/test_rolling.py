@@ -8,8 +8,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.whipple import rolling
+from wmr_mujoco.robots.whipple.params import WhippleParams
 
 
 @pytest.fixture(scope="module")

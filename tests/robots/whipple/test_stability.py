@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from wmr_mujoco.analytic import whipple as wa
-from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import analytic as wa
 from wmr_mujoco.robots.whipple import stability as st
+from wmr_mujoco.robots.whipple.params import WhippleParams
 from wmr_mujoco.robots.whipple.rolling import compile_model
 
 

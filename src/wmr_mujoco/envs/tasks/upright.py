@@ -1,7 +1,7 @@
 """StayUpright: keep a leaning bicycle (Whipple) up at a commanded speed it cannot hold alone.
 
 Below its weave speed ``v_w`` (≈ 4.3 m/s for the benchmark bicycle,
-:func:`wmr_mujoco.analytic.whipple.weave_speed`) the uncontrolled Whipple bicycle falls
+:func:`wmr_mujoco.robots.whipple.analytic.weave_speed`) the uncontrolled Whipple bicycle falls
 over. Episode: steady upright rolling at ``v* ~ U(min_speed, max_speed)`` (``max_speed``
 must lie below ``v_w``), then a sideways push: lean rate ``φ̇₀ ~ ±U(0.2, 1) max_push``
 rad/s (:func:`wmr_mujoco.robots.whipple.rolling.push`).
@@ -27,10 +27,10 @@ from typing import Any
 
 import numpy as np
 
-from wmr_mujoco.analytic import whipple as analytic
 from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort
 from wmr_mujoco.envs.tasks.goal import BONUS
-from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import analytic
+from wmr_mujoco.robots.whipple.params import WhippleParams
 from wmr_mujoco.robots.whipple.rolling import push, roll_steadily
 
 

@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from dm_control import mjcf
 
 from wmr_mujoco.models.builders import common
-from wmr_mujoco.models.params_wheeled import BallCasterParams
+from wmr_mujoco.models.params.wheeled import BallCasterParams
 
 SOCKET_RGBA = (0.6, 0.6, 0.65, 0.35)
 BALL_RGBA = (0.85, 0.85, 0.88, 1.0)

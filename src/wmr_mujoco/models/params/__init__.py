@@ -9,11 +9,11 @@ thin uniform discs of radius ``R``, width ``w`` and mass ``m``:
 
 Each dataclass checks its own fields in ``__post_init__`` and raises ``ValueError``
 naming the field, its value and the valid range. The field checks are in
-:mod:`.fields`, the shared parts in :mod:`.parts`, each robot family's parameters in its
-own module (and in ``models/params_<family>.py``).
+:mod:`.fields`, the parts several robots share in :mod:`.parts` and :mod:`.wheeled`, the
+protocol every robot's parameters follow in :mod:`.protocol`. Each robot's own parameters
+are in its folder, ``wmr_mujoco.robots.<robot>.params``.
 """
 
-from wmr_mujoco.models.params.disc import FREE_INTEGRATORS, DiscParams, FreeDiscParams
 from wmr_mujoco.models.params.fields import (
     _check_choice,
     _check_count,
@@ -23,7 +23,6 @@ from wmr_mujoco.models.params.fields import (
     _check_types,
     _is_number,
 )
-from wmr_mujoco.models.params.omni import OmniParams
 from wmr_mujoco.models.params.parts import (
     MAX_GAIN,
     MAX_RATE,
@@ -36,12 +35,11 @@ from wmr_mujoco.models.params.parts import (
     WheelParams,
 )
 from wmr_mujoco.models.params.protocol import ParamsT, RobotParams, params_or_default
-from wmr_mujoco.models.params.vehicles import BicycleParams, TricycleParams
 
-__all__ = ["FREE_INTEGRATORS", "MAX_GAIN", "MAX_RATE", "MAX_TORQUE", "MAX_WHEEL_MASS",
-           "MAX_WHEEL_RADIUS", "STEERING_FIELDS", "BicycleParams", "DiscParams", "DriveParams",
-           "FreeDiscParams", "OmniParams", "ParamsT", "RobotParams", "SimParams",
-           "TricycleParams", "WheelParams", "_check_choice", "_check_count",
+__all__ = ["MAX_GAIN", "MAX_RATE", "MAX_TORQUE", "MAX_WHEEL_MASS",
+           "MAX_WHEEL_RADIUS", "STEERING_FIELDS", "DriveParams",
+           "ParamsT", "RobotParams", "SimParams",
+           "WheelParams", "_check_choice", "_check_count",
            "_check_floor_pair", "_check_positive_fields", "_check_range", "_check_types",
            "_is_number",
            "params_or_default"]

@@ -2,7 +2,7 @@
 
 Kinematic inputs ``(v, ω)``: speed and yaw rate of the axle midpoint; the wheels roll at
 ``v ∓ ω b/2`` (left, right), so the controls are ``(v_L/R, v_R/R)``; state ``(x, y, ψ)``
-of the midpoint, the unicycle (:mod:`wmr_mujoco.analytic.diffdrive`). Campion class
+of the midpoint, the unicycle (:mod:`wmr_mujoco.robots.diffdrive.analytic`). Campion class
 (2,0), computed from the model by :mod:`wmr_mujoco.models.classify`.
 
 Turning in place the midpoint does not move; that run is judged on its worst centre
@@ -18,13 +18,12 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import diffdrive
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.builders import diffdrive as builder
 from wmr_mujoco.models.params import RobotParams, params_or_default
-from wmr_mujoco.models.params_wheeled import DiffDriveParams
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.diffdrive import caster_drag
+from wmr_mujoco.robots.diffdrive import analytic as diffdrive
+from wmr_mujoco.robots.diffdrive import builder, caster_drag
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation import variations as var

@@ -39,9 +39,9 @@ from typing import NamedTuple
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import diffdrive
 from wmr_mujoco.models.params import RobotParams, params_or_default
-from wmr_mujoco.models.params_wheeled import DiffDriveParams
+from wmr_mujoco.robots.diffdrive import analytic as diffdrive
+from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario

@@ -18,10 +18,10 @@ import numpy as np
 from wmr_mujoco.analytic import unicycle
 from wmr_mujoco.analytic.wheel_dynamics import WheelDynamics
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.builders import disc as builder
-from wmr_mujoco.models.params import DiscParams, RobotParams, params_or_default
+from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.disc import sliding
+from wmr_mujoco.robots.disc import builder, sliding
+from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.robots.disc.wheel import mounted_wheel
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation import variations as var

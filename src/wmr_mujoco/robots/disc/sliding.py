@@ -10,7 +10,7 @@ re-grip time within 2 %.
 
 Judged over a family of pulses (:data:`PULSES`), each figure's worst over the family.
 The wheel slides on the disc's floor contact pair
-(:func:`~wmr_mujoco.models.builders.disc.floor_pair`): with the geoms' default contact
+(:func:`~wmr_mujoco.robots.disc.builder.floor_pair`): with the geoms' default contact
 a sliding wheel pushes itself off the floor and hops (derivation and figures in
 ``docs/rolling-disc.md``).
 """

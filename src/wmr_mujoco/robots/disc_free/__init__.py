@@ -14,8 +14,9 @@ from collections.abc import Callable, Iterator
 import mujoco
 import numpy as np
 
-from wmr_mujoco.models.builders import disc as builder
-from wmr_mujoco.models.params import FreeDiscParams, RobotParams
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots.disc import builder
+from wmr_mujoco.robots.disc.params import FreeDiscParams
 from wmr_mujoco.robots.disc_free import measurements as ms
 from wmr_mujoco.robots.disc_free.state import FreeRun
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec

@@ -15,12 +15,11 @@ from collections.abc import Mapping
 
 import mujoco
 
-from wmr_mujoco.models.builders import mecanum4 as builder
 from wmr_mujoco.models.params import params_or_default
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.mecanum4 import dynamics, kinematics, ripple
+from wmr_mujoco.robots.mecanum4 import builder, dynamics, kinematics, ripple
 from wmr_mujoco.robots.mecanum4.grouped import Group
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.roller_wheels import (
     DIRECTIONS_DEG,
     RAMP,

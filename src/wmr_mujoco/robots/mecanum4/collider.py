@@ -2,10 +2,10 @@
 
 :func:`realised_twist` is the mean chassis twist under the ideal wheel rates
 ``θ̇ = H(γ) ν_cmd`` with the rolling constraint of the colliders the model is built with
-(:mod:`wmr_mujoco.analytic.mecanum_contact`): the ellipsoid's (or sphere's) exact lowest
+(:mod:`wmr_mujoco.robots.mecanum4.contact`): the ellipsoid's (or sphere's) exact lowest
 point; the ideal profile's for ``roller_shape="profile"``; for capsules, which the
 contact module does not cover, the pitch-averaged model
-(:func:`wmr_mujoco.analytic.pitch_averaged.realised_twist_map`).
+(:func:`wmr_mujoco.robots.roller_wheels.pitch_averaged.realised_twist_map`).
 :func:`effective_layout` is a wheel layout whose rolling rows give that same twist, for
 the step model (:mod:`.traction`).
 """
@@ -16,12 +16,12 @@ import functools
 
 import numpy as np
 
-from wmr_mujoco.analytic import mecanum_contact as mc
-from wmr_mujoco.analytic import mecanum_roller as mr
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic import pitch_averaged as pa
-from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.robots.mecanum4 import contact as mc
+from wmr_mujoco.robots.mecanum4 import roller as mr
 from wmr_mujoco.robots.mecanum4.geometry import layout
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.roller_wheels import pitch_averaged as pa
 
 #: A wheel whose commanded rate is below this (rad/s) is at rest.
 AT_REST = 1e-9

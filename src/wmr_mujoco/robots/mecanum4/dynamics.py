@@ -1,6 +1,6 @@
 """``mecanum4`` under wheel torques: the reduced Lagrange equations of an omni platform.
 
-:class:`wmr_mujoco.analytic.omni_dynamics.OmniDynamics` holds for any wheel Jacobian H,
+:class:`wmr_mujoco.robots.roller_wheels.omni_dynamics.OmniDynamics` holds for any wheel Jacobian H,
 mecanum included (its derivation uses only ``θ̇ = H ν`` and the virtual power ``τᵀθ̇``)::
 
     (diag(M, M, I_z) + I_w HᵀH) ν̇ + r [−M v, M u, 0]ᵀ = Hᵀ τ,
@@ -10,7 +10,7 @@ with M, I_z and I_w read from the compiled model
 inertia is neglected. Judged (requirement, issue 5's 3 % for omni3) on equal torques,
 straight ahead, where no roller turns. Torques that drive sideways or turn leave the
 chassis slower than the reduced model (roller hand-overs, the pitch effect of
-:mod:`wmr_mujoco.analytic.pitch_averaged`, not in the reduced model): reported only.
+:mod:`wmr_mujoco.robots.roller_wheels.pitch_averaged`, not in the reduced model): reported only.
 """
 
 from __future__ import annotations
@@ -20,10 +20,10 @@ from collections.abc import Mapping
 import mujoco
 import numpy as np
 
-from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams, params_or_default
-from wmr_mujoco.models.params_mecanum import MecanumParams
+from wmr_mujoco.robots.mecanum4.builder import WHEEL_NAMES
 from wmr_mujoco.robots.mecanum4.geometry import layout
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.roller_wheels import OmniDynamicsAdapter, dynamics_from_model
 from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
@@ -77,7 +77,8 @@ def roller_force_ratio(scenario: Scenario, trace: Trace, adapter: OmniDynamicsAd
     """Largest roller-axis force of the reduced model over the run, over μ N.
 
     A wheel's traction ``F_t`` along its drive direction
-    (:meth:`~wmr_mujoco.analytic.omni_dynamics.OmniDynamics.traction_forces`) is the drive
+    (:meth:`~wmr_mujoco.robots.roller_wheels.omni_dynamics.OmniDynamics.traction_forces`) is
+    the drive
     component of a force along its contact roller's axis, ``F = F_t / cos γ``; the contact
     transmits it without slipping while ``|F| ≤ μ N``, ``N = M g / 4``. Above 1 the
     reduced (rolling) model does not apply to the run.

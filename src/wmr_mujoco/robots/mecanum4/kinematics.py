@@ -5,9 +5,10 @@ ideal formula ``θ̇ = H(γ) ν_cmd`` (FL, FR, RL, RR). The **kinematic** model
 ``(Ẋ, Ẏ, ψ̇) = Rot(ψ) ν̄(ν_cmd)`` rolls on the model's own roller colliders
 (:mod:`wmr_mujoco.robots.mecanum4.collider`: their contact's rolling rows, least squares
 over the four wheels, averaged over the roller pitch; it contains the pitch average of
-:mod:`wmr_mujoco.analytic.pitch_averaged`, ``tan γ̄ = ⟨sec φ⟩ tan γ``) and judges the ramped
+:mod:`wmr_mujoco.robots.roller_wheels.pitch_averaged`, ``tan γ̄ = ⟨sec φ⟩ tan γ``) and judges
+the ramped
 runs, with the **ideal** model ``Rot(ψ) ν_cmd`` beside it. A **step** command is judged
-against the stick–slip dynamic model (:mod:`wmr_mujoco.analytic.roller_stick_slip`,
+against the stick–slip dynamic model (:mod:`wmr_mujoco.robots.roller_wheels.roller_stick_slip`,
 parameters from the compiled model by :mod:`.traction`): its body twist ``ν(t)`` from rest
 is computed once, and the pose follows ``Rot(ψ) ν(t)``; the kinematic and ideal models
 are reported beside it (:func:`judge_kinematic`). After the rise the step model rolls as
@@ -24,15 +25,15 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.planar import wrap_angle
-from wmr_mujoco.analytic.roller_stick_slip import StepResponse, step_response
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams, params_or_default
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import collider, traction
+from wmr_mujoco.robots.mecanum4.builder import WHEEL_NAMES
 from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.roller_wheels.roller_stick_slip import StepResponse, step_response
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking, rms
 from wmr_mujoco.validation.scenarios import Scenario

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots.mecanum4.builder import WHEEL_NAMES
 from wmr_mujoco.robots.roller_wheels import rolling_radius_profile
 from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario

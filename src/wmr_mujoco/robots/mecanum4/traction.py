@@ -1,7 +1,7 @@
 """Step commands on ``mecanum4``: the stick–slip dynamic model and its parameters.
 
 :func:`step_platform` reads every parameter of
-:class:`wmr_mujoco.analytic.roller_stick_slip.RollerPlatform` from the compiled model:
+:class:`wmr_mujoco.robots.roller_wheels.roller_stick_slip.RollerPlatform` from the compiled model:
 mass and yaw inertia (:func:`~wmr_mujoco.robots.roller_wheels.dynamics_from_model`),
 wheel spin inertia with the rotor armature, the rate servo's gain and torque limit (the
 actuator's user data and ``forcerange``), the contact friction (MuJoCo takes the larger of
@@ -11,7 +11,7 @@ rows are those of the colliders' effective layout
 angles γ̄ on the wheels the command turns, with the colliders' own rolling radius, angle
 and lever), so that after the rise the model rolls as the kinematic model does.
 :func:`step_acceleration_time` keeps the traction-only rise time
-(:mod:`wmr_mujoco.analytic.roller_traction`) for comparison.
+(:mod:`wmr_mujoco.robots.roller_wheels.roller_traction`) for comparison.
 """
 
 from __future__ import annotations
@@ -19,16 +19,16 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic.roller_stick_slip import RollerPlatform
-from wmr_mujoco.analytic.roller_traction import acceleration_time
 from wmr_mujoco.models.builders.common import NUSER_ACTUATOR
-from wmr_mujoco.models.builders.mecanum4 import WHEEL_NAMES
 from wmr_mujoco.models.colliders import colliders, pair_with
-from wmr_mujoco.models.params_mecanum import MecanumParams
 from wmr_mujoco.robots.mecanum4 import collider
+from wmr_mujoco.robots.mecanum4.builder import WHEEL_NAMES
 from wmr_mujoco.robots.mecanum4.geometry import layout
+from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.roller_wheels import dynamics_from_model
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.roller_wheels.roller_stick_slip import RollerPlatform
+from wmr_mujoco.robots.roller_wheels.roller_traction import acceleration_time
 
 #: Gravity, m/s².
 GRAVITY = 9.81

@@ -5,7 +5,7 @@ Kinematic inputs ``(u, v, r)``: body twist (``world_frame`` scenarios give world
 scenarios of issue 16 are measurement scenarios, one module per concept: step commands
 and torque inputs (:mod:`.dynamics`), coasting (:mod:`.coasting`) and the slip onset
 (:mod:`.traction`), all against the hybrid model
-(:mod:`wmr_mujoco.analytic.omni_hybrid`) read from the compiled model (:mod:`.model`);
+(:mod:`wmr_mujoco.robots.roller_wheels.omni_hybrid`) read from the compiled model (:mod:`.model`);
 the dynamic runs are simulated together (:mod:`.runs`).
 """
 
@@ -20,13 +20,12 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.planar import twist_step
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.builders import omni3 as builder
-from wmr_mujoco.models.params import OmniParams, RobotParams, params_or_default
+from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.omni3 import coasting, dynamics, peer, traction
+from wmr_mujoco.robots.omni3 import builder, coasting, dynamics, peer, traction
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import WHEELS
 from wmr_mujoco.robots.roller_wheels import (
     DIRECTIONS_DEG,
@@ -37,6 +36,7 @@ from wmr_mujoco.robots.roller_wheels import (
     translation,
     twist_inputs,
 )
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.spec import Clip, RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation import variations as var

@@ -18,12 +18,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from wmr_mujoco.analytic import omni_hybrid as oh
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots.omni3.dynamics import _run
 from wmr_mujoco.robots.omni3.runs import RunSpec, hybrid
 from wmr_mujoco.robots.roller_wheels import SPEED, YAW_RATE
+from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
 from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
 

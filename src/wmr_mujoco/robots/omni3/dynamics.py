@@ -28,10 +28,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.params import OmniParams, RobotParams
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import (
     CONTACT_WINDOW,
     Run,
@@ -47,6 +47,7 @@ from wmr_mujoco.robots.roller_wheels import (
     lagrange_of,
     translation,
 )
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 from wmr_mujoco.validation.metrics import Metric, Series, Target, rms
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario
@@ -233,7 +234,7 @@ def lagrange_twists(params: RobotParams | None, torques: np.ndarray, twist0: np.
     """Body twists of the reduced Lagrange model under constant torques (RK4 on Δt).
 
     ``(P + I_w HᵀH) ν̇ = Hᵀτ − c(ν)``, ``c = (−M r v, M r u, 0)``
-    (:class:`~wmr_mujoco.analytic.omni_dynamics.OmniDynamics`).
+    (:class:`~wmr_mujoco.robots.roller_wheels.omni_dynamics.OmniDynamics`).
     """
     dyn = lagrange_of(hybrid(params))  # type: ignore[arg-type]
     out = np.zeros((n + 1, 3))

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from wmr_mujoco.models.loading import load
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.roller_wheels import rolling_radius_profile
 from wmr_mujoco.robots.roller_wheels.trials import (
     PEER_NAME,

@@ -4,8 +4,9 @@ Every dynamic scenario of omni3 (step commands, torque inputs, coasting) is one
 :class:`RunSpec`. :func:`dynamic_runs` simulates all of them together: the physics in two
 batched, threaded ``mujoco.rollout`` calls (one per actuation mode, each from its own
 settled start) plus one for the coasts, and the hybrid model
-(:func:`~wmr_mujoco.analytic.omni_hybrid.simulate_batch`) in one vectorised integration of
-every run. The result is cached per parameter set, so the scenarios that read it share
+(:func:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.simulate_batch`) in one vectorised
+integration of every run. The result is cached per parameter set, so the scenarios that read it
+share
 one simulation.
 """
 
@@ -19,12 +20,12 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_hybrid as oh
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
-from wmr_mujoco.models.params import OmniParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.roller_wheels import drive_from_model, hybrid_from_model, roller_rates
+from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.sim.engine import STATE_SPEC, simulate, simulate_batch
 from wmr_mujoco.sim.stepping import check_healthy
 
@@ -268,9 +269,9 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
     ``timestep``: the physics' step (None: the model's own, as ``wmr validate``); the
     hybrid model reports on the same grid, in RK4 steps of at most :data:`HYBRID_STEP`.
     ``arc``: the hybrid model with the weight's moment over the roller arc
-    (:func:`~wmr_mujoco.analytic.omni_hybrid.simulate_batch`; on in ``wmr validate``).
+    (:func:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.simulate_batch`; on in ``wmr validate``).
     ``relax``: each hand-over's jump spread as the soft contact makes it at the physics'
-    step (:attr:`~wmr_mujoco.analytic.omni_hybrid.OmniHybrid.handover_relaxation`; on in
+    step (:attr:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid.handover_relaxation`; on in
     ``wmr validate``); off: made at once (the rigid impact map).
 
     Raises:

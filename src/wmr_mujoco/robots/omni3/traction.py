@@ -3,7 +3,7 @@
 Prediction (:func:`predicted_slip_torque`): at rest, torques ``τ = s · pattern`` give
 rolling-wheel tractions ``F_t = (τ − I_w H ν̇)/r`` with ``ν̇ = (P + I_w HᵀH)⁻¹ Hᵀ τ``
 (mean lever L) and normal loads N from the robot's balance
-(:meth:`~wmr_mujoco.analytic.omni_hybrid.OmniHybrid.normal_loads`); both are affine in
+(:meth:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid.normal_loads`); both are affine in
 s, so each wheel's onset solves ``s |F₁| = μ (N₀ + s N₁)``.
 
 Measurement (:func:`measure_slip_onset`): ONE run in torque mode whose scale ramps
@@ -28,11 +28,12 @@ import math
 
 import numpy as np
 
-from wmr_mujoco.analytic import omni_hybrid as oh
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.actuation import ActuationMode
-from wmr_mujoco.models.params import OmniParams, RobotParams
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import WHEELS, base_states, hybrid, settled
+from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.sim.engine import simulate
 from wmr_mujoco.validation.metrics import Metric, Series, Target
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario

@@ -12,9 +12,9 @@ from typing import Protocol, runtime_checkable
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
 from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.roller_wheels.omni_dynamics import OmniDynamics
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose, body_twist
 
 
@@ -37,7 +37,7 @@ class OmniDynamicsAdapter:
     """An omni-wheeled robot under wheel torques: ``x = (X, Y, ψ, u, v, r)``.
 
     The reduced Lagrange equations
-    (:meth:`~wmr_mujoco.analytic.omni_dynamics.OmniDynamics.state_derivative`) against
+    (:meth:`~wmr_mujoco.robots.roller_wheels.omni_dynamics.OmniDynamics.state_derivative`) against
     the ``base`` site's pose and body twist.
 
     Attributes:

@@ -14,10 +14,10 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
-from wmr_mujoco.analytic.omni_dynamics import OmniDynamics
-from wmr_mujoco.analytic.omni_hybrid import Drive, OmniHybrid, RollerGeometry
 from wmr_mujoco.models.actuation import ActuationMode
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.robots.roller_wheels.omni_dynamics import OmniDynamics
+from wmr_mujoco.robots.roller_wheels.omni_hybrid import Drive, OmniHybrid, RollerGeometry
 from wmr_mujoco.sim.inertia import hinge_inertia, inertia_about_axis, inertia_tensor_about
 from wmr_mujoco.sim.soft_contact import slip_relaxation
 
@@ -126,7 +126,7 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
                       wheel_joints: Sequence[str], compliant: bool = True) -> OmniHybrid:
     """The hybrid model of a compiled three-omni-wheel model with ellipsoid rollers.
 
-    :class:`~wmr_mujoco.analytic.omni_hybrid.OmniHybrid` at the reference pose.
+    :class:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid` at the reference pose.
 
     ``M``, ``I_w`` (hinge inertia with armature) from :func:`dynamics_from_model`, so the
     Lagrange and the hybrid model come from one reading; the composite 3×3 inertia about

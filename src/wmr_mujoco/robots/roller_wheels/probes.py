@@ -16,9 +16,9 @@ from dataclasses import dataclass, field
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.colliders import colliders
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.roller_wheels.adapters import OmniAdapter
 from wmr_mujoco.robots.roller_wheels.model_info import OmniModelInfo, layout_from_model
 from wmr_mujoco.validation.adapters import Adapter

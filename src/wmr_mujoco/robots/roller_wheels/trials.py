@@ -22,7 +22,6 @@ from types import ModuleType
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic import omni_kinematics as ok
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import REPO_ROOT
 from wmr_mujoco.robots.roller_wheels import (
@@ -35,6 +34,7 @@ from wmr_mujoco.robots.roller_wheels import (
     translation,
     twist_inputs,
 )
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.sim.engine import Engine, simulate
 from wmr_mujoco.sim.timing import timed
 from wmr_mujoco.validation.adapters import AdapterFactory, body_pose

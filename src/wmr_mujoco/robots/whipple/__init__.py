@@ -1,7 +1,7 @@
 """The Whipple benchmark bicycle (Meijaard, Papadopoulos, Ruina & Schwab 2007).
 
 A riderless bicycle on knife-edge wheels, uncontrolled, measured against the benchmark's
-linearised equations (:mod:`wmr_mujoco.analytic.whipple`). Its scenarios are all
+linearised equations (:mod:`wmr_mujoco.robots.whipple.analytic`). Its scenarios are all
 measurements in the physics:
 
 * ``critical speeds``: weave and capsize speeds from the physics (:mod:`.eigen`);
@@ -14,10 +14,9 @@ measurements in the physics:
 
 from __future__ import annotations
 
-from wmr_mujoco.models.builders import whipple as builder
-from wmr_mujoco.models.params_whipple import WhippleParams
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
-from wmr_mujoco.robots.whipple import eigen, stability
+from wmr_mujoco.robots.whipple import builder, eigen, stability
+from wmr_mujoco.robots.whipple.params import WhippleParams
 from wmr_mujoco.robots.whipple.rolling import NAME, compile_model, readings
 from wmr_mujoco.validation.command import TorqueCommand
 from wmr_mujoco.validation.family import Family, Vary

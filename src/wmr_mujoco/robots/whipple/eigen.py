@@ -19,7 +19,7 @@ Method (linearisation of the simulator's own step map, :mod:`wmr_mujoco.sim.line
    scale (``|s| τ_c`` of order 1 or more). The benchmark's four modes are those much
    slower than the contact, ``|s| τ_c <`` :data:`SLOW_LIMIT`; exactly four must be
    (otherwise the measurement raises). A complex pair is weave, the more negative real
-   one castering and the other capsize (:func:`wmr_mujoco.analytic.whipple.classify`).
+   one castering and the other capsize (:func:`wmr_mujoco.robots.whipple.analytic.classify`).
 
 Targets (issue 14, requirements): weave and capsize speeds within 1 % of the benchmark's;
 the real and imaginary parts of weave, capsize and castering at 1-10 m/s within
@@ -36,9 +36,9 @@ import mujoco
 import numpy as np
 from scipy.optimize import brentq
 
-from wmr_mujoco.analytic import whipple as analytic
 from wmr_mujoco.models.params import params_or_default
-from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import analytic
+from wmr_mujoco.robots.whipple.params import WhippleParams
 from wmr_mujoco.robots.whipple.rolling import (
     NV,
     ROLL,

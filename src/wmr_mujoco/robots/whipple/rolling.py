@@ -18,9 +18,9 @@ import math
 import mujoco
 import numpy as np
 
-from wmr_mujoco.models.builders import whipple as builder
 from wmr_mujoco.models.params import params_or_default
-from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import builder
+from wmr_mujoco.robots.whipple.params import WhippleParams
 
 NAME = "whipple"
 #: Rolling time before a measurement: many contact time constants, s.

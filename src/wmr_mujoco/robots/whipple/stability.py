@@ -33,9 +33,9 @@ import mujoco
 import numpy as np
 from scipy.linalg import expm
 
-from wmr_mujoco.analytic import whipple as analytic
 from wmr_mujoco.models.params import RobotParams, params_or_default
-from wmr_mujoco.models.params_whipple import WhippleParams
+from wmr_mujoco.robots.whipple import analytic
+from wmr_mujoco.robots.whipple.params import WhippleParams
 from wmr_mujoco.robots.whipple.rolling import compile_model, lean_angle, push, roll_steadily
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric, Series, Target

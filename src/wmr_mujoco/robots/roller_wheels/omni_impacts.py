@@ -1,0 +1,246 @@
+"""The impact maps of the omni platform's hybrid model: roller hand-overs and re-sticks.
+
+Switch (σ_i changes): plastic impact onto the new contact's constraints in the
+12-dimensional velocity ``q̇ = (V, Ω, θ̇, β̇)`` with mass matrix 𝕄::
+
+    q̇⁺ = q̇⁻ − 𝕄⁻¹Aᵀ (A𝕄⁻¹Aᵀ)⁻¹ A q̇⁻,      ΔT = ½ (A q̇⁻)ᵀ (A𝕄⁻¹Aᵀ)⁻¹ (A q̇⁻) ≥ 0
+
+(derivations: ``docs/omni-dynamics.md``). :class:`HybridImpacts` is the part of
+:class:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid` that holds these maps; it reads the
+platform's fields and geometry (``mass``, ``inertia``, ``jacobian``, ``roller_rows``, ...).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+if TYPE_CHECKING:
+    from wmr_mujoco.robots.roller_wheels.roller_geometry import RollerGeometry
+
+
+class HybridImpacts:
+    """Impact maps of the hybrid model (mixed into ``OmniHybrid``, which has the fields)."""
+
+    mass: float
+    inertia: np.ndarray
+    wheel_axial: float
+    wheel_armature: float
+    roller_axial: float
+    radius: float
+    distance: float
+    rollers: RollerGeometry
+    gravity: float
+    penetration: float
+    contact_timeconst: float
+
+    # --- impact ----------------------------------------------------------------------------
+    @functools.cached_property
+    def _full_mass(self) -> np.ndarray:
+        Mq = self._build_full_mass()
+        Mq.setflags(write=False)
+        return Mq
+
+    def full_mass(self) -> np.ndarray:
+        """𝕄 of ``q̇ = (V, Ω, θ̇, β̇)``: the wheel spin couples to Ω through I_ax a_i."""
+        return self._full_mass.copy()
+
+    def _build_full_mass(self) -> np.ndarray:
+        Mq = np.zeros((12, 12))
+        Mq[:3, :3] = self.mass * np.eye(3)
+        Mq[3:6, 3:6] = self.inertia
+        a = -self.radial
+        for i in range(3):
+            Mq[3:6, 6 + i] = Mq[6 + i, 3:6] = self.wheel_axial * a[i]
+            Mq[6 + i, 6 + i] = self.wheel_inertia
+            Mq[9 + i, 9 + i] = self.roller_axial
+        return Mq
+
+    def constraint_rows(self, modes: tuple[int, ...], thetas: np.ndarray) -> np.ndarray:
+        """Constraint rows A (9×12) of mode σ: contact velocity along t_i, ẑ and a_i.
+
+        ``t·(V + Ω×p) − R θ̇ = 0``, ``ẑ·(V + Ω×p) − x_c θ̇ = 0``,
+        ``a·(V + Ω×p) − ρ β̇ = 0`` (the roller takes the slide along the axle).
+        """
+        A = np.zeros((9, 12))
+        g = self.rollers
+        for i, (m, th) in enumerate(zip(modes, thetas, strict=True)):
+            phi = float(g.phases(float(th))[m])
+            p = self.contact_point(i, m, float(th))
+            skew_p = np.array([[0, -p[2], p[1]], [p[2], 0, -p[0]], [-p[1], p[0], 0]])
+            for row, (d, coef, col) in enumerate((
+                    (self.drive_dirs[i], -g.rolling_radius(phi), 6 + i),
+                    (np.array([0.0, 0.0, 1.0]), -g.contact_ahead(phi), 6 + i),
+                    (-self.radial[i], -g.contact_radius(phi), 9 + i))):
+                A[3 * i + row, :3] = d
+                A[3 * i + row, 3:6] = -d @ skew_p  # d·(Ω × p) = −d·(p × Ω)
+                A[3 * i + row, col] = coef
+        return A
+
+    def lift(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
+             roller_rates: np.ndarray | None = None) -> np.ndarray:
+        """Full velocity in mode σ: the q̇ with planar part ν that satisfies A q̇ = 0.
+
+        If ``roller_rates`` is given those β̇ replace the constrained ones (a roller that
+        has just come into contact still turns at its old rate).
+        """
+        A = self.constraint_rows(modes, thetas)
+        # Unknowns: V_z, Ω_x, Ω_y, θ̇ (3), β̇ (3); knowns: u, v, r.
+        known = [0, 1, 5]
+        unknown = [2, 3, 4, 6, 7, 8, 9, 10, 11]
+        sol = np.linalg.solve(A[:, unknown], -A[:, known] @ nu)
+        q = np.zeros(12)
+        q[known] = nu
+        q[unknown] = sol
+        if roller_rates is not None:
+            q[9:] = roller_rates
+        return q
+
+    def impact(self, q_minus: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray
+               ) -> tuple[np.ndarray, float]:
+        """Plastic impact onto mode σ's constraints: ``(q̇⁺, ΔT)``, ΔT ≥ 0 the energy lost."""
+        Mq = self.full_mass()
+        A = self.constraint_rows(modes, thetas)
+        cols, rows = self._massive(A)
+        Minv_At = np.zeros((12, rows.size))
+        Minv_At[cols] = np.linalg.solve(Mq[np.ix_(cols, cols)], A[np.ix_(rows, cols)].T)
+        gap = A[rows] @ q_minus
+        impulse = np.linalg.solve(A[rows] @ Minv_At, gap)
+        q_plus = q_minus - Minv_At @ impulse
+        if cols.size < 12:  # massless rollers follow their constraint
+            q_plus[9:] = self.lift(q_plus[[0, 1, 5]], modes, thetas)[9:]
+        return q_plus, float(0.5 * gap @ impulse)
+
+    def _massive(self, A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Velocity columns with inertia and the constraint rows acting on them."""
+        if self.roller_axial > 0.0:
+            return np.arange(12), np.arange(A.shape[0])
+        return np.arange(9), np.array([r for r in range(A.shape[0]) if r % 3 != 2])
+
+    def inplane_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
+                       thetas: np.ndarray, spins: np.ndarray) -> np.ndarray:
+        """Projection of ``w = (ν, θ̇, β̇)`` onto ``θ̇ = H_new ν, β̇ = K_new ν``.
+
+        Metric ``blockdiag(P, I_w 1, I_r 1)``; before: ``θ̇ = H_old ν`` and ``β̇`` = the
+        contacting rollers' spins ``spins``. Returns ``ν⁺``.
+        """
+        H_old, H_new = self.jacobian(old), self.jacobian(new)
+        ks, _ = self.roller_rows(new, thetas)
+        Mw = np.zeros((9, 9))
+        Mw[:3, :3] = np.diag([self.mass, self.mass, self.inertia[2, 2]])
+        Mw[3:6, 3:6] = self.wheel_inertia * np.eye(3)
+        Mw[6:, 6:] = self.roller_axial * np.eye(3)
+        w = np.concatenate([nu, H_old @ nu, spins])
+        A = np.hstack([np.vstack([H_new, ks]), -np.eye(6)])
+        if self.roller_axial == 0.0:  # massless rollers: no spin to project
+            Mw, w, A = Mw[:6, :6], w[:6], A[:3, :6]
+        Minv_At = np.linalg.solve(Mw, A.T)
+        lam = np.linalg.solve(A @ Minv_At, A @ w)
+        return (w - Minv_At @ lam)[:3]
+
+    def vertical_impulses(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
+                          thetas: np.ndarray, spins: np.ndarray) -> np.ndarray:
+        """Generalised impulses ``x_c Λ_z,i`` on the wheel spins of the full impact.
+
+        ``Λ`` from :meth:`impact` on the lifted velocity; the z-row of wheel i has
+        ``−x_c`` in its θ̇ column, so ``q̇⁺ = q̇⁻ − 𝕄⁻¹AᵀΛ`` gives θ_i the impulse
+        ``x_c Λ_z,i``.
+        """
+        q = self.lift(nu, old, thetas, roller_rates=spins)
+        A = self.constraint_rows(new, thetas)
+        cols, rows = self._massive(A)
+        Ar = A[np.ix_(rows, cols)]
+        impulse = np.linalg.solve(Ar @ np.linalg.solve(self.full_mass()[np.ix_(cols, cols)],
+                                                        Ar.T), Ar @ q[cols])
+        g = self.rollers
+        xc = np.array([g.contact_ahead(float(g.phases(float(th))[m]))
+                       for m, th in zip(new, thetas, strict=True)])
+        step = 3 if cols.size == 12 else 2
+        return xc * impulse[1::step]
+
+    def remove_energy(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
+                      wheel: int, energy: float) -> np.ndarray:
+        """Take ``energy`` out of wheel ``wheel``'s rolling by an impulse J along ``H_i``.
+
+        ``T(ν − M⁻¹H_iᵀJ) = T − s J + ½ c J²`` with ``s = H_i ν``, ``c = H_i M⁻¹ H_iᵀ``;
+        J is the root of ``½ c J² − s J + ΔE = 0`` nearer zero (``s/c``, the wheel's
+        share brought to rest, if ΔE exceeds it).
+        """
+        h = self.jacobian(modes)[wheel]
+        m_red = self.planar_mass(modes, thetas)
+        rate = float(h @ nu)
+        c = float(h @ np.linalg.solve(m_red, h))
+        disc = rate * rate - 2.0 * c * energy
+        j = (rate - math.copysign(math.sqrt(disc), rate)) / c if disc > 0 else rate / c
+        return nu - np.linalg.solve(m_red, h * j)
+
+    def overlap_impulse(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
+                        wheel: int, rate: float) -> float:
+        """Yaw angular impulse of the two rows' friction while both touch, N·m·s.
+
+        Compliant contacts overlap over ``Δφ_w = δ / |x_c|`` of wheel rotation (the two
+        rollers' heights differ by ``2 |x_c| |φ − φ_s|`` and both touch while that is
+        under δ), i.e. for ``Δt_w = Δφ_w / |θ̇|``. Their levers ``L ± e`` ask rim speeds
+        ``2 e r`` apart; each contact slides at ``e |r|``. The pair carries the Coulomb
+        force ``μ min(N_old, N_new)``, on average ``μ N / 4`` with the load moving
+        linearly across the window, unless the soft contact's tangential damping
+        ``(N/g)(2/t_c) e |r|`` is smaller (slow turning): force ``f``, at levers
+        ``L ± e``: a yaw moment ``2 e f`` against r and no net force. Impulse
+        ``2 e f Δt_w``.
+        """
+        if self.penetration == 0.0 or rate == 0.0:
+            return 0.0
+        g = self.rollers
+        phi = float(g.phases(float(thetas[wheel]))[modes[wheel]])
+        window = self.penetration / max(abs(g.contact_ahead(phi)), 1e-12)
+        e = abs(float(g.offsets[modes[wheel]]))
+        load = self.mass * self.gravity / 3.0
+        force = self.friction * load / 4.0
+        if self.contact_timeconst > 0.0:
+            force = min(force, load / self.gravity * 2.0 / self.contact_timeconst
+                        * e * abs(float(nu[2])))
+        return 2.0 * e * force * window / abs(rate)
+
+    @property
+    def handover_dissipation(self) -> float:
+        """``½ N δ`` with ``N = M g / 3``: the loaded contact's stored energy, J."""
+        return 0.5 * self.mass * self.gravity / 3.0 * self.penetration
+
+    def planar_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
+                      thetas: np.ndarray, spins: np.ndarray) -> tuple[np.ndarray, float]:
+        """Switch from mode ``old`` to ``new`` in the planar model: ``(ν⁺, ΔT)``.
+
+        1. :meth:`inplane_impact` (row lever L ± e, entering roller spins);
+        2. the vertical impulses of the full rigid impact on the wheel spins
+           (:meth:`vertical_impulses`): ``Δν = M_red⁻¹ H_newᵀ (x_c Λ_z)``;
+        3. compliant contacts: :attr:`handover_dissipation` per switching wheel
+           (:meth:`remove_energy`) and the rows' friction while both touch
+           (:meth:`overlap_impulse`).
+        """
+        nu_plus = self.inplane_impact(nu, old, new, thetas, spins)
+        J = self.vertical_impulses(nu, old, new, thetas, spins)
+        H_new = self.jacobian(new)
+        nu_plus = nu_plus + np.linalg.solve(self.planar_mass(new, thetas), H_new.T @ J)
+        if self.penetration > 0:
+            m_red = self.planar_mass(new, thetas)
+            for i in range(3):
+                if new[i] != old[i]:
+                    nu_plus = self.remove_energy(nu_plus, new, thetas, i,
+                                                 self.handover_dissipation)
+                    rate = float(H_new[i] @ nu_plus)
+                    impulse = self.overlap_impulse(nu_plus, new, thetas, i, rate)
+                    dnu = np.linalg.solve(m_red, np.array([0.0, 0.0, impulse]))
+                    if abs(dnu[2]) >= abs(nu_plus[2]):  # friction stops, never reverses
+                        dnu *= abs(nu_plus[2]) / max(abs(dnu[2]), 1e-300)
+                    nu_plus = nu_plus - math.copysign(1.0, nu_plus[2]) * dnu
+        ks, _ = self.roller_rows(new, thetas)
+        lost = (self.kinetic_energy(nu, old, thetas) + 0.5 * self.roller_axial * (
+            spins @ spins - (ks @ nu) @ (ks @ nu)) - self.kinetic_energy(nu_plus, new, thetas))
+        return nu_plus, float(lost)
+
+    def full_energy(self, q: np.ndarray) -> float:
+        """``½ q̇ᵀ 𝕄 q̇``."""
+        return float(0.5 * q @ self.full_mass() @ q)

@@ -1,0 +1,184 @@
+"""omni3_reduced: one capsule per wheel, friction near zero along the roller axis.
+
+Checked against omni3's own compiled model and against the physics the reduction must
+keep: the wheel drives along its drive direction at ``ω r``, its contact resists sliding
+along the axle by at most the pair's roller friction, at any wheel angle (a roller hinge
+turning with the wheel would lose that freedom at 90°), and the platform stays on the
+floor.
+"""
+
+import mujoco
+import numpy as np
+import pytest
+
+from wmr_mujoco import load
+from wmr_mujoco.robots import ROBOTS, get_spec, omni3
+from wmr_mujoco.robots.omni3.params import OmniParams
+from wmr_mujoco.robots.omni3_reduced import builder
+from wmr_mujoco.robots.omni3_reduced.params import OmniReducedParams
+from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
+from wmr_mujoco.sim.inertia import inertia_tensor_about
+from wmr_mujoco.sim.stepping import check_healthy
+from wmr_mujoco.validation.scenarios import ScenarioKind
+
+NAME = "omni3_reduced"
+WHEELS = ("wheel1", "wheel2", "wheel3")
+G = 9.81
+
+
+def _settled(model: mujoco.MjModel, seconds: float = 0.5) -> mujoco.MjData:
+    data = mujoco.MjData(model)
+    for _ in range(round(seconds / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+    return data
+
+
+def _wheel_contacts(model, data, wheel):
+    """Indices of the floor contacts of ``wheel``'s collider."""
+    geom = model.geom(f"{wheel}_collision").id
+    return [i for i in range(data.ncon) if geom in data.contact.geom[i]]
+
+
+def test_registered_with_omni3s_interface():
+    spec = get_spec(NAME)
+    assert ROBOTS[NAME] is spec
+    assert spec.command is omni3.COMMAND
+    assert spec.adapters[ScenarioKind.KINEMATIC] is omni3.kinematic_adapter
+    kin = [s for s in omni3.SCENARIOS if s.kind is ScenarioKind.KINEMATIC]
+    assert [(s.name, s.inputs, s.duration, s.world_frame) for s in spec.scenarios] == \
+        [(s.name, s.inputs, s.duration, s.world_frame) for s in kin]
+
+
+def test_loads_with_one_hinge_per_wheel_and_omni3s_actuators():
+    reduced, full = load(NAME), load("omni3")
+    assert reduced.nv == 6 + 3 and full.nv == 45
+    assert reduced.njnt == 4
+    for attr in ("actuator_gainprm", "actuator_biasprm", "actuator_ctrlrange",
+                 "actuator_forcerange", "actuator_gear"):
+        np.testing.assert_array_equal(getattr(reduced, attr), getattr(full, attr), attr)
+    for name in WHEELS:
+        assert reduced.actuator(name).trnid[0] == reduced.joint(name).id
+        np.testing.assert_allclose(reduced.body(name).pos, full.body(name).pos, atol=1e-12)
+        np.testing.assert_allclose(reduced.body(name).quat, full.body(name).quat, atol=1e-12)
+        assert reduced.joint(name).armature[0] == full.joint(name).armature[0]
+
+
+def test_lumped_wheel_has_omni3s_mass_and_inertia():
+    """Each wheel body holds its hub and rollers: the mass and the inertia tensor about
+    the wheel centre equal those of omni3's wheel subtree as MuJoCo compiles it (the
+    rollers' average over their angles is exact for n ≥ 3 evenly spaced rollers)."""
+    reduced, full = load(NAME), load("omni3")
+    assert reduced.body_subtreemass[1] == pytest.approx(full.body_subtreemass[1], rel=1e-12)
+    d_red, d_full = mujoco.MjData(reduced), mujoco.MjData(full)
+    mujoco.mj_kinematics(reduced, d_red)
+    mujoco.mj_kinematics(full, d_full)
+    for name in WHEELS:
+        wheel = full.body(name).id
+        subtree = [b for b in range(full.nbody) if b == wheel or full.body_parentid[b] == wheel]
+        centre = d_full.xpos[wheel]
+        want = inertia_tensor_about(full, d_full, subtree, centre)
+        got = inertia_tensor_about(reduced, d_red, [reduced.body(name).id], centre)
+        np.testing.assert_allclose(got, want, rtol=1e-9, atol=1e-12)
+
+
+def test_contact_frame_follows_the_axle_with_low_friction_along_it():
+    model = load(NAME)
+    data = _settled(model)
+    for name in WHEELS:
+        contacts = _wheel_contacts(model, data, name)
+        assert contacts, name
+        axle = data.xaxis[model.joint(name).id]
+        for i in contacts:
+            frame = data.contact.frame[i].reshape(3, 3)
+            assert abs(frame[1] @ axle) == pytest.approx(1.0, abs=1e-9)
+            np.testing.assert_allclose(data.contact.friction[i][:2],
+                                       (builder.ROLLER_FRICTION, 1.0))
+
+
+def _drive(model, data, rates, seconds):
+    """Hold wheel rates (rad/s) for ``seconds``; return the pose heights seen."""
+    z = []
+    for _ in range(round(seconds / model.opt.timestep)):
+        data.ctrl[:] = rates
+        mujoco.mj_step(model, data)
+        check_healthy(model, data)
+        z.append(data.qpos[2])
+    return np.array(z)
+
+
+def _jacobian():
+    p = OmniParams()
+    return ok.wheel_jacobian(ok.symmetric_layout(p.wheel_radius, p.wheel_distance))
+
+
+def _drive_speed(model, data, name):
+    """Velocity of a wheel's centre along its drive direction ``axle × ẑ``, m/s."""
+    vel = np.zeros(6)
+    mujoco.mj_objectVelocity(model, data, mujoco.mjtObj.mjOBJ_BODY, model.body(name).id,
+                             vel, 0)
+    return vel[3:] @ np.cross(data.xaxis[model.joint(name).id], (0.0, 0.0, 1.0))
+
+
+@pytest.mark.parametrize("twist, wheels", [((0.0, 0.3, 0.0), ("wheel1",)),
+                                           ((0.0, 0.0, 1.0), WHEELS)])
+def test_a_wheel_that_does_not_slide_sideways_drives_at_omega_r(twist, wheels):
+    """A wheel whose contact does not slide along its axle (wheel 1 when the platform
+    moves along wheel 1's drive direction; every wheel turning in place): its centre moves
+    along its drive direction at ``θ̇ r``, and the platform stays on the floor.
+
+    Tolerance ``h |ψ̇|`` + 0.1 % of ``θ̇ r``. The capsule's two end contacts lie ``±h``
+    along the axle, so turning at ``ψ̇`` they move ``±h ψ̇`` apart along the drive
+    direction: the wheel's rolling point lies between them, and its centre's speed within
+    ``h |ψ̇|`` of ``θ̇ r``. The 0.1 %: the creep of a soft friction contact under a
+    steady force ``f`` is ``v = f R / b`` (reference acceleration ``−b v``, ``b = 2 /
+    timeconst`` = 1000 /s, regulariser ``R`` below 0.05 kg⁻¹); the steady force on the
+    drive direction is at most the other wheels' roller friction, ``μ_lat m g`` ≤ 0.25 N
+    (μ_lat ≤ 0.01): ``v`` ≈ 1e-5 m/s, under 0.1 % of the 0.3 m/s rim speed. Height:
+    within 1 mm of r (the static penetration of ``m g`` on the contacts is under 0.1 mm).
+    """
+    model = load(NAME)
+    data = _settled(model)
+    rates = _jacobian() @ np.array(twist)
+    z = _drive(model, data, rates, 1.0)
+    r = OmniParams().wheel_radius
+    h = model.geom("wheel1_collision").size[1]
+    for name in wheels:
+        rate = data.qvel[model.joint(name).dofadr[0]]
+        tol = h * abs(twist[2]) + 1e-3 * abs(rate * r)
+        assert _drive_speed(model, data, name) == pytest.approx(rate * r, abs=tol)
+    assert np.all(np.abs(z - r) < 1e-3)
+
+
+@pytest.mark.parametrize("wheel_angle", [0.0, np.pi / 4, np.pi / 2])
+def test_wheel_rolls_sideways_freely_at_any_wheel_angle(wheel_angle):
+    """Translate along wheel 1's axle (the body x axis): wheel 1's commanded rate is 0, so
+    its contact slides along the axle only. Its lateral contact force stays within the
+    pair's Coulomb bound ``μ_lat N`` (a wheel without the rollers' freedom would give up
+    to ``μ N``), whatever the wheel angle, and the platform follows the command."""
+    model = load(NAME)
+    data = mujoco.MjData(model)
+    data.qpos[model.joint("wheel1").qposadr[0]] = wheel_angle
+    for _ in range(500):
+        mujoco.mj_step(model, data)
+    rates = _jacobian() @ np.array([0.3, 0.0, 0.0])
+    assert rates[0] == pytest.approx(0.0, abs=1e-12)
+    worst = 0.0
+    force = np.zeros(6)
+    for k in range(1500):
+        data.ctrl[:] = rates * min(1.0, k / 300)
+        mujoco.mj_step(model, data)
+        if k >= 300:
+            for i in _wheel_contacts(model, data, "wheel1"):
+                mujoco.mj_contactForce(model, data, i, force)
+                worst = max(worst, abs(force[1]) / force[0])
+    assert worst <= builder.ROLLER_FRICTION * (1 + 1e-6)
+    assert data.qvel[0] == pytest.approx(0.3, rel=0.01)
+    assert abs(data.qvel[1]) < 3e-3
+
+
+def test_params_unused_fields_and_conversion():
+    full = OmniParams(rollers_per_row=5, roller_shape="sphere")
+    reduced = OmniReducedParams.from_full(full)
+    assert reduced.rollers_per_row == 5 and isinstance(reduced, OmniParams)
+    assert reduced.total_mass == full.total_mass
+    assert "roller_shape" in OmniReducedParams.UNUSED
