@@ -32,7 +32,7 @@ TARGETS: Mapping[str, Target] = {k: omni3.TARGETS[k] for k in
                                  (mt.POSITION_PCT, mt.HEADING_DEG, mt.CENTRE_DRIFT_M)}
 
 #: omni3's kinematic scenarios, under this robot's name.
-SCENARIOS = tuple(dataclasses.replace(s, robot=NAME) for s in omni3.SCENARIOS
+SCENARIOS = tuple(dataclasses.replace(s, robot=NAME, open_targets={}) for s in omni3.SCENARIOS
                   if s.kind is ScenarioKind.KINEMATIC)
 
 SPEC = RobotSpec(
