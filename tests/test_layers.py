@@ -19,11 +19,15 @@ imports inside functions alike (a deferred import is still a dependency).
 5. ``sim``: stepping, timing, contact closed forms;
 6. ``validation``: scenarios, adapters, judges, the runner and the report. It receives a
    :class:`~wmr_mujoco.validation.spec.RobotSpec`, never a name to look up;
-7. ``robots``: the registry (``ROBOTS``, ``get_spec``) and one folder per robot
+7. ``loop``: closing the loop on a spec: the steppable robot (``build_robot``, its
+   MuJoCo, kinematic and dynamic backends), the controllers and paths, and the
+   closed-loop tasks with their judged scenario families, which the registry adds to its
+   entries (hence below ``robots``; by name, ``wmr_mujoco.make`` is ``application``);
+8. ``robots``: the registry (``ROBOTS``, ``get_spec``) and one folder per robot
    (``robots/<robot>/``: its ``params``, ``builder``, its own analytic model, adapters,
    judges, scenarios and the entry ``SPEC`` in ``__init__``), family code in family folders
    (``robots/roller_wheels/``, ``robots/steered/``). Nothing below imports a robot folder;
-8. ``application``: everything else (``api``, ``cli``, ``info``, ``demo``, ``bench``,
+9. ``application``: everything else (``api``, ``cli``, ``info``, ``demo``, ``bench``,
    ``render``, ``docs_sync`` and the application packages ``drive``, ``control``,
    ``envs``, ``suite``, ``batch``, ``audit``).
 
@@ -55,6 +59,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("models", ("wmr_mujoco.models",)),
     ("sim", ("wmr_mujoco.sim",)),
     ("validation", ("wmr_mujoco.validation",)),
+    ("loop", ("wmr_mujoco.loop",)),
     ("robots", ("wmr_mujoco.robots",)),
     ("application", ()),
 )
@@ -136,6 +141,8 @@ def test_layers_are_assigned_as_documented() -> None:
     assert layer_of("wmr_mujoco.robots.roller_wheels.omni_kinematics") == "robots"
     assert layer_of("wmr_mujoco.robots.omni3.runs") == "robots"
     assert layer_of("wmr_mujoco.bench.omni_study") == "application"
+    assert layer_of("wmr_mujoco.loop.control.paths") == "loop"
+    assert layer_of("wmr_mujoco.drive.make") == "application"
 
 
 def test_no_import_runs_up_the_layers() -> None:

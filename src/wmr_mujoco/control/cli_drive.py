@@ -17,8 +17,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from wmr_mujoco.control.paths import PATHS
 from wmr_mujoco.control.registry import CONTROLLERS
+from wmr_mujoco.loop.control.paths import PATHS
 
 #: The clip's size and frame rate (small: a lap is a minute of run).
 CLIP = {"width": 320, "height": 240, "fps": 10}

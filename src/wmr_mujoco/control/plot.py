@@ -9,7 +9,7 @@ import numpy as np
 
 from wmr_mujoco.atomic import atomic_path
 from wmr_mujoco.control.closed_loop import Comparison
-from wmr_mujoco.control.paths import Path as RefPath
+from wmr_mujoco.loop.control.paths import Path as RefPath
 
 
 def _figure(ncols: int):

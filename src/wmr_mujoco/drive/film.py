@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 if TYPE_CHECKING:
-    from wmr_mujoco.drive.robot import Robot
+    from wmr_mujoco.loop.robot import Robot
 
 #: Trail height above the floor, m (as ``wmr render``'s).
 TRAIL_Z = 0.003
@@ -30,14 +30,14 @@ MAX_FPS = 120
 
 def _model_trail(robot: Robot) -> np.ndarray | None:
     """Path of the robot's kinematic model under the recorded commands (None: none)."""
-    from wmr_mujoco.drive.make import make
+    from wmr_mujoco.loop.build import build_robot
 
     if robot.backend == "kinematic":
         return np.array([s.pose[:2] for s in robot.history])
     if robot.mode != "command" or robot.spec.command.analytic(None) is None:
         return None
-    twin = make(robot.spec.name, backend="kinematic", control_period=robot.control_period,
-                params=robot.params)
+    twin = build_robot(robot.spec, backend="kinematic", control_period=robot.control_period,
+                       params=robot.params)
     twin.reset(robot.history[0].pose)
     for command in robot.commands:
         twin.step(command)
@@ -61,7 +61,7 @@ def film(robot: Robot, path: str | Path, width: int = 640, height: int = 480,
     import mujoco
 
     import wmr_mujoco
-    from wmr_mujoco.drive.readout import place
+    from wmr_mujoco.loop.readout import place
     from wmr_mujoco.render import rendering
 
     path = rendering.check_output_path(Path(path), rendering.VIDEO_SUFFIXES

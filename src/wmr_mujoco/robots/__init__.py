@@ -9,6 +9,8 @@ of one family share a family folder (``roller_wheels/``, ``steered/``). Generic 
 :data:`ROBOTS`, never by name, and nothing below this package imports it. Adding a robot
 is its own folder and one line in :data:`ROBOTS`; :func:`registered` adds one for a while
 (tests, a foreign model).
+Every entry gets the closed-loop scenario families that fit its command map
+(:func:`~wmr_mujoco.loop.tasks.families.with_loop_scenarios`).
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 
 from wmr_mujoco.choices import match_name
+from wmr_mujoco.loop.tasks.families import with_loop_scenarios
 from wmr_mujoco.robots import (
     bicycle,
     diffdrive,
@@ -35,7 +38,7 @@ from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 __all__ = ["ROBOTS", "Clip", "Picture", "RobotSpec", "get_spec", "register", "registered",
            "unregister"]
 
-ROBOTS: dict[str, RobotSpec] = {spec.name: spec for spec in (
+ROBOTS: dict[str, RobotSpec] = {spec.name: with_loop_scenarios(spec) for spec in (
     disc.SPEC,
     disc_free.SPEC,
     bicycle.SPEC,

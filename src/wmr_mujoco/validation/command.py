@@ -25,6 +25,7 @@ from __future__ import annotations
 import abc
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -38,6 +39,44 @@ Extras = Callable[[mujoco.MjModel, mujoco.MjData], Mapping[str, float]]
 #: robot's ``data.ctrl``) the actuator controls that hold ``command`` over the next
 #: ``period`` seconds.
 Controller = Callable[[mujoco.MjData, np.ndarray, float, np.ndarray], None]
+#: ``pushed(model, data, params, speed, lean_rate)``: puts ``data`` in upright straight
+#: rolling at ``speed`` m/s with a sideways push, a lean rate ``lean_rate`` rad/s
+#: (``data.time`` 0): the start of a balancing robot's upright scenarios.
+Pushed = Callable[[mujoco.MjModel, mujoco.MjData, "RobotParams | None", float, float], None]
+#: ``law(speed, params)``: a feedback law ``law(state, None, t) -> command`` (the robot's
+#: natural command) that keeps the robot upright riding at ``speed``.
+BalanceLaw = Callable[[float, "RobotParams | None"], Callable[[Any, None, float], np.ndarray]]
+#: ``linear(speed, push, controlled, params, duration, period) -> leans``: the lean angle
+#: after every period of the robot's linear model from the push, the law on (or the
+#: torques zero), until it passes the fall threshold.
+LinearLeans = Callable[[float, float, bool, "RobotParams | None", float, float], np.ndarray]
+
+
+@dataclass(frozen=True)
+class Balance:
+    """How a robot that cannot stand still is pushed and kept upright (its own data).
+
+    Attributes:
+        pushed: its pushed start (:data:`Pushed`).
+        law: its balancing law (:data:`BalanceLaw`).
+        speeds: the riding speeds its upright claim is made at, m/s.
+        push: the nominal push, a lean rate, rad/s.
+        push_range: the range of push sizes drawn (the sign drawn too), rad/s.
+        period: the law's control period, s.
+        fallen: the lean past which it has fallen, rad.
+        lean: the key of the lean angle in the command map's extras.
+        linear: its linear model under the same law (:data:`LinearLeans`; None: none).
+    """
+
+    pushed: Pushed
+    law: BalanceLaw
+    speeds: tuple[float, ...]
+    push: float
+    push_range: tuple[float, float]
+    period: float
+    fallen: float
+    lean: str = "lean"
+    linear: LinearLeans | None = None
 
 
 @dataclass(frozen=True)
@@ -54,6 +93,9 @@ class CommandMap(abc.ABC):
             0 for a robot that cannot stand still, the Whipple bicycle).
         keyframe: keyframe a reset starts from (None: the model's rest pose ``qpos0``).
         extras: robot-specific readings of the MuJoCo state (None: none).
+        balance: how a robot that cannot stand still is pushed and kept upright
+            (:class:`Balance`; None: it stands by itself). With it, the validation closes
+            the balancing loop (:mod:`wmr_mujoco.loop.tasks.families`).
     """
 
     names: tuple[str, ...]
@@ -63,6 +105,7 @@ class CommandMap(abc.ABC):
     settle: float = 0.5
     keyframe: str | None = None
     extras: Extras | None = None
+    balance: Balance | None = None
 
     def __post_init__(self) -> None:
         if len(self.names) != len(self.units):
@@ -117,7 +160,7 @@ class RateCommand(CommandMap):
         adjust: ``(adapter, u, φ) -> u``, where a command channel is not the adapter's
             input (the tricycle's speed of the rear-axle midpoint, the adapter's the
             driven wheel's); ``φ`` are the servo channels' steering targets at the start
-            of the period (None: the command is the input).
+            of the period, an array or a list of floats (None: the command is the input).
     """
 
     kinematics: Callable[[RobotParams | None], Adapter] | None = None
@@ -147,11 +190,14 @@ class RateCommand(CommandMap):
         return self._inputs(adapter, np.asarray(command, float).tolist(), targets, period,
                             channels)
 
-    def _inputs(self, adapter: Adapter, values: list[float], targets: np.ndarray,
+    def _inputs(self, adapter: Adapter, values: list[float], targets: np.ndarray | list[float],
                 period: float, channels: list[tuple[int, float]]) -> np.ndarray:
-        """:meth:`inputs` of the command ``values``; ``channels``: ``(channel, ω_max)``."""
+        """:meth:`inputs` of the command ``values``; ``channels``: ``(channel, ω_max)``.
+
+        ``targets``: the steering targets, an array or (a control step's) a list of floats.
+        """
         if channels:
-            phi = targets.tolist()
+            phi = targets if type(targets) is list else targets.tolist()
             for k, (channel, limit) in enumerate(channels):
                 values[channel] = servo_rate(values[channel], phi[k], period, limit)
         u = np.array(values)
@@ -227,17 +273,35 @@ class RateCommand(CommandMap):
         joints = np.array([model.jnt_qposadr[model.actuator_trnid[
             model.actuator(s.actuator).id, 0]] for s in self.servo], dtype=int)
 
+        acts_list = acts.tolist()
+        #: The analytic state's steering angles and their ``qpos`` rows.
+        angles = list(zip(states, joints.tolist(), strict=True))
+        state = rest.copy()
+        #: The last ``data`` seen and its ``act`` and ``qpos`` arrays (a new view on every
+        #: attribute read).
+        seen: list[object] = [None, None, None, None]
+
         def controller(data: mujoco.MjData, command: np.ndarray, period: float,
                        ctrl: np.ndarray) -> None:
-            u = command if direct else self._inputs(adapter, command.tolist(),
-                                                    data.act[acts], period, channels)
+            if direct:
+                u = command
+            else:
+                if seen[0] is not data:
+                    seen[0], seen[1] = data, data.act
+                act = seen[1].tolist()  # type: ignore[union-attr]
+                u = self._inputs(adapter, command.tolist(), [act[i] for i in acts_list],
+                                 period, channels)
             if w is not None:
                 np.matmul(w, u, out=ctrl)  # W u, written in place
                 return
             x = rest
             if self.state_dependent:
-                x = rest.copy()
-                x[states] = data.qpos[joints]
+                if seen[2] is not data:
+                    seen[2], seen[3] = data, data.qpos
+                q = seen[3].tolist()  # type: ignore[union-attr]
+                x = state  # the controller's own buffer: the rest state but the angles
+                for k, j in angles:
+                    x[k] = q[j]
             ctrl[:] = adapter.controls(u, x)
 
         return controller

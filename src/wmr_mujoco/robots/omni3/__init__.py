@@ -26,12 +26,14 @@ from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.omni3 import builder, coasting, dynamics, peer, traction
 from wmr_mujoco.robots.omni3.params import OmniParams
-from wmr_mujoco.robots.omni3.runs import WHEELS
+from wmr_mujoco.robots.omni3.runs import CENTRE_BODY, WHEELS
 from wmr_mujoco.robots.roller_wheels import (
     DIRECTIONS_DEG,
     ROLLER_RATE_PCT,
     SPEED,
     YAW_RATE,
+    OmniDynamicsAdapter,
+    dynamics_from_model,
     omni_probes,
     translation,
     twist_inputs,
@@ -105,6 +107,19 @@ class OmniKinematics:
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """Pose of the ``base`` site."""
         return base_pose(model, data)
+
+
+def dynamic_adapter(scenario: Scenario, model: mujoco.MjModel,
+                    params: RobotParams | None) -> OmniDynamicsAdapter:
+    """The reduced Lagrange model of the compiled omni3 (``make(..., backend="dynamic")``).
+
+    No roller hand-overs (the hybrid model of :mod:`.dynamics` has them); no scenario of
+    omni3 is judged on it.
+    """
+    p = params_or_default(params, OmniParams)
+    layout = ok.symmetric_layout(p.wheel_radius, p.wheel_distance)
+    return OmniDynamicsAdapter(dynamics_from_model(model, layout, CENTRE_BODY, WHEELS[0]),
+                               WHEELS, friction=p.sim.friction)
 
 
 def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
@@ -194,7 +209,7 @@ SPEC = RobotSpec(
     description="three omni wheels at 120 degrees, each with two staggered rows of "
                 "passive barrel rollers on free hinges",
     params_type=OmniParams, build=builder.build, folder="omni3", robot_file="omni3.xml",
-    adapters={ScenarioKind.KINEMATIC: kinematic_adapter},
+    adapters={ScenarioKind.KINEMATIC: kinematic_adapter, ScenarioKind.DYNAMIC: dynamic_adapter},
     probes=(omni_probes,),
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="square with rotation",
     bench_scenario="translate+rotate", render_scenario="square with rotation",

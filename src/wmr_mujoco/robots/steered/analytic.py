@@ -36,6 +36,7 @@ rate decays and a steady steering angle gives a straight *crab* motion along ψ 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -61,10 +62,10 @@ def double_rear_speed(v_front: float, beta_front: float, beta_rear: float) -> fl
     Raises:
         ValueError: ``cos β₂ = 0`` (rear wheel across the body axis: no solution).
     """
-    c2 = np.cos(beta_rear)
+    c2 = math.cos(beta_rear)
     if abs(c2) < 1e-9:
         raise ValueError(f"beta_rear = {beta_rear!r}; |β₂| must stay below π/2")
-    return float(v_front * np.cos(beta_front) / c2)
+    return float(v_front * math.cos(beta_front) / c2)
 
 
 def double_twist(v_front: float, beta_front: float, beta_rear: float, half_wheelbase: float

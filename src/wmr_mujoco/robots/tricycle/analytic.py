@@ -15,6 +15,8 @@ difference as above. Seen from the midpoint the motion is the bicycle's.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from wmr_mujoco.analytic import bicycle
@@ -22,7 +24,12 @@ from wmr_mujoco.analytic.checks import positive
 
 
 def _k(steer: float, track: float, wheelbase: float) -> float:
-    return positive("track", track) / (2.0 * positive("wheelbase", wheelbase)) * np.tan(steer)
+    """``k = w tan φ / (2ℓ)``; the checks only on a failing value (a control step calls it)."""
+    if type(track) is not float or type(wheelbase) is not float or not (
+            0.0 < track < math.inf and 0.0 < wheelbase < math.inf):
+        positive("track", track)
+        positive("wheelbase", wheelbase)
+    return float(track) / (2.0 * float(wheelbase)) * math.tan(steer)
 
 
 def icr_radius(steer: float, wheelbase: float) -> float:

@@ -15,10 +15,10 @@ measurements in the physics:
 from __future__ import annotations
 
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
-from wmr_mujoco.robots.whipple import builder, eigen, stability
+from wmr_mujoco.robots.whipple import builder, eigen, lean, stability
 from wmr_mujoco.robots.whipple.params import WhippleParams
-from wmr_mujoco.robots.whipple.rolling import NAME, compile_model, readings
-from wmr_mujoco.validation.command import TorqueCommand
+from wmr_mujoco.robots.whipple.rolling import NAME, compile_model, pushed, readings
+from wmr_mujoco.validation.command import Balance, TorqueCommand
 from wmr_mujoco.validation.family import Family, Vary
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
 from wmr_mujoco.validation.variations import DYNAMIC_DRAWS
@@ -56,11 +56,16 @@ SCENARIOS = (
 
 #: Driven by its own actuators, the rear-wheel and steer torques. It cannot stand still:
 #: a reset starts it rolling upright at the ``rolling`` keyframe's speed (inside the
-#: self-stable range), with no settling.
+#: self-stable range), with no settling. Its balancing data (pushed start, LQR, linear
+#: model: :mod:`.lean`) give it the upright scenarios at 3 and 2 m/s
+#: (:mod:`wmr_mujoco.loop.tasks.families`).
 COMMAND = TorqueCommand(("rear_torque", "steer_torque"), ("N·m", "N·m"),
                         wheels=("rear_wheel", "front_wheel"), steers=("steer",),
                         settle=0.0, keyframe="rolling", extras=readings,
-                        actuators=("rear_torque", "steer_torque"))
+                        actuators=("rear_torque", "steer_torque"),
+                        balance=Balance(pushed, lean.law, lean.SPEEDS, lean.PUSH,
+                                        lean.PUSH_RANGE, lean.PERIOD, stability.FALLEN,
+                                        linear=lean.linear_leans))
 
 SPEC = RobotSpec(
     name=NAME,

@@ -100,6 +100,16 @@ def push(model: mujoco.MjModel, data: mujoco.MjData, lean_rate: float) -> None:
     mujoco.mj_forward(model, data)
 
 
+def pushed(model: mujoco.MjModel, data: mujoco.MjData, params: WhippleParams | None,
+           speed: float, lean_rate: float) -> None:
+    """Steady rolling at ``speed`` (:func:`roll_steadily`), then the push (:func:`push`).
+
+    The command map's pushed start (:data:`~wmr_mujoco.validation.command.Pushed`).
+    """
+    roll_steadily(model, data, params, speed)
+    push(model, data, lean_rate)
+
+
 def readings(model: mujoco.MjModel, data: mujoco.MjData) -> dict[str, float]:
     """Lean (rad), lean rate (rad/s), steer (rad) and steer rate (rad/s) of ``data``.
 

@@ -21,13 +21,13 @@ from collections import deque
 import mujoco
 import numpy as np
 
-from wmr_mujoco.drive.readout import Reader, place
-from wmr_mujoco.drive.robot import HISTORY_LIMIT, Robot, substeps
-from wmr_mujoco.drive.state import CommandSpace, RobotState
+from wmr_mujoco.loop.readout import Reader, place
+from wmr_mujoco.loop.robot import HISTORY_LIMIT, Robot, substeps
+from wmr_mujoco.loop.state import CommandSpace, RobotState
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
-from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.command import Controller
+from wmr_mujoco.validation.spec import RobotSpec
 
 
 class MujocoRobot(Robot):

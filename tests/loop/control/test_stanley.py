@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from wmr_mujoco.control import paths
-from wmr_mujoco.control.stanley import Stanley
+from wmr_mujoco.loop.control import paths
+from wmr_mujoco.loop.control.stanley import Stanley
 
 
 @pytest.mark.parametrize("kind", ["car", "unicycle"])

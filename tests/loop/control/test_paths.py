@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from wmr_mujoco.control import paths
+from wmr_mujoco.loop.control import paths
 
 
 @pytest.mark.parametrize("name", list(paths.PATHS))

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from wmr_mujoco.control import paths
-from wmr_mujoco.control.pure_pursuit import PurePursuit
+from wmr_mujoco.loop.control import paths
+from wmr_mujoco.loop.control.pure_pursuit import PurePursuit
 
 
 def test_curvature_of_the_arc_to_the_goal_point(state):

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from wmr_mujoco.control import paths
-from wmr_mujoco.control.base import Trajectory
-from wmr_mujoco.control.holonomic import HolonomicPose
+from wmr_mujoco.loop.control import paths
+from wmr_mujoco.loop.control.base import Trajectory
+from wmr_mujoco.loop.control.holonomic import HolonomicPose
 
 
 def test_each_world_error_decays_exponentially_while_turning(loop):

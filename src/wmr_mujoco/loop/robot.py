@@ -12,15 +12,15 @@ import abc
 import math
 import warnings
 from collections import deque
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 import mujoco
 import numpy as np
 
-from wmr_mujoco.drive.state import CommandSpace, RobotState
+from wmr_mujoco.loop.state import CommandSpace, RobotState
 from wmr_mujoco.models.params import RobotParams
-from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.validation.spec import RobotSpec
 
 #: Most states :attr:`Robot.history` keeps (the oldest are dropped): 5·10⁴ periods, over
 #: a quarter of an hour at 20 ms; about 1-2 kB each (with the MuJoCo backend's ``qpos``
@@ -32,6 +32,17 @@ MAX_CONTROL_PERIOD = 10.0
 PERIOD_RTOL = 1e-9
 #: The dtype of native float64 arrays (a singleton: compared with ``is``).
 _FLOAT64 = np.dtype(np.float64)
+
+
+#: ``filmer(robot, path, **options) -> Path``, installed by :mod:`wmr_mujoco.drive`.
+Filmer = Callable[..., Path]
+_FILMER: Filmer | None = None
+
+
+def set_filmer(filmer: Filmer) -> None:
+    """Install the function :meth:`Robot.film` calls (rendering lives above this layer)."""
+    global _FILMER
+    _FILMER = filmer
 
 
 def substeps(control_period: float, timestep: float) -> int:
@@ -82,7 +93,7 @@ def check_seed(seed: int | None) -> int | None:
 
 
 class Robot(abc.ABC):
-    """A robot driven one control period at a time (see :func:`wmr_mujoco.drive.make`).
+    """A robot driven one control period at a time (see :func:`wmr_mujoco.loop.build.build_robot`).
 
     Attributes:
         spec: the robot's registry entry.
@@ -226,10 +237,18 @@ class Robot(abc.ABC):
         return {f: np.array([getattr(s, f) for s in self._history]) for f in fields}
 
     def film(self, path: str | Path, **options: object) -> Path:
-        """Film the recorded run (see :func:`wmr_mujoco.drive.film.film`)."""
-        from wmr_mujoco.drive.film import film
+        """Film the recorded run (see :func:`wmr_mujoco.drive.film.film`).
 
-        return film(self, path, **options)
+        Rendering is application layer: :mod:`wmr_mujoco.drive` installs the filmer
+        (:func:`set_filmer`) when it is imported (``wmr_mujoco.make`` imports it).
+
+        Raises:
+            RuntimeError: no filmer is installed (import :mod:`wmr_mujoco.drive`).
+        """
+        if _FILMER is None:
+            raise RuntimeError("no filmer installed: import wmr_mujoco.drive (wmr_mujoco.make "
+                               "does) to film a run")
+        return _FILMER(self, path, **options)
 
     def __repr__(self) -> str:
         return (f"<{type(self).__name__} {self.spec.name!r} backend={self.backend!r} "

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from wmr_mujoco.control.go_to_pose import GoToPose
+from wmr_mujoco.loop.control.go_to_pose import GoToPose
 
 
 @pytest.mark.parametrize("gains", [(0.0, 6.0, -5.0), (1.0, 6.0, 0.5), (1.0, 0.5, -5.0)])

@@ -26,13 +26,13 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic.integrate import rk4_step
-from wmr_mujoco.drive.readout import place
-from wmr_mujoco.drive.robot import Robot, substeps
-from wmr_mujoco.drive.state import CommandSpace, RobotState
-from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.loop.readout import place
+from wmr_mujoco.loop.robot import Robot, substeps
+from wmr_mujoco.loop.state import CommandSpace, RobotState
 from wmr_mujoco.sim.stepping import SimulationDivergedError
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.spec import RobotSpec
 
 
 class WheelGeometry:

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 from scipy.linalg import expm
 
-from wmr_mujoco.control import paths
-from wmr_mujoco.control.base import Trajectory
-from wmr_mujoco.control.kanayama import Kanayama
+from wmr_mujoco.loop.control import paths
+from wmr_mujoco.loop.control.base import Trajectory
+from wmr_mujoco.loop.control.kanayama import Kanayama
 
 
 def test_linear_matrix_is_the_jacobian_of_the_error_dynamics():

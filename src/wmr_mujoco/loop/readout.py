@@ -1,4 +1,4 @@
-"""Reading a :class:`~wmr_mujoco.drive.state.RobotState` from MuJoCo, and placing a robot.
+"""Reading a :class:`~wmr_mujoco.loop.state.RobotState` from MuJoCo, and placing a robot.
 
 Everything is looked up once per compiled model (:class:`Reader`, :func:`place`), so that a
 control step reads its state with a few array reads and one ``mj_objectVelocity``; the
@@ -14,7 +14,7 @@ from types import MappingProxyType
 import mujoco
 import numpy as np
 
-from wmr_mujoco.drive.state import RobotState
+from wmr_mujoco.loop.state import RobotState
 from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 from wmr_mujoco.validation.command import CommandMap
 
@@ -66,6 +66,12 @@ class Reader:
         self.site = model.site("base").id
         self.wheel_dofs = np.array([model.jnt_dofadr[model.joint(w).id]
                                     for w in command.wheels], dtype=int)
+        dofs = self.wheel_dofs.tolist()
+        #: The wheel rates' rows of ``qvel``: a slice where they are consecutive (a copy
+        #: of a slice costs a third of fancy indexing), else the index array.
+        self.wheel_rows: slice | np.ndarray = (
+            slice(dofs[0], dofs[-1] + 1) if dofs and dofs == list(range(dofs[0], dofs[-1] + 1))
+            else self.wheel_dofs)
         self.nsteer = len(command.steers)
         self.steer_qpos = np.array([model.jnt_qposadr[model.joint(s).id]
                                     for s in command.steers], dtype=int)
@@ -138,7 +144,8 @@ class Reader:
                  if self.extras is not None else NO_EXTRAS)
         qpos = self._qpos.copy()
         state = MujocoState(self, time, (x, y, h, u, v, r), qpos,
-                            self._qvel[self.wheel_dofs], data.contact.geom.copy(), extra)
+                            self._qvel[self.wheel_rows].copy(), data.contact.geom.copy(),
+                            extra)
         return state, qpos, h
 
 
@@ -153,13 +160,10 @@ class MujocoState(RobotState):
                  qpos: np.ndarray, wheel_rates: np.ndarray, pairs: np.ndarray,
                  extra: MappingProxyType[str, float]) -> None:
         # Written into __dict__ as the frozen dataclass's own __init__ does; few Python
-        # containers per state (the garbage collector tracks each one in the history).
+        # containers per state (the garbage collector tracks each one in the history),
+        # and three keys: a small dict is never resized while the state is recorded.
         fields = self.__dict__
-        fields["_reader"] = reader
-        fields["_time"] = time
-        fields["_pose_twist"] = pose_twist
-        fields["_qpos"] = qpos
-        fields["_pairs"] = pairs
+        fields["_raw"] = (reader, time, pose_twist, qpos, pairs)
         fields["wheel_rates"] = wheel_rates
         fields["extra"] = extra
 
@@ -171,20 +175,21 @@ class MujocoState(RobotState):
     def __getattr__(self, name: str) -> np.ndarray:
         """Compute a field on its first access (later ones find it in ``__dict__``)."""
         fields = self.__dict__
-        reader = fields.get("_reader")
-        if reader is None or name not in _LAZY:
+        raw = fields.get("_raw")
+        if raw is None or name not in _LAZY:
             raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        reader, time, pose_twist, qpos, pairs = raw
         if name == "time":
-            fields["time"] = np.array(fields["_time"])
+            fields["time"] = np.array(time)
         elif name in ("pose", "twist"):
-            both = np.array(fields["_pose_twist"])  # one array, two views
+            both = np.array(pose_twist)  # one array, two views
             fields["pose"], fields["twist"] = both[:3], both[3:]
         elif name == "steer_angles":
-            fields[name] = fields["_qpos"][reader.steer_qpos] if reader.nsteer else _EMPTY
+            fields[name] = qpos[reader.steer_qpos] if reader.nsteer else _EMPTY
         else:
             out = [False] * (reader.nwheel + 1)
             owner = reader.geom_wheel_list
-            for g1, g2 in fields["_pairs"].tolist():
+            for g1, g2 in pairs.tolist():
                 out[owner[g1]] = out[owner[g2]] = True
             fields[name] = np.array(out[:reader.nwheel])
         return fields[name]

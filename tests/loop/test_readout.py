@@ -10,7 +10,7 @@ import pytest
 
 import wmr_mujoco as wmr
 from wmr_mujoco.drive import make
-from wmr_mujoco.drive.readout import place, wheel_of_body
+from wmr_mujoco.loop.readout import place, wheel_of_body
 from wmr_mujoco.validation.adapters import base_pose, body_twist
 
 

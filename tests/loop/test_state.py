@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from wmr_mujoco.drive.state import CommandSpace
+from wmr_mujoco.loop.state import CommandSpace
 
 SPACE = CommandSpace(("v", "omega"), ("m/s", "rad/s"), np.array([-1.0, -2.0]),
                      np.array([1.0, 2.0]))

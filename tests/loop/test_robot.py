@@ -10,7 +10,7 @@ import pytest
 
 import wmr_mujoco as wmr
 from wmr_mujoco.drive import make
-from wmr_mujoco.drive.robot import substeps
+from wmr_mujoco.loop.robot import substeps
 from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 from wmr_mujoco.sim.stepping import SimulationDivergedError
 

@@ -2,13 +2,20 @@
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 from scipy.linalg import solve_continuous_lyapunov
 
-from wmr_mujoco.control.whipple_lean import STATE_KEYS, BrysonWeights, WhippleLean, input_matrix
 from wmr_mujoco.robots.whipple import analytic as whipple
+from wmr_mujoco.robots.whipple.lean import (
+    STATE_KEYS,
+    BrysonWeights,
+    WhippleLean,
+    input_matrix,
+)
 
 SPEEDS = (2.0, 3.0)
 PUSH = np.array([0.0, 0.0, 0.5, 0.0])  # the 0.5 rad/s lean-rate push
@@ -54,19 +61,19 @@ def test_gain_is_optimal(speed):
         assert cost(c.gain * (1 + 0.05 * rng.standard_normal(4))) >= best * (1 - 1e-9)
 
 
-def test_steers_into_the_lean(state):
+def test_steers_into_the_lean():
     """A lean to the right (φ > 0) gets a steer torque to the right (T_δ > 0), read from the
     state's extras; at the riding speed the rear torque is 0, below it positive with the
     gain m_e r_R / τ_v (benchmark: m_e = 94 + 0.12/0.09 + 0.28/0.1225 kg, r_R = 0.3 m)."""
     c = WhippleLean(3.0)
     extra = dict(zip(STATE_KEYS, (0.05, 0.0, 0.0, 0.0), strict=True))
-    cmd = c(state(np.zeros(3), twist=np.array([3.0, 0, 0]), extra=extra), None, 0.0)
+    cmd = c(SimpleNamespace(pose=np.zeros(3), twist=np.array([3.0, 0, 0]), extra=extra), None, 0.0)
     assert cmd[0] == 0.0 and cmd[1] > 0
-    slow = c(state(np.zeros(3), twist=np.array([2.9, 0, 0]), extra=extra), None, 0.0)
+    slow = c(SimpleNamespace(pose=np.zeros(3), twist=np.array([2.9, 0, 0]), extra=extra), None, 0.0)
     m_e = 94.0 + 0.12 / 0.09 + 0.28 / 0.1225
     assert slow[0] == pytest.approx(m_e * 0.3 / 0.5 * 0.1, rel=1e-9)
     with pytest.raises(ValueError, match="lean_rate"):
-        c(state(np.zeros(3), extra={"lean": 0.0}), None, 0.0)
+        c(SimpleNamespace(pose=np.zeros(3), twist=np.zeros(3), extra={"lean": 0.0}), None, 0.0)
 
 
 @pytest.mark.parametrize("speed", SPEEDS)
