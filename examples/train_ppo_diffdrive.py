@@ -1,6 +1,6 @@
 """A short PPO run on ``wmr/DiffDrive-GoToGoal-v0``: an example, not part of the test suite.
 
-    nice -n 10 python examples/train_ppo_diffdrive.py --steps 300000 \
+    nice -n 10 python examples/train_ppo_diffdrive.py --steps 250000 \
         --out docs/img/ppo_diffdrive.png
 
 Writes the learning curve (success rate of finished episodes vs environment steps) to

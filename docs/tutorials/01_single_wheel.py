@@ -29,8 +29,6 @@
 # `disc`: a thin disc on a vertical mount, moved **only** by its contact with the floor.
 #
 # ![the disc in MuJoCo: physics trail green, model trail red](../../renders/disc.gif)
-#
-# *Run time: about 3 s as a script on a 2-core machine, most of it importing MuJoCo.*
 
 # %%
 import matplotlib.pyplot as plt

@@ -25,8 +25,6 @@
 # This page measures the constraint on the MuJoCo disc, shows the direction it forbids
 # with a Lie bracket (`wmr_mujoco.analytic.nonholonomy`), and moves the disc sideways
 # (the forbidden direction) using allowed motions only.
-#
-# *Run time: about 4 s as a script on a 2-core machine, most of it importing MuJoCo.*
 
 # %%
 import matplotlib.pyplot as plt

@@ -31,8 +31,6 @@
 # by its joints (`models/bicycle`), and moves only through its wheels' contacts.
 #
 # ![the bicycle in MuJoCo](../../renders/bicycle.gif)
-#
-# *Run time: about 5 s as a script on a 2-core machine, most of it importing MuJoCo.*
 
 # %%
 import matplotlib.pyplot as plt

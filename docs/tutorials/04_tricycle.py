@@ -27,8 +27,6 @@
 # (`wmr_mujoco.robots.tricycle.analytic`).
 #
 # ![the tricycle in MuJoCo](../../renders/tricycle.gif)
-#
-# *Run time: about 6 s as a script on a 2-core machine, most of it importing MuJoCo.*
 
 # %%
 import matplotlib.pyplot as plt

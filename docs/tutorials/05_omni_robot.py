@@ -32,8 +32,6 @@
 # hinge.
 #
 # ![omni3 in MuJoCo](../../renders/omni3.gif)
-#
-# *Run time: about 7 s as a script on a 2-core machine, most of it importing MuJoCo.*
 
 # %%
 import matplotlib.pyplot as plt

@@ -27,8 +27,6 @@
 # slips and kinetic friction $\mu N$ drives the two equations separately
 # (`wmr_mujoco.analytic.wheel_dynamics`). The MuJoCo `disc` in torque mode is this wheel:
 # its carriage slides freely on the mount, so $m$ is disc plus carriage.
-#
-# *Run time: about 5 s as a script on a 2-core machine, most of it importing MuJoCo.*
 
 # %%
 import matplotlib.pyplot as plt

@@ -35,8 +35,6 @@
 #
 # $M$ and $I_z$ are the whole robot's mass and yaw inertia, $I_w$ each wheel's spin
 # inertia; below they are read from the compiled MuJoCo model.
-#
-# *Run time: about 6 s as a script on a 2-core machine, most of it importing MuJoCo.*
 
 # %%
 import matplotlib.pyplot as plt

@@ -52,7 +52,7 @@ def test_tutorial_runs_and_its_exercise_checks_out(path: Path, capsys) -> None:
     # The placeholder answer gets a hint, printed, not an exception.
     assert re.search(r"^NOT YET \[", out, re.M), out[-2000:]
     assert re.search(r"^PASS \[", out, re.M)
-    stated = re.search(r"Run time: about (\d+) s", path.read_text())
-    assert stated, "each tutorial states its run time"
+    # The run time is printed, measured, never typed into the page by hand.
+    assert not re.search(r"Run time: about", path.read_text())
     with capsys.disabled():
-        print(f"\n{path.name}: {seconds:.1f} s (stated: about {stated.group(1)} s)")
+        print(f"\n{path.name}: {seconds:.1f} s")

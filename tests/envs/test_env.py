@@ -68,6 +68,8 @@ def test_info_carries_the_reward_terms():
     (np.array([np.nan, 0.0]), "not finite"),
     (np.array([np.inf, 0.0]), "not finite"),
     ("fast", "not numeric"),
+    (np.array([1 + 1j, 0.0]), "not numeric"),  # complex: numpy would drop the imaginary part
+    (np.array([np.nan, 0.0], np.float32), "not finite"),  # float32, as policies give
 ])
 def test_bad_actions_are_refused_before_stepping(action, match):
     env = gym.make("wmr/DiffDrive-GoToGoal-v0")
@@ -103,6 +105,31 @@ def test_actions_beyond_one_are_clipped_to_the_command_limits():
 def test_bad_arguments_name_the_valid_ones(kwargs, match):
     with pytest.raises(ValueError, match=match):
         WmrEnv(**kwargs)
+
+
+def test_unknown_make_options_and_reset_options_are_named():
+    with pytest.raises(TypeError, match=r"unknown option\(s\) \['randomise'\]; valid: mode, "
+                       "randomize"):
+        gym.make("wmr/DiffDrive-GoToGoal-v0", randomise=True)
+    env = gym.make("wmr/DiffDrive-GoToGoal-v0")
+    with pytest.raises(ValueError, match=r"takes no options, got \['goal'\]"):
+        env.reset(seed=0, options={"goal": (1.0, 0.0, 0.0)})
+
+
+def test_a_loosely_typed_robot_is_the_registry_robot():
+    # The registry's lookup (any case, a unique prefix) names the robot; the environment
+    # uses the registry name, not the typed one.
+    assert WmrEnv("DiffDriv", "GoToGoal").robot.spec.name == "diffdrive"
+
+
+@pytest.mark.parametrize("task, options, match", [
+    ("GoToGoal", {"max_distance": 6.0}, "max_distance < arena"),
+    ("GoToGoal", {"arena": 1e9, "max_distance": 2.0}, "above the 1000 m"),
+    ("FollowPath", {"path_length": 1e12}, "above the 1000 m"),  # 5e13 path points
+])
+def test_task_sizes_are_checked_before_any_allocation(task, options, match):
+    with pytest.raises(ValueError, match=match):
+        WmrEnv("diffdrive", task, task_kwargs=options)
 
 
 def test_wheels_mode_commands_the_wheel_servos():
@@ -159,3 +186,10 @@ def test_readme_example_runs_as_written():
     exec(compile(README_EXAMPLE, "README", "exec"), scope)
     assert scope["obs"].shape == (12,) and set(scope["info"]["reward_terms"]) >= {"progress"}
     scope["env"].close()
+
+
+def test_step_before_reset_is_refused():
+    # Registered without Gymnasium's order-enforcing wrapper: the environment refuses it.
+    env = gym.make("wmr/DiffDrive-GoToGoal-v0")
+    with pytest.raises(RuntimeError, match=r"call reset\(\) before step\(\)"):
+        env.step(np.zeros(2))

@@ -3,7 +3,7 @@ import pytest
 
 from wmr_mujoco.envs import ENV_IDS, WmrEnv
 from wmr_mujoco.envs.episode import Episode
-from wmr_mujoco.envs.scripted import Scripted, lqr_gain, run_episode
+from wmr_mujoco.envs.scripted import Scripted, run_episode
 
 
 @pytest.mark.parametrize("env_id", ENV_IDS)
@@ -31,25 +31,6 @@ def test_standing_still_does_not_succeed():
         _, _, term, trunc, info = env.step(np.zeros(2))
         done = term or trunc
     assert trunc and not info["is_success"]
-
-
-def test_lqr_stabilises_the_linear_benchmark_below_the_weave_speed():
-    from scipy.linalg import expm
-
-    from wmr_mujoco.robots.whipple import analytic
-    from wmr_mujoco.robots.whipple.params import WhippleParams
-
-    mats = analytic.matrices(WhippleParams())
-    for v in (2.5, 3.5):
-        a = analytic.state_matrix(v, mats)
-        assert np.max(np.linalg.eigvals(a).real) > 0  # unstable without control
-        dt = 0.01
-        b = np.concatenate([np.zeros(2), np.linalg.solve(mats.M, [0.0, 1.0])])[:, None]
-        block = np.zeros((5, 5))
-        block[:4, :4], block[:4, 4:] = a, b
-        e = expm(block * dt)
-        closed = e[:4, :4] - e[:4, 4:] @ lqr_gain(v, dt)
-        assert np.max(np.abs(np.linalg.eigvals(closed))) < 1.0
 
 
 def test_unknown_command_space_has_no_scripted_controller():

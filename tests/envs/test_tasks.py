@@ -61,13 +61,13 @@ def test_follow_path_observation_on_the_path():
     task = FollowPath(scale=1.0, max_curvature=1.0)
     rng = np.random.default_rng(0)
     start = task.sample(rng)
-    p0 = task.path.points[0]
+    p0 = task.path.xy[0]
     assert np.hypot(*(start[:2] - p0)) <= 0.1 + 1e-12
     obs = task.observe(state(*p0, task.path.heading[0]))
     # On the path and aligned: no cross-track error, heading error 0, all of it ahead.
     assert obs[10] == pytest.approx(0.0, abs=1e-12)
     np.testing.assert_allclose(obs[11:13], [0.0, 1.0], atol=1e-12)
-    assert obs[13] == pytest.approx(task.path.length)
+    assert obs[13] == pytest.approx(task.end)
     # The first look-ahead point, 0.25 m along a path starting straight (κ ramps up
     # over the first 10 % = 0.4 m), is nearly straight ahead.
     assert obs[0] == pytest.approx(0.25, abs=DS_TOL)
@@ -80,7 +80,7 @@ DS_TOL = 0.03  # one vertex spacing (0.02 m) plus the path's bending over 0.25 m
 def test_follow_path_failure_beyond_max_deviation():
     task = FollowPath(scale=1.0, max_curvature=1.0)
     task.sample(np.random.default_rng(1))
-    p, psi = task.path.points[0], task.path.heading[0]
+    p, psi = task.path.xy[0], task.path.heading[0]
     off = 0.6 * np.array([-math.sin(psi), math.cos(psi)])
     assert task.outcome(state(*(p + off), psi)) == (False, True)
 

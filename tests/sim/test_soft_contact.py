@@ -118,3 +118,50 @@ def test_friction_impedance_limits():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def _paired_block(timestep: float, d: float, impratio: float) -> tuple[mujoco.MjModel,
+                                                                        mujoco.MjData]:
+    """The point-mass sphere of :func:`_block` on a floor ``<pair>`` with the sliding
+    remedy's parameters (``builders.common.sliding_pair_kwargs``): impedance d, time
+    constant 3 Δt, friction reference in the direct form ``(0, −d/Δt)``."""
+    xml = f"""<mujoco><option timestep="{timestep}" cone="elliptic" impratio="{impratio}"/>
+      <worldbody><geom name="floor" type="plane" size="1 1 .1"/>
+      <body pos="0 0 0.05"><joint type="slide" axis="1 0 0"/>
+        <joint type="slide" axis="0 0 1"/>
+        <geom name="ball" type="sphere" size="0.05" mass="1"/></body></worldbody>
+      <contact><pair geom1="floor" geom2="ball" condim="3" friction="10 10 0.005 0.0001 0.0001"
+        solref="{3 * timestep} 1" solimp="{d} {d} 0.001 0.5 2"
+        solreffriction="0 {-d / timestep}"/></contact></mujoco>"""
+    model = mujoco.MjModel.from_xml_string(xml)
+    data = mujoco.MjData(model)
+    for _ in range(round(0.5 / timestep)):
+        mujoco.mj_step(model, data)
+    return model, data
+
+
+@pytest.mark.parametrize("timestep", [0.002, 0.001])
+@pytest.mark.parametrize("d", [0.01, 0.001])
+def test_slip_relaxation_of_a_pair_with_its_own_friction_reference(timestep, d):
+    """A pair's solreffriction (direct form, b = B/d_w = 1/Δt) sets the friction rows'
+    damping, not its solref: MuJoCo's slip shrinks by ρ = 1 − Δt d_f b = 1 − d_f per step
+    (the exact case of a point mass, to 1e-10 m/s rounding), with d_f of impratio = 10/d."""
+    impratio = 10.0 / d
+    model, data = _paired_block(timestep, d, impratio)
+    penetration = -data.contact[0].dist
+    solimp = (d, d, 0.001, 0.5, 2.0)
+    rho = sc.slip_relaxation(timestep, 3 * timestep, solimp, penetration, impratio,
+                             friction_ref=(0.0, -d / timestep))
+    assert rho == pytest.approx(1.0 - sc.friction_impedance(d, impratio), abs=1e-12)
+    np.testing.assert_allclose(_slips(model, data, free=False), 0.01 * rho ** np.arange(5),
+                               rtol=0, atol=1e-10)
+
+
+def test_friction_damping_forms():
+    # (t_c, ζ): 2/(d_w t_c), t_c raised to 2 Δt by refsafe; direct (−K, −B): B/d_w.
+    solimp = (0.9, 0.95, 0.001, 0.5, 2.0)
+    assert sc.friction_damping(0.001, (0.004, 1.0), solimp) == pytest.approx(2 / (0.95 * 0.004))
+    assert sc.friction_damping(0.001, (0.001, 1.0), solimp) == pytest.approx(2 / (0.95 * 0.002))
+    assert sc.friction_damping(0.001, (0.0, -50.0), solimp) == pytest.approx(50 / 0.95)
+    with pytest.raises(ValueError, match="solref"):
+        sc.friction_damping(0.001, (0.0, 1.0), solimp)

@@ -1,17 +1,26 @@
 import numpy as np
 import pytest
-from absl.testing import absltest, parameterized
+from absl.testing import absltest
 from dm_env import test_utils
 
 from wmr_mujoco import suite
 
 
-class SuiteSpecTest(test_utils.EnvironmentTestMixin, parameterized.TestCase):
-    """dm_env's own checks (specs against every observation, reward and discount) on one task;
-    the parametrised pytest below runs the same checks over every task."""
-
+def _spec_test(robot: str, task: str) -> type:
+    """dm_env's own checks (specs against every observation, reward and discount, over
+    resets and action sequences) on one task, as a TestCase of its own."""
     def make_object_under_test(self):
-        return suite.load("diffdrive", "GoToGoal", task_kwargs={"random": 0})
+        return suite.load(robot, task, task_kwargs={"random": 0})
+
+    return type(f"SpecTest_{robot}_{task}", (test_utils.EnvironmentTestMixin,
+                                              absltest.TestCase),
+                {"make_object_under_test": make_object_under_test})
+
+
+# One TestCase per task of ALL_TASKS (pytest collects them from the module's names).
+for _robot, _task in suite.ALL_TASKS:
+    _case = _spec_test(_robot, _task)
+    globals()[_case.__name__] = _case
 
 
 @pytest.mark.parametrize("robot, task", suite.ALL_TASKS)

@@ -20,6 +20,7 @@ from pathlib import Path
 import mujoco
 
 from wmr_mujoco.atomic import write_text_atomic
+from wmr_mujoco.bench.env_section import env_section
 from wmr_mujoco.bench.thread_scaling import TARGET_S, driving_controls, scaling
 from wmr_mujoco.lookup import load
 from wmr_mujoco.progress import bar
@@ -203,7 +204,7 @@ def main(args: argparse.Namespace) -> int:
     results: dict[str, object] = {"machine": {"cpus": os.cpu_count(),
                                               "mujoco": mujoco.__version__},
                                   "quick": bool(args.quick)}
-    stages = bar(6, "wmr bench", unit="stage")
+    stages = bar(7, "wmr bench", unit="stage")
     print("stepping speed ...", file=sys.stderr, flush=True)
     pairs = 3 if args.quick else max(15, repeats)
     speed = step_speed(driven_robots(), pairs)
@@ -232,6 +233,9 @@ def main(args: argparse.Namespace) -> int:
     stages.update()
     engines = validation_engines(1 if args.quick else 3)
     results["validation_engines_s"] = engines
+    stages.update()
+    print("learning environments ...", file=sys.stderr, flush=True)
+    results["envs"], envs_md = env_section(bool(args.quick))
     stages.update()
     stages.close()
 
@@ -276,7 +280,7 @@ def main(args: argparse.Namespace) -> int:
         "simulation stage alone: "
         f"{engines['sim_rollout']:.2f} s through one `mujoco.rollout` per scenario, "
         f"{engines['sim_loop']:.2f} s through a Python `mj_step` loop "
-        f"({engines['sim_speedup']:.1f}×)."]) + "\n"
+        f"({engines['sim_speedup']:.1f}×).", "## Learning environments", envs_md]) + "\n"
     print(text)
     out.mkdir(exist_ok=True)
     write_text_atomic(out / "bench.json", json.dumps(results, indent=2, default=float))

@@ -18,6 +18,7 @@ import gymnasium as gym
 import numpy as np
 
 import wmr_mujoco.envs as wenvs
+from wmr_mujoco.bench.env_throughput import check_ids
 from wmr_mujoco.envs.scripted import run_episode
 
 #: Required success rate.
@@ -32,8 +33,8 @@ def wilson_lower(k: int, n: int, z: float = 1.96) -> float:
     return (centre - spread) / (1 + z * z / n)
 
 
-def success_rate(env_id: str, episodes: int, seed: int) -> tuple[int, list[int], float]:
-    """``(successes, failed seeds, seconds)`` of the scripted controller on ``env_id``."""
+def success_rate(env_id: str, episodes: int, seed: int) -> dict[str, object]:
+    """Successes, episodes, failed seeds and seconds of the scripted controller on ``env_id``."""
     env = gym.make(env_id)
     episode = env.unwrapped.episode
     failed = []
@@ -43,31 +44,39 @@ def success_rate(env_id: str, episodes: int, seed: int) -> tuple[int, list[int],
         if not ok:
             failed.append(s)
     env.close()
-    return episodes - len(failed), failed, time.perf_counter() - t0
+    return {"successes": episodes - len(failed), "episodes": episodes, "failed": failed,
+            "seconds": time.perf_counter() - t0}
+
+
+def row(env_id: str, r: dict[str, object]) -> str:
+    """One Markdown table row of :func:`success_rate`'s figures."""
+    k, n, failed = r["successes"], r["episodes"], r["failed"]
+    shown = ", ".join(map(str, failed[:10])) + (" ..." if len(failed) > 10 else "")
+    return (f"| {env_id} | {k}/{n} | {100 * k / n:.1f} % | {100 * wilson_lower(k, n):.1f} % | "
+            f"{shown or '-'} | {r['seconds']:.0f} |")
+
+
+HEADER = ("| environment | successes | rate | Wilson 95 % lower bound | failed seeds | s |\n"
+          "|---|---:|---:|---:|---|---:|")
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Print the table; exit 1 if a rate is below :data:`GOAL`, 2 on bad arguments."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("ids", nargs="*", help=f"environment ids (of {', '.join(wenvs.ENV_IDS)})")
+    parser.add_argument("ids", nargs="*", help="environment ids (default: all)")
     parser.add_argument("--episodes", type=int, default=100)
     parser.add_argument("--seed", type=int, default=0)
     args = parser.parse_args(argv)
-    ids = args.ids or list(wenvs.ENV_IDS)
-    bad = [i for i in ids if i not in wenvs.ENV_IDS]
-    if bad or not 1 <= args.episodes <= 10_000 or args.seed < 0:
-        parser.error(f"unknown ids {bad} (valid: {', '.join(wenvs.ENV_IDS)}), or --episodes "
-                     "outside [1, 10000], or a negative --seed")
-    print("| environment | successes | rate | Wilson 95 % lower bound | failed seeds | s |")
-    print("|---|---:|---:|---:|---|---:|")
+    ids = check_ids(parser, args.ids) or list(wenvs.ENV_IDS)
+    if not 1 <= args.episodes <= 10_000 or args.seed < 0:
+        parser.error(f"--episodes {args.episodes} (valid: 1 to 10000), --seed {args.seed} "
+                     "(valid: >= 0)")
+    print(HEADER)
     worst = 1.0
     for env_id in ids:
-        k, failed, secs = success_rate(env_id, args.episodes, args.seed)
-        worst = min(worst, k / args.episodes)
-        shown = ", ".join(map(str, failed[:10])) + (" ..." if len(failed) > 10 else "")
-        print(f"| {env_id} | {k}/{args.episodes} | {100 * k / args.episodes:.1f} % | "
-              f"{100 * wilson_lower(k, args.episodes):.1f} % | {shown or '-'} | {secs:.0f} |",
-              flush=True)
+        r = success_rate(env_id, args.episodes, args.seed)
+        worst = min(worst, r["successes"] / args.episodes)
+        print(row(env_id, r), flush=True)
     print(f"\nworst success rate {100 * worst:.1f} % (goal >= {100 * GOAL:.0f} %); seeds "
           f"{args.seed}..{args.seed + args.episodes - 1}")
     return 0 if worst >= GOAL else 1

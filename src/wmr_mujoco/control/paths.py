@@ -5,6 +5,7 @@ validation scenarios close loops with them.
 """
 
 from wmr_mujoco.loop.control.paths import (
+    DS,
     HINT_WINDOW,
     PATHS,
     SAMPLES,
@@ -12,15 +13,19 @@ from wmr_mujoco.loop.control.paths import (
     Path,
     PathPoint,
     circle,
+    extend,
     figure_eight,
     from_curve,
+    hermite_path,
     lane_change,
     line,
     make_path,
+    random_path,
     random_spline,
 )
 
 __all__ = [
-    "HINT_WINDOW", "PATHS", "SAMPLES", "Curve", "Path", "PathPoint", "circle", "figure_eight",
-    "from_curve", "lane_change", "line", "make_path", "random_spline"
+    "DS", "HINT_WINDOW", "PATHS", "SAMPLES", "Curve", "Path", "PathPoint", "circle", "extend",
+    "figure_eight", "from_curve", "hermite_path", "lane_change", "line", "make_path",
+    "random_path", "random_spline"
 ]

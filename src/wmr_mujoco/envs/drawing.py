@@ -26,5 +26,5 @@ def draw_task(scene: mujoco.MjvScene, task: Any) -> None:
         add_polyline(scene, pts, GOAL_RGBA, 2 * width)
     path = getattr(task, "path", None)
     if path is not None:
-        pts = path.points[: path.end_index + 1: 5]
+        pts = path.xy[path.s <= task.end][::5]
         add_polyline(scene, np.column_stack([pts, np.full(len(pts), LIFT)]), PATH_RGBA, width)

@@ -28,6 +28,9 @@ from wmr_mujoco.envs.episode import Episode
 from wmr_mujoco.envs.randomization import Bands
 
 RENDER_MODES = ("rgb_array", "human")
+#: The keyword options of :class:`WmrEnv` (``gymnasium.make(id, **options)``).
+OPTIONS = ("mode", "randomize", "task_kwargs", "control_period", "render_mode", "width",
+           "height")
 
 
 def has_display() -> bool:
@@ -63,7 +66,9 @@ class WmrEnv(gym.Env):
                  randomize: bool | Bands | Mapping = False,
                  task_kwargs: Mapping[str, float] | None = None,
                  control_period: float | None = None, render_mode: str | None = None,
-                 width: int = 480, height: int = 360) -> None:
+                 width: int = 480, height: int = 360, **unknown: Any) -> None:
+        if unknown:  # a typo would otherwise be Python's TypeError, valid names unsaid
+            raise TypeError(f"unknown option(s) {sorted(unknown)}; valid: {', '.join(OPTIONS)}")
         if render_mode is not None and render_mode not in RENDER_MODES:
             raise ValueError(f"unknown render_mode {render_mode!r}; valid: None, "
                              f"{', '.join(map(repr, RENDER_MODES))}")
@@ -102,7 +107,15 @@ class WmrEnv(gym.Env):
 
     def reset(self, *, seed: int | None = None, options: Mapping[str, Any] | None = None
               ) -> tuple[np.ndarray, dict]:
-        """Start an episode (seeded by ``seed``: task draw, randomisation, wheel phases)."""
+        """Start an episode (seeded by ``seed``: task draw, randomisation, wheel phases).
+
+        Raises:
+            ValueError: ``options`` given (the environment takes none at reset; the
+                task's options are ``task_kwargs`` of ``gymnasium.make``).
+        """
+        if options:
+            raise ValueError(f"reset() takes no options, got {sorted(options)}; set the "
+                             "task's options with gymnasium.make(id, task_kwargs={...})")
         super().reset(seed=seed)
         obs = self.episode.reset(self.np_random)
         info = {"randomization": dict(self.episode.factors)}

@@ -16,40 +16,48 @@ robot's own:
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
 from wmr_mujoco.drive import make
-from wmr_mujoco.envs.profiles import Profile, profile
+from wmr_mujoco.envs.profiles import Profile, profile, robot_name
 from wmr_mujoco.envs.randomization import Band, Bands, Randomizer
 from wmr_mujoco.envs.tasks import Field, Task, task_class
 
 MODES = ("command", "wheels")
 
 
-def check_action(action: Any, n: int) -> np.ndarray:
-    """``action`` as a float array of shape ``(n,)``, clipped to ``[-1, 1]``.
+def check_action(action: Any, n: int) -> list[float]:
+    """``action`` as ``n`` Python floats, each clipped to ``[-1, 1]``.
 
     Raises:
         ValueError: not numeric, wrong shape, or not finite (before any stepping).
     """
     if type(action) is np.ndarray and action.shape == (n,) and action.dtype.kind == "f":
-        a = action.astype(float)
-        if np.isfinite(a).all():  # the usual case, checked fast
-            return np.minimum(np.maximum(a, -1.0, out=a), 1.0, out=a)
+        out = []
+        for v in action.tolist():  # the usual case, checked on Python floats
+            if not -math.inf < v < math.inf:  # NaN fails too
+                break
+            out.append(-1.0 if v < -1.0 else 1.0 if v > 1.0 else v)
+        else:
+            return out
     try:
-        a = np.asarray(action, dtype=float)
+        a = np.asarray(action)
+        if a.dtype.kind not in "biuf":  # complex, strings, objects: not real numbers
+            raise TypeError
+        a = a.astype(float)
     except (TypeError, ValueError):
-        raise ValueError(f"action {action!r} is not numeric; expected {n} numbers in "
+        raise ValueError(f"action {action!r} is not numeric (real); expected {n} numbers in "
                          "[-1, 1]") from None
     if a.shape != (n,):
         raise ValueError(f"action has shape {a.shape}; expected ({n},) in [-1, 1]")
     if not np.all(np.isfinite(a)):
         raise ValueError(f"action {a.tolist()} is not finite; expected {n} finite numbers "
                          "in [-1, 1]")
-    return np.clip(a, -1.0, 1.0)
+    return np.clip(a, -1.0, 1.0).tolist()
 
 
 class Episode:
@@ -73,6 +81,7 @@ class Episode:
                  randomize: bool | Bands | Mapping[str, Band | None] = False,
                  task_kwargs: Mapping[str, float] | None = None,
                  control_period: float | None = None) -> None:
+        robot = robot_name(robot)
         prof: Profile = profile(robot)
         if task not in prof.tasks:
             raise ValueError(f"robot {robot!r} has no task {task!r}; its tasks: "
@@ -93,6 +102,9 @@ class Episode:
         space = self.robot.command_space
         self.center = (space.high + space.low) / 2
         self.half = (space.high - space.low) / 2
+        #: ``(c, h, low, high)`` of each channel as floats, for :meth:`command`.
+        self._scale = list(zip(self.center.tolist(), self.half.tolist(), space.low.tolist(),
+                               space.high.tolist(), strict=True))
         self.bands = prof.bands if randomize is True else (randomize or None)
         self.randomizer = (Randomizer(self.robot.model, self.bands, self.robot.wheel_names)
                            if self.bands is not None else None)
@@ -104,7 +116,7 @@ class Episode:
         self.size = sum(f.size for f in self.fields)
         self.dt = self.robot.control_period
         self.state: Any = None
-        self.last_action = np.zeros(self.n_action)
+        self.last_action = [0.0] * self.n_action
         self.factors: dict[str, np.ndarray] = {}
 
     def reset(self, rng: np.random.Generator) -> np.ndarray:
@@ -117,12 +129,13 @@ class Episode:
         if self.robot.data is not None and hasattr(self.robot, "reader"):
             # The task may have set the robot in motion: read the state again.
             self.state = self.robot.reader.read(self.robot.data, 0.0, float(start[2]))
-        self.last_action = np.zeros(self.n_action)
+        self.last_action = [0.0] * self.n_action
         return self.observe()
 
-    def command(self, action: np.ndarray) -> np.ndarray:
-        """The robot command of a (checked, clipped) normalised action."""
-        return self.center + self.half * action
+    def command(self, action: Any) -> list[float]:
+        """The robot command ``c + h a`` of a checked normalised action (kept in the box)."""
+        return [min(hi, max(lo, c + h * a))
+                for (c, h, lo, hi), a in zip(self._scale, action, strict=True)]
 
     def action(self, command: np.ndarray) -> np.ndarray:
         """The normalised action of a robot command (the inverse of :meth:`command`)."""
@@ -137,32 +150,29 @@ class Episode:
             RuntimeError: no reset yet.
             SimulationDivergedError: the physics diverged.
         """
-        if self.state is None:
+        prev = self.state
+        if prev is None:
             raise RuntimeError("call reset() before step()")
         a = check_action(action, self.n_action)
-        prev = self.state
-        self.state = self.robot.step(self.command(a))
+        task = self.task
+        self.state = state = self.robot.step(self.command(a))
         self.last_action = a
-        terms = dict(self.task.reward_terms(prev, self.state, a, self.dt))
-        success, failure = self.task.outcome(self.state)
-        truncated = (not (success or failure)
-                     and float(self.state.time) >= self.task.time_limit - 1e-9)
+        terms = task.reward_terms(prev, state, a, self.dt)
+        success, failure = task.outcome(state)
+        time = state.time.item()
+        truncated = not (success or failure) and time >= task.time_limit - 1e-9
         if truncated:
-            success = self.task.succeeded_at_time_limit(self.state)
+            success = task.succeeded_at_time_limit(state)
         info = {"reward_terms": terms, "is_success": bool(success), "failed": bool(failure),
-                "time": float(self.state.time)}
-        return (self.observe(), float(sum(terms.values())), bool(success or failure)
-                and not truncated, truncated, info)
+                "time": time}
+        return (self.observe(), sum(terms.values()), not truncated and (success or failure),
+                truncated, info)
 
     def observe(self) -> np.ndarray:
         """The observation vector (float32; module docstring)."""
-        s, out = self.state, np.empty(self.size, np.float32)
-        k = self.task.size
-        out[:k] = self.task.observe(s)
-        out[k:k + 3] = s.twist
-        out[k + 3:self.size - self.n_action] = s.wheel_rates
-        out[self.size - self.n_action:] = self.last_action
-        return out
+        s = self.state
+        return np.array(self.task.observe(s) + s.twist.tolist() + s.wheel_rates.tolist()
+                        + self.last_action, np.float32)
 
     def describe(self) -> str:
         """The observation's blocks with their units, one per line."""

@@ -45,6 +45,9 @@ ROLLER_BANDS = Bands(wheel_radius=None)
 PROFILES: dict[str, Profile] = {
     "diffdrive": Profile("DiffDrive", scale=1.0, max_curvature=1.5),
     "omni3": Profile("Omni3", scale=0.5, max_curvature=3.0, bands=ROLLER_BANDS),
+    # omni3's size; its wheels touch the floor through one low-friction capsule each.
+    "omni3_reduced": Profile("Omni3Reduced", scale=0.5, max_curvature=3.0,
+                             bands=ROLLER_BANDS),
     "mecanum4": Profile("Mecanum4", scale=1.0, max_curvature=1.5, bands=ROLLER_BANDS),
     # Planar model: its joints hold the frame level (no pitch), so wheels of different
     # radii would lift one of them off the floor (test_randomization checks the others).
@@ -63,12 +66,27 @@ PROFILES: dict[str, Profile] = {
                                    servo_gain=(0.9, 1.1))),
 }
 
-DEFAULT = Profile("")
+#: A robot not in the table: unit scale, and no wheel-radius band (its wheels may roll on
+#: rollers or other bodies, whose radius is not one geom's).
+DEFAULT = Profile("", bands=Bands(wheel_radius=None))
 
 
 def drivable() -> list[str]:
     """Registered robots that the stepping API can drive (they have actuators)."""
     return drive.drivable()
+
+
+def robot_name(robot: str) -> str:
+    """The registry name of a drivable robot (typed loosely, as ``get_spec`` takes it).
+
+    Raises:
+        ValueError: unknown robot, or one without actuators; the message lists valid ones.
+    """
+    name = get_spec(robot).name
+    if name not in drivable():
+        raise ValueError(f"robot {name!r} has no natural command (no actuators); robots "
+                         f"with environments: {', '.join(drivable())}")
+    return name
 
 
 def profile(robot: str) -> Profile:
@@ -77,10 +95,7 @@ def profile(robot: str) -> Profile:
     Raises:
         ValueError: unknown robot, or one without actuators; the message lists valid ones.
     """
-    get_spec(robot)
-    if robot not in drivable():
-        raise ValueError(f"robot {robot!r} has no natural command (no actuators); robots "
-                         f"with environments: {', '.join(drivable())}")
-    if robot in PROFILES:
-        return PROFILES[robot]
-    return replace(DEFAULT, stem="".join(w.title() for w in robot.split("_")))
+    name = robot_name(robot)
+    if name in PROFILES:
+        return PROFILES[name]
+    return replace(DEFAULT, stem="".join(w.title() for w in name.split("_")))

@@ -17,13 +17,12 @@ The controller is chosen by the command space's channel names (never by robot na
 * ``(v, front_steer, rear_steer)``: two steered wheels at ``±h`` along the body, turned
   symmetrically about the centre, ``δ_f = −δ_r = atan(h κ)``: the centre then moves
   along the body axis on curvature κ.
-* ``(rear_torque, steer_torque)``-like torques of the Whipple bicycle: discrete LQR on the
-  benchmark's linearised equations at the target speed,
-  ``x = (φ, δ, φ̇, δ̇)``, ``ẋ = A(v) x + B T_δ``, ``B = [0; M⁻¹ e₂]``,
-  ``Q = diag(10, 10, 1, 1)``, ``R = 0.1``; and a speed loop ``T_r = k_v (v* − u)``.
+* ``(rear_torque, steer_torque)`` of the Whipple bicycle: the control package's LQR
+  steer-into-the-lean law with its rear-wheel speed hold
+  (:class:`~wmr_mujoco.control.whipple_lean.WhippleLean`), designed at the task's speed.
 
 GoToGoal (non-holonomic) follows a cubic Hermite path from the start pose to the goal pose
-(:func:`~wmr_mujoco.envs.paths.hermite_path`), so the goal is reached with its heading.
+(:func:`~wmr_mujoco.control.paths.hermite_path`), so the goal is reached with its heading.
 """
 
 from __future__ import annotations
@@ -32,14 +31,12 @@ import math
 from typing import Any
 
 import numpy as np
-from scipy.linalg import expm, solve_discrete_are
 
+from wmr_mujoco.control.paths import Path, extend, hermite_path
+from wmr_mujoco.control.whipple_lean import WhippleLean
 from wmr_mujoco.envs.episode import Episode
-from wmr_mujoco.envs.paths import Path, hermite_path
 from wmr_mujoco.envs.tasks import FollowPath, GoToGoal, StayUpright
 from wmr_mujoco.envs.tasks.base import to_body, wrap
-from wmr_mujoco.robots.whipple import analytic
-from wmr_mujoco.robots.whipple.params import WhippleParams
 
 #: Cruise speed in robot lengths per second (``V = SPEED · L``, at most half the limit).
 SPEED = 0.5
@@ -47,8 +44,6 @@ SPEED = 0.5
 LOOKAHEAD = 0.35
 #: Heading gain of the holonomic controller, 1/s; position gain, 1/s.
 K_HEADING, K_POSITION = 2.0, 1.5
-#: Speed gain of the Whipple bicycle's rear wheel, N m per m/s.
-K_SPEED = 60.0
 
 
 class Scripted:
@@ -76,25 +71,26 @@ class Scripted:
         self.speed = min(SPEED * episode.profile.scale, 0.5 * float(high[0]))
         self.lookahead = LOOKAHEAD * episode.profile.scale
         self.path: Path | None = None
-        self.index: int | None = None
+        #: Arc length of the last nearest point on the path (the search's hint), m.
+        self.s: float | None = None
         if self.kind == "carlike":
             self.wheelbase = float(params.wheelbase)
         if self.kind == "double":
             self.wheelbase = float(params.half_wheelbase)
         self.steer_limit = float(high[1]) if len(high) > 1 else math.pi
-        self.gain: np.ndarray | None = None
+        self.balance: WhippleLean | None = None
 
     def reset(self) -> None:
         """Plan the episode: the path to follow, or the balance gains at the target speed."""
         task, state = self.ep.task, self.ep.state
-        self.index = None
+        self.s = None
         if isinstance(task, FollowPath):
             self.path = task.path
         elif isinstance(task, GoToGoal):
-            self.path = hermite_path(np.asarray(state.pose, float), task.goal,
-                                     run_out=2.0 * self.ep.profile.scale)
+            self.path = extend(hermite_path(np.asarray(state.pose, float), task.goal),
+                               2.0 * self.ep.profile.scale)
         else:
-            self.gain = lqr_gain(task.speed, self.ep.dt)
+            self.balance = WhippleLean(speed=task.speed)
 
     def command(self, state: Any) -> np.ndarray:
         """The natural command for ``state``."""
@@ -103,11 +99,12 @@ class Scripted:
         if self.kind == "holonomic" and isinstance(self.ep.task, GoToGoal):
             return self._holonomic_goal(state)
         pose = np.asarray(state.pose, float)
-        proj = self.path.project(pose[:2], self.index)
-        self.index = proj.index
-        target = to_body(pose, self.path.ahead(proj.index, np.array([self.lookahead]))[0])
+        near = (self.path.closest(pose[:2]) if self.s is None
+                else self.path.track(pose[:2], self.s))
+        self.s = near.s
+        target = to_body(pose, self.path.positions(near.s + self.lookahead))
         if self.kind == "holonomic":
-            e = wrap(proj.heading - pose[2])
+            e = wrap(near.heading - pose[2])
             return np.array([*(self.speed * target / max(np.linalg.norm(target), 1e-6)),
                              K_HEADING * e])
         kappa = 2.0 * target[1] / max(float(target @ target), 1e-6)
@@ -138,41 +135,11 @@ class Scripted:
         return np.array([*v, K_HEADING * wrap(goal[2] - pose[2])])
 
     def _balance(self, state: Any) -> np.ndarray:
-        x = state.extra
-        z = np.array([x["lean"], x["steer"], x["lean_rate"], x["steer_rate"]])
-        steer_torque = float(-(self.gain @ z)[0])
-        rear = K_SPEED * (self.ep.task.speed - float(state.twist[0]))
-        cmd = np.zeros(2)
-        cmd[list(self.order)] = rear, steer_torque
-        return cmd
-
-    @property
-    def order(self) -> tuple[int, int]:
-        """Where (rear torque, steer torque) go in the command (by channel name)."""
-        names = self.ep.robot.command_space.names
-        rear = next(i for i, n in enumerate(names) if "rear" in n or "drive" in n)
-        return (rear, 1 - rear)
+        return self.balance(state, None, float(state.time))
 
     def action(self, state: Any) -> np.ndarray:
         """The normalised action of :meth:`command`, clipped to ``[-1, 1]``."""
         return np.clip(self.ep.action(self.command(state)), -1.0, 1.0)
-
-
-def lqr_gain(speed: float, dt: float, params: WhippleParams | None = None) -> np.ndarray:
-    """Discrete LQR gain ``K`` (1×4) of the linear benchmark at ``speed`` (module docstring).
-
-    Zero-order hold over ``dt``: ``[A_d B_d] = expm([[A, B], [0, 0]] dt)``.
-    """
-    mats = analytic.matrices(params or WhippleParams())
-    a = analytic.state_matrix(speed, mats)
-    b = np.concatenate([np.zeros(2), np.linalg.solve(mats.M, [0.0, 1.0])])[:, None]
-    block = np.zeros((5, 5))
-    block[:4, :4], block[:4, 4:] = a, b
-    e = expm(block * dt)
-    ad, bd = e[:4, :4], e[:4, 4:]
-    q, r = np.diag([10.0, 10.0, 1.0, 1.0]), np.array([[0.1]])
-    p = solve_discrete_are(ad, bd, q, r)
-    return np.linalg.solve(r + bd.T @ p @ bd, bd.T @ p @ ad)
 
 
 def run_episode(episode: Episode, rng: np.random.Generator) -> tuple[bool, dict]:

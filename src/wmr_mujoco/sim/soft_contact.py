@@ -9,7 +9,11 @@ MuJoCo solves each constraint row for the acceleration (MuJoCo documentation,
 ``d ∈ (0, 1)`` the impedance of ``solimp = (d₀, d_w, width, mid, p)`` at the violation
 (:func:`impedance`), and, for ``solref = (t_c, ζ)`` with ``t_c > 0``,
 
-    b = 2 / (d_w t_c),    k = d / (d_w² t_c² ζ²).
+    b = 2 / (d_w t_c),    k = d / (d_w² t_c² ζ²),
+
+or, for the direct form ``solref = (−K, −B)``, ``b = B / d_w`` and ``k = K / d_w²``
+(:func:`friction_damping`; a contact pair's friction rows take its ``solreffriction``
+where it is set),
 
 with ``t_c`` raised to ``2 Δt`` where it is shorter (MuJoCo's ``refsafe``, on unless
 disabled). A friction row has no position term (``k r`` absent). MuJoCo's regulariser of
@@ -86,8 +90,32 @@ def friction_impedance(d: float, impratio: float) -> float:
     return d * impratio / (d * impratio + 1.0 - d)
 
 
+def friction_damping(timestep: float, solref: Sequence[float], solimp: Sequence[float],
+                     refsafe: bool = True) -> float:
+    """``b`` of a friction row with reference ``solref`` (its ``solreffriction`` if set).
+
+    MuJoCo's two forms: ``(t_c, ζ)`` with ``t_c > 0`` gives ``b = 2 / (d_w t_c)``
+    (``t_c`` raised to ``2 Δt`` by refsafe); the direct form ``(−K, −B)`` gives
+    ``b = B / d_w`` (no refsafe), ``d_w = solimp[1]``.
+
+    Raises:
+        ValueError: a step ≤ 0, or a solref that is neither form.
+    """
+    if not (math.isfinite(timestep) and timestep > 0):
+        raise ValueError(f"timestep = {timestep!r} s; valid range is (0, inf)")
+    t_c, second = (float(v) for v in solref[:2])
+    d_w = float(solimp[1])
+    if t_c > 0:
+        return 2.0 / (d_w * (max(t_c, 2.0 * timestep) if refsafe else t_c))
+    if t_c <= 0 and second < 0:
+        return -second / d_w
+    raise ValueError(f"solref = {tuple(solref)!r}; give (timeconst > 0, dampratio) or the "
+                     "direct form (-stiffness <= 0, -damping < 0)")
+
+
 def slip_relaxation(timestep: float, timeconst: float, solimp: Sequence[float],
-                    violation: float, impratio: float = 1.0, refsafe: bool = True) -> float:
+                    violation: float, impratio: float = 1.0, refsafe: bool = True,
+                    friction_ref: Sequence[float] | None = None) -> float:
     """``ρ = 1 − Δt d_f b``: the share of a gripping contact's slip left after one step.
 
     Exact for a row whose inverse inertia is MuJoCo's diagonal approximation of it (a
@@ -103,6 +131,8 @@ def slip_relaxation(timestep: float, timeconst: float, solimp: Sequence[float],
         impratio: MuJoCo's ``impratio`` (elliptic cones; 1 for pyramidal).
         refsafe: MuJoCo raises ``t_c`` to ``2 Δt`` (its ``refsafe``; False where the
             model disables it).
+        friction_ref: the friction rows' own reference (a pair's ``solreffriction``,
+            either form, :func:`friction_damping`); None or zeros: ``(timeconst, 1)``.
 
     Raises:
         ValueError: a non-positive step or time constant, or bad impedance input.
@@ -111,5 +141,5 @@ def slip_relaxation(timestep: float, timeconst: float, solimp: Sequence[float],
         if not (math.isfinite(value) and value > 0):
             raise ValueError(f"{name} = {value!r} s; valid range is (0, inf)")
     d_f = friction_impedance(impedance(violation, solimp), impratio)
-    b = 2.0 / (float(solimp[1]) * (max(timeconst, 2.0 * timestep) if refsafe else timeconst))
-    return 1.0 - timestep * d_f * b
+    ref = (timeconst, 1.0) if friction_ref is None or not any(friction_ref) else friction_ref
+    return 1.0 - timestep * d_f * friction_damping(timestep, ref, solimp, refsafe)

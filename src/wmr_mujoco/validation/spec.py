@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -103,6 +103,10 @@ class RobotSpec(Generic[P]):
         command_range: per kinematic input, the largest magnitude a user commands (the
             range of the random stepped inputs, :mod:`wmr_mujoco.bench.floor_runs`; None:
             the largest its kinematic scenarios command).
+        prepare: ``(members, params) -> None``, runs the given members of its measurement
+            families at once (batched) before they are evaluated one by one, so that each
+            ``evaluate`` finds its run ready (None: each member runs on its own; a member
+            not prepared still evaluates correctly, only slower).
     """
 
     name: str
@@ -127,6 +131,7 @@ class RobotSpec(Generic[P]):
     scene_extras: Callable[[mjcf.RootElement, P], None] | None = None
     command: CommandMap | None = None
     command_range: tuple[float, ...] | None = None
+    prepare: Callable[[Sequence[Scenario], P | None], None] | None = None
 
     def __post_init__(self) -> None:
         names = [s.name for s in self.scenarios]

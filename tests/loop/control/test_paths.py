@@ -91,3 +91,70 @@ def test_bad_input(bad):
         paths.make_path(**bad)
     with pytest.raises(ValueError, match="radius"):
         paths.circle(0.0)
+
+
+# -- the learning tasks' paths: random bounded curvature, Hermite, run-out, tracking ------
+
+@pytest.mark.parametrize("seed", range(5))
+def test_random_path_respects_its_curvature_bound(seed):
+    """|κ| ≤ κ_max by construction (Σ|a_k| ≤ κ_max); the polyline's own turning between
+    chords DS apart follows it to O(κ' DS), well inside 1e-3 of the bound here."""
+    start = np.array([0.3, -0.2, 0.7])
+    path = paths.random_path(np.random.default_rng(seed), start, length=4.0, max_curvature=1.5)
+    np.testing.assert_allclose(path.xy[0], start[:2])
+    assert path.heading[0] == pytest.approx(start[2])
+    assert np.abs(path.curvature).max() <= 1.5
+    chord = np.diff(path.xy, axis=0)
+    turn = np.diff(np.unwrap(np.arctan2(chord[:, 1], chord[:, 0])))
+    assert np.abs(turn / paths.DS).max() <= 1.5 * (1 + 1e-3)
+    # s is arc length; each chord is the mean of two unit vectors Δψ = κ DS apart, times
+    # DS: shorter by a factor cos(Δψ/2) ≈ 1 − (κ DS)²/8, at most 2.3e-6 m here.
+    assert path.length == 4.0
+    np.testing.assert_allclose(np.hypot(*chord.T), paths.DS,
+                               atol=paths.DS * (1.5 * paths.DS) ** 2 / 8 * (1 + 1e-6))
+
+
+def test_random_path_is_seeded_and_checked():
+    a = paths.random_path(np.random.default_rng(3), np.zeros(3), 2.0, 1.0)
+    b = paths.random_path(np.random.default_rng(3), np.zeros(3), 2.0, 1.0)
+    np.testing.assert_array_equal(a.xy, b.xy)
+    with pytest.raises(ValueError, match="length"):
+        paths.random_path(np.random.default_rng(0), np.zeros(3), -1.0, 1.0)
+
+
+def test_hermite_path_joins_the_two_poses_and_extend_runs_on_straight():
+    """The basis gives p(1) = p₁ and p'(1) ∥ m₁ exactly (to rounding)."""
+    start, goal = np.array([0.0, 0.0, 0.0]), np.array([2.0, 1.0, np.pi / 2])
+    path = paths.hermite_path(start, goal)
+    np.testing.assert_allclose(path.xy[-1], goal[:2], atol=1e-12)
+    assert path.heading[-1] == pytest.approx(goal[2], abs=1e-9)
+    assert path.heading[0] == pytest.approx(start[2], abs=1e-12)
+    longer = paths.extend(path, 0.5)
+    assert longer.length == pytest.approx(path.length + 0.5, abs=1e-12)
+    np.testing.assert_allclose(longer.xy[-1], goal[:2] + np.array([0.0, 0.5]), atol=1e-12)
+    assert longer.at(path.length + 0.25).curvature == 0.0
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_track_finds_what_closest_finds(seed):
+    """A point driving along a random path with a lateral offset (under the 1/κ_max =
+    0.67 m radius: the nearest point is unique within reach): track from the last answer
+    lands on the same foot as the exhaustive closest() (to rounding)."""
+    rng = np.random.default_rng(seed)
+    path = paths.extend(paths.random_path(rng, np.zeros(3), 4.0, 1.5), 1.0)
+    s = 0.0
+    for along in np.arange(0.0, 4.5, 0.03):
+        q = path.at(along)
+        off = 0.4 * np.sin(along)
+        p = q.position + off * np.array([-np.sin(q.heading), np.cos(q.heading)])
+        near, tracked = path.closest(p), path.track(p, s)
+        assert tracked.s == pytest.approx(near.s, abs=1e-9)
+        np.testing.assert_allclose(tracked.position, near.position, atol=1e-9)
+        s = tracked.s
+
+
+def test_positions_are_at_vectorised():
+    path = paths.figure_eight()
+    s = np.array([0.5, 3.0, 20.0])
+    np.testing.assert_allclose(path.positions(s), [path.at(x).position for x in s],
+                               atol=1e-12)

@@ -41,25 +41,25 @@ def test_step_command_hybrid_beats_kinematics():
     assert {s.label for s in series} >= {"physics", "kinematic", "hybrid"}
 
 
-def test_torque_rows_judged_as_declared():
-    """Along x every component and the pose are judged (requirements) and pass (v and r
-    stay near zero: the push is symmetric); under pure rotation too, where the premise of
-    the one-sample allowance holds (the model's wheel phase within one step's turn of the
-    physics') so the twist is compared with jumps one sample apart, the same-instant
-    figure reported beside; the Lagrange model's rows and the old single-instant figure
-    are reported only."""
+def test_torque_rows_declared():
+    """Every twist component and the pose carry issue 16's requirements, open over their
+    families (issue 24: shown with their figures, not judged; the spread is the family
+    table's, ``python -m wmr_mujoco.bench.omni_families``); under pure rotation, where the
+    premise of the one-sample allowance holds (the model's wheel phase within one step's
+    turn of the physics'), the twist is compared with jumps one sample apart and the
+    same-instant figure reported beside; the Lagrange model's rows and the old
+    single-instant figure are reported only."""
     m, _ = _metrics("torque along x", dy.evaluate_torque)
     for c in "uvr":
         row = m[f"hybrid: worst {c} error"]
-        assert row.target is dy.TORQUE_COMPONENT and row.value <= row.target.value
+        assert row.target is dy.TORQUE_COMPONENT and not row.target.judged
     pose = m["hybrid: worst position error"]
-    assert pose.target is dy.TORQUE_PATH and pose.value <= pose.target.value
+    assert pose.target is dy.TORQUE_PATH and not pose.target.judged
     assert m["Lagrange: |Δν| / |ν| at the last instant"].target is None
     assert m["Lagrange: worst u error"].target is None
     rot, _ = _metrics("torque rotate", dy.evaluate_torque)
     for c in "uvr":
-        row = rot[f"hybrid: worst {c} error"]
-        assert row.target is dy.TORQUE_COMPONENT and row.value <= row.target.value
+        assert rot[f"hybrid: worst {c} error"].target is dy.TORQUE_COMPONENT
         assert rot[f"hybrid: worst {c} error, sample by sample"].target is None
     assert abs(rot["hybrid: worst wheel phase"].value) <= 1.0
 

@@ -1,19 +1,43 @@
 """omni3's slip onset: one ramped run against the traction limit."""
 
+import numpy as np
 import pytest
 
 from wmr_mujoco.robots.omni3 import traction as tr
 from wmr_mujoco.robots.omni3.runs import hybrid
 
 
-def test_slip_onset_within_five_percent_with_a_fine_resolution():
-    """A push along x: the onset read from the contact slip is within issue 16's 5 % of
-    the prediction μ N with load transfer, and the derived resolution of the ramp is
-    under 2 % of it (so the 5 % is not decided by the reading)."""
-    measured, resolution, predicted, scales, slip = tr.measure_slip_onset()
-    assert abs(predicted - measured) / measured <= 0.05
-    assert resolution < 0.02 * measured
-    assert slip.shape == (scales.size, 3)
+def test_slip_onset_follows_the_wheel_phase():
+    """Issue 24: the measured onset spreads by ~20 % over the wheels' start phase. The
+    hybrid model on the same ramp from the same start (loads at the contact points, with
+    the heave: ``tests/robots/roller_wheels/test_omni_heave.py``) meets issue 16's 5 % at
+    every phase of a pitch on a 5° grid, while the quasi-static μ N at rest (one number for all
+    phases) misses it. The grid leaves out the two exactly symmetric starts (every wheel
+    at a roller's centre, 0° and 30°), where the physics' slip re-sticks once and its
+    reading jumps by ~12 % (an open point, docs/omni-dynamics.md). The ramp's derived
+    resolution stays under 2 % of the onset (so 5 % is not decided by the reading)."""
+    runs = tr.measure_slip_onsets(np.radians(np.arange(2.5, 60.0, 5.0)))
+    model = [abs(r.predicted - r.measured) / r.measured for r in runs]
+    static = [abs(r.quasi_static - r.measured) / r.measured for r in runs]
+    assert max(model) <= 0.05 < max(static)
+    assert all(r.resolution < 0.02 * r.measured for r in runs)
+    assert runs[0].slip.shape == (runs[0].scales.size, 3)
+
+
+def test_members_read_their_phase():
+    """A member of the slip family runs from its drawn phase: the wheels start there (the
+    rate servo holds them while the robot settles, to within a degree)."""
+    from wmr_mujoco.robots import omni3
+
+    sc = omni3.SPEC.scenario("slip onset").member({"phase": 20.0})
+    tr.prepare([np.radians(20.0)], None)
+    res = tr.evaluate_slip(sc, None)
+    assert not tr._READY
+    m = {x.name: x for x in res.metrics}
+    assert m["slip-onset torque: predicted vs physics"].target is tr.SLIP
+    run = tr.measure_slip_onsets([np.radians(20.0)])[0]
+    np.testing.assert_allclose(np.degrees(run.thetas[0]), 20.0, atol=1.0)
+    assert m["slip-onset torque, physics"].value == pytest.approx(run.measured)
 
 
 def test_prediction_is_the_traction_limit():

@@ -158,3 +158,31 @@ def test_drive_and_penetration(omni3_model):
     assert servo.torque_limit == pytest.approx(p.drive.wheel_torque_limit)
     # Soft contact under a third of the weight: µm, far below the roller size.
     assert 1e-6 < static_penetration(omni3_model) < 1e-3
+
+
+def test_handover_relaxation_reads_the_floor_pair():
+    """With floor pairs of small impedance (the sliding remedy) the roller contacts are
+    the pairs': ρ is the pair's (its solimp, impratio and direct-form solreffriction),
+    1 − d_f at b = 1/Δt, not the geoms' collision-class ρ ≈ 0; the overlap friction's
+    time constant is 2 Δt / (1 − ρ), the slip decay rate d_f b it reads as 2/t_c."""
+    import dataclasses
+
+    from wmr_mujoco.sim.soft_contact import friction_impedance, impedance, slip_relaxation
+
+    p = dataclasses.replace(OmniParams(), floor_impedance=0.01)
+    model = load("omni3", p)
+    hy = hybrid_from_model(model, ok.symmetric_layout(p.wheel_radius, p.wheel_distance),
+                           "platform", HYBRID_WHEELS)
+    k = next(k for k in range(model.npair) if model.pair_solreffriction[k].any())
+    solimp = model.pair_solimp[k]
+    d_f = friction_impedance(impedance(hy.penetration, solimp), model.opt.impratio)
+    assert hy.handover_relaxation == pytest.approx(1.0 - d_f, abs=1e-9)
+    assert hy.handover_relaxation == pytest.approx(slip_relaxation(
+        model.opt.timestep, model.pair_solref[k, 0], solimp, hy.penetration,
+        model.opt.impratio, friction_ref=model.pair_solreffriction[k]), abs=1e-15)
+    assert hy.contact_timeconst == pytest.approx(
+        2 * model.opt.timestep / (1 - hy.handover_relaxation), rel=1e-12)
+    default = hybrid_from_model(load("omni3"), ok.symmetric_layout(p.wheel_radius,
+                                                                   p.wheel_distance),
+                                "platform", HYBRID_WHEELS)
+    assert abs(default.handover_relaxation) < 0.05 < hy.handover_relaxation

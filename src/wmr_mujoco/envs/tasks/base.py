@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -34,13 +34,17 @@ class Field:
     unit: str
 
 
+#: Longest distance a task spans, m (a goal's arena, a path's length): the paths are
+#: sampled every 2 cm, so this bounds an episode's path at 5·10⁴ points.
+MAX_LENGTH = 1000.0
+
 #: Weight of the effort term, ``effort = −EFFORT mean(a²)``.
 EFFORT = 0.01
 
 
-def effort(action: np.ndarray) -> float:
-    """``−EFFORT mean(a²)`` of a normalised action."""
-    return -EFFORT * float(action @ action) / len(action)
+def effort(action: Sequence[float]) -> float:
+    """``−EFFORT mean(a²)`` of a normalised action (floats, or an array)."""
+    return -EFFORT * float(sum([a * a for a in action])) / len(action)
 
 
 def wrap(angle: float) -> float:
@@ -90,13 +94,16 @@ class Task(ABC):
         """Set the robot's initial motion after ``robot.reset`` (default: at rest)."""
 
     @abstractmethod
-    def observe(self, state: Any) -> np.ndarray:
-        """The task's observation block (float64, length :attr:`size`)."""
+    def observe(self, state: Any) -> list[float]:
+        """The task's observation block (:attr:`size` floats)."""
 
     @abstractmethod
-    def reward_terms(self, prev: Any, state: Any, action: np.ndarray, dt: float
-                     ) -> Mapping[str, float]:
-        """The reward terms of one step from ``prev`` to ``state`` under ``action``."""
+    def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                     ) -> dict[str, float]:
+        """The reward terms of one step from ``prev`` to ``state`` under ``action``.
+
+        A new dict every step (the environments hand it out in ``info``).
+        """
 
     @abstractmethod
     def outcome(self, state: Any) -> tuple[bool, bool]:
@@ -107,8 +114,11 @@ class Task(ABC):
         return False
 
 
-def check_options(task: str, given: Mapping[str, Any], valid: Mapping[str, Any]) -> dict:
+def check_options(task: str, given: Mapping[str, Any], valid: Mapping[str, Any],
+                  lengths: tuple[str, ...] = ()) -> dict:
     """Merge ``given`` into the defaults ``valid``; every value a positive finite number.
+
+    The options named in ``lengths`` (m) must not exceed :data:`MAX_LENGTH`.
 
     Raises:
         ValueError: an unknown option (the valid names listed) or a bad value.
@@ -123,4 +133,7 @@ def check_options(task: str, given: Mapping[str, Any], valid: Mapping[str, Any])
                 math.isfinite(value) and value > 0):
             raise ValueError(f"task {task!r}: option {key}={value!r} must be a positive "
                              "finite number")
+        if key in lengths and value > MAX_LENGTH:
+            raise ValueError(f"task {task!r}: option {key}={value!r} m is above the "
+                             f"{MAX_LENGTH:g} m a task may span")
     return out

@@ -20,12 +20,12 @@ Success: ``d < position_tolerance`` and ``|e_ψ| < heading_tolerance``. Failure:
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, to_body, wrap
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, wrap
 
 BONUS = 10.0
 
@@ -41,10 +41,12 @@ class GoToGoal(Task):
         super().__init__(scale, max_curvature)
         o = check_options(self.name, options, {
             "time_limit": 20.0, "min_distance": 1.0 * scale, "max_distance": 2.5 * scale,
-            "position_tolerance": 0.1 * scale, "heading_tolerance": 0.3, "arena": 5.0 * scale})
-        if o["min_distance"] > o["max_distance"]:
-            raise ValueError(f"GoToGoal: min_distance={o['min_distance']} m is above "
-                             f"max_distance={o['max_distance']} m")
+            "position_tolerance": 0.1 * scale, "heading_tolerance": 0.3, "arena": 5.0 * scale},
+            lengths=("arena",))
+        if not o["min_distance"] <= o["max_distance"] < o["arena"]:
+            raise ValueError(f"GoToGoal: need min_distance <= max_distance < arena (a goal "
+                             f"outside the arena fails at once); got {o['min_distance']}, "
+                             f"{o['max_distance']}, {o['arena']} m")
         self.options = o
         self.time_limit = o["time_limit"]
         self.goal = np.zeros(3)
@@ -61,38 +63,46 @@ class GoToGoal(Task):
         self._cache = None
         return np.array([0.0, 0.0, heading])
 
-    def errors(self, state: Any) -> tuple[float, float]:
-        """``(d, e_ψ)``: distance to the goal, m, and heading error, rad."""
+    def measure(self, state: Any) -> tuple[float, float, float, float]:
+        """``(x_g, y_g, d, e_ψ)``: body-frame goal, m, distance, m, heading error, rad.
+
+        Computed once per state (the last one is kept).
+        """
         if self._cache is not None and self._cache[0] is state:
             return self._cache[1]
         x, y, psi = state.pose.tolist()
         gx, gy, gpsi = self.goal.tolist()
-        out = math.hypot(gx - x, gy - y), wrap(gpsi - psi)
+        dx, dy = gx - x, gy - y
+        c, s = math.cos(psi), math.sin(psi)
+        out = c * dx + s * dy, c * dy - s * dx, math.hypot(dx, dy), wrap(gpsi - psi)
         self._cache = (state, out)
         return out
 
-    def observe(self, state: Any) -> np.ndarray:
+    def errors(self, state: Any) -> tuple[float, float]:
+        """``(d, e_ψ)``: distance to the goal, m, and heading error, rad."""
+        return self.measure(state)[2:]
+
+    def observe(self, state: Any) -> list[float]:
         """``(goal_xy, sin e_ψ, cos e_ψ, d)``."""
-        d, e = self.errors(state)
-        return np.array([*to_body(np.asarray(state.pose), self.goal[:2]), math.sin(e),
-                         math.cos(e), d])
+        bx, by, d, e = self.measure(state)
+        return [bx, by, math.sin(e), math.cos(e), d]
 
-    def _potentials(self, state: Any) -> tuple[float, float]:
-        d, e = self.errors(state)
-        return -d / self.scale, -0.5 * abs(e) / math.pi * math.exp(-d / self.scale)
-
-    def reward_terms(self, prev: Any, state: Any, action: np.ndarray, dt: float
-                     ) -> Mapping[str, float]:
+    def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                     ) -> dict[str, float]:
         """Progress, heading, effort, success and failure terms (docstring)."""
-        (d0, h0), (d1, h1) = self._potentials(prev), self._potentials(state)
-        success, failure = self.outcome(state)
-        return {"progress": d1 - d0, "heading": h1 - h0,
-                "effort": effort(action),
-                "success": BONUS * success, "failure": -BONUS * failure}
+        _, _, d0, e0 = self.measure(prev)
+        _, _, d, e = self.measure(state)
+        o, scale = self.options, self.scale
+        # Φ_ψ(s′) − Φ_ψ(s) with Φ_ψ = −½ (|e_ψ| / π) e^{−d/L}
+        heading = 0.5 / math.pi * (abs(e0) * math.exp(-d0 / scale) - abs(e) * math.exp(-d / scale))
+        success = d < o["position_tolerance"] and abs(e) < o["heading_tolerance"]
+        return {"progress": (d0 - d) / scale, "heading": heading, "effort": effort(action),
+                "success": BONUS if success else 0.0,
+                "failure": -BONUS if d > o["arena"] else 0.0}
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """Success inside both tolerances; failure outside the arena."""
-        d, e = self.errors(state)
+        _, _, d, e = self.measure(state)
         o = self.options
         return (d < o["position_tolerance"] and abs(e) < o["heading_tolerance"],
                 d > o["arena"])

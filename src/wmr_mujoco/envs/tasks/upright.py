@@ -22,7 +22,7 @@ without falling, with ``|u − v*| ≤ speed_tolerance v*`` at the end.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -74,22 +74,20 @@ class StayUpright(Task):
         roll_steadily(robot.model, robot.data, getattr(robot, "params", None), self.speed)
         push(robot.model, robot.data, self._push)
 
-    def observe(self, state: Any) -> np.ndarray:
+    def observe(self, state: Any) -> list[float]:
         """``(φ, φ̇, δ, δ̇, u − v*, v*)``."""
         x = state.extra
-        return np.array([x["lean"], x["lean_rate"], x["steer"], x["steer_rate"],
-                         float(state.twist[0]) - self.speed, self.speed])
+        return [x["lean"], x["lean_rate"], x["steer"], x["steer_rate"],
+                float(state.twist[0]) - self.speed, self.speed]
 
-    def reward_terms(self, prev: Any, state: Any, action: np.ndarray, dt: float
-                     ) -> Mapping[str, float]:
+    def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                     ) -> dict[str, float]:
         """Alive, lean, speed, effort and failure terms (docstring)."""
-        o = self.options
-        _, failure = self.outcome(state)
-        return {"alive": dt,
-                "lean": -dt * (state.extra["lean"] / o["fall_lean"]) ** 2,
-                "speed": -dt * ((float(state.twist[0]) - self.speed) / self.speed) ** 2,
-                "effort": effort(action),
-                "failure": -BONUS * failure}
+        fall = self.options["fall_lean"]
+        lean = state.extra["lean"]
+        rel = (float(state.twist[0]) - self.speed) / self.speed
+        return {"alive": dt, "lean": -dt * (lean / fall) ** 2, "speed": -dt * rel * rel,
+                "effort": effort(action), "failure": -BONUS if abs(lean) > fall else 0.0}
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """Never succeeds early; fails once fallen."""

@@ -17,12 +17,17 @@ LEFT of the path.
 
 Paths: :func:`line`, :func:`circle`, :func:`figure_eight`, :func:`lane_change` and
 :func:`random_spline` (seeded); :func:`make_path` builds one by name (:data:`PATHS`).
+The learning tasks (:mod:`wmr_mujoco.envs`) draw :func:`random_path` (bounded curvature)
+and plan with :func:`hermite_path` (pose to pose); :func:`extend` runs a path on straight.
 """
 
 from __future__ import annotations
 
+import bisect
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from scipy.interpolate import CubicSpline
@@ -31,6 +36,8 @@ from scipy.interpolate import CubicSpline
 SAMPLES = 4001
 #: Half-width of the closest-point search around a hint, m.
 HINT_WINDOW = 1.0
+#: Sample spacing of the random and Hermite paths, m.
+DS = 0.02
 
 
 @dataclass(frozen=True)
@@ -124,6 +131,38 @@ class Path:
         k = int(np.argmin(np.einsum("ij,ij->i", foot - p, foot - p)))
         return self.at(self.s[idx[k]] + t[k] * (self.s[idx[k] + 1] - self.s[idx[k]]))
 
+    @cached_property
+    def _rows(self) -> tuple[list[float], list[list[float]]]:
+        return self.s.tolist(), self.xy.tolist()
+
+    def track(self, point: np.ndarray, hint: float) -> PathPoint:
+        """:meth:`closest` for a point that moved little since the answer at ``hint``, m.
+
+        From the segment at ``hint`` it walks along the path while the distance shrinks:
+        for a control loop, once a step, at a fraction of :meth:`closest`'s cost.
+        """
+        (s, xy), px, py = self._rows, float(point[0]), float(point[1])
+        n = len(s) - 1
+
+        def foot(i: int) -> tuple[float, float]:
+            (ax, ay), (bx, by) = xy[i % n], xy[i % n + 1]
+            dx, dy = bx - ax, by - ay
+            t = min(1.0, max(0.0, ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy)))
+            return (ax + t * dx - px) ** 2 + (ay + t * dy - py) ** 2, t
+
+        i = max(0, min(bisect.bisect_right(s, hint % s[-1] if self.closed else hint) - 1, n - 1))
+        best, t = foot(i)
+        for step in (1, -1):
+            while self.closed or 0 <= i + step < n:
+                d, u = foot(i + step)
+                if d >= best:
+                    break
+                i, best, t = i + step, d, u
+        i %= n
+        f = lambda a: float(a[i] + t * (a[i + 1] - a[i]))  # noqa: E731 - linear in s
+        return PathPoint(f(self.s), self.xy[i] + t * (self.xy[i + 1] - self.xy[i]),
+                         f(self.heading), f(self.curvature))
+
     def cross_track(self, point: np.ndarray, hint: float | None = None) -> tuple[float, float]:
         """Signed cross-track error (> 0: ``point`` left of the path), m, and its arc length.
 
@@ -160,16 +199,27 @@ class Path:
         beyond = np.flatnonzero(np.linalg.norm(pts - p, axis=1) >= distance)
         return self.at(ahead[beyond[0]] if len(beyond) else ahead[-1])
 
+    def positions(self, s: np.ndarray) -> np.ndarray:
+        """``(x, y)`` at the arc lengths ``s`` (wrapped or clipped like :meth:`at`), (..., 2)."""
+        s = self._wrap(np.asarray(s, float))
+        out = np.empty((*s.shape, 2))
+        out[..., 0] = np.interp(s, self.s, self.xy[:, 0])
+        out[..., 1] = np.interp(s, self.s, self.xy[:, 1])
+        return out
+
     def _wrap(self, s: np.ndarray) -> np.ndarray:
-        return np.mod(s, self.length) if self.closed else np.clip(s, 0.0, self.length)
+        if self.closed:
+            return np.mod(s, self.length)
+        return np.minimum(np.maximum(s, 0.0), self.s[-1])
 
 
 Curve = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
 
-def from_curve(name: str, curve: Curve, tau_end: float, closed: bool = False) -> Path:
-    """Sample ``curve(τ) -> (p, p', p'')`` (each ``(N, 2)``) on ``[0, tau_end]``."""
-    tau = np.linspace(0.0, tau_end, SAMPLES)
+def from_curve(name: str, curve: Curve, tau_end: float, closed: bool = False,
+               samples: int = SAMPLES) -> Path:
+    """Sample ``curve(τ) -> (p, p', p'')`` (each ``(N, 2)``) ``samples`` times on ``[0, τ_end]``."""
+    tau = np.linspace(0.0, tau_end, samples)
     p, dp, ddp = curve(tau)
     speed = np.linalg.norm(dp, axis=1)
     s = np.concatenate([[0.0], np.cumsum(0.5 * (speed[1:] + speed[:-1]) * np.diff(tau))])
@@ -260,6 +310,70 @@ def random_spline(seed: int = 0, knots: int = 8, spacing: float = 2.0,
     spline = CubicSpline(chord, pts, bc_type=((1, [1.0, 0.0]), "natural"))
     return from_curve(f"random_spline(seed={seed})",
                       lambda t: (spline(t), spline(t, 1), spline(t, 2)), float(chord[-1]))
+
+
+def extend(path: Path, run_out: float, ds: float = DS) -> Path:
+    """An open ``path`` continued straight along its end heading for ``run_out`` m."""
+    n = math.ceil(run_out / ds)
+    if path.closed or n <= 0:
+        return path
+    extra, psi = ds * np.arange(1, n + 1), float(path.heading[-1])
+    xy = path.xy[-1] + extra[:, None] * np.array([math.cos(psi), math.sin(psi)])
+    return Path(path.name, np.concatenate([path.s, path.s[-1] + extra]),
+                np.concatenate([path.xy, xy]), np.concatenate([path.heading, np.full(n, psi)]),
+                np.concatenate([path.curvature, np.zeros(n)]))
+
+
+def random_path(rng: np.random.Generator, start: np.ndarray, length: float,
+                max_curvature: float, modes: int = 3, ds: float = DS) -> Path:
+    """A random smooth path of ``length`` m from the pose ``start``, ``|κ| ≤ max_curvature``.
+
+    The curvature is a random band-limited sum, ramped up from 0 over the first 10 %,
+
+        κ(s) = min(1, s / 0.1ℓ) Σ_k a_k sin(2π s / λ_k + φ_k),   Σ |a_k| ≤ κ_max,
+
+    and the path its integral, ``ψ(s) = ψ₀ + ∫κ``, ``(x, y)(s) = ∫(cos ψ, sin ψ)``
+    (trapezoids of ``ds``: the path is C² and never turns tighter than ``1/κ_max``).
+    Amplitudes: Dirichlet weights times ``κ_max U(0.5, 1)``; wavelengths ``U(0.5, 1.5) ℓ``.
+
+    Raises:
+        ValueError: a non-positive length or curvature, or no modes.
+    """
+    if not (length > 0 and max_curvature > 0 and modes >= 1):
+        raise ValueError(f"length={length!r} m, max_curvature={max_curvature!r} 1/m and "
+                         f"modes={modes!r} must all be positive")
+    s = np.linspace(0.0, length, math.ceil(length / ds) + 1)
+    amp = rng.dirichlet(np.ones(modes)) * max_curvature * rng.uniform(0.5, 1.0)
+    lam, phi = rng.uniform(0.5, 1.5, modes) * length, rng.uniform(0.0, 2 * math.pi, modes)
+    amp *= rng.choice([-1.0, 1.0], modes)
+    kappa = (amp * np.sin(2 * math.pi * s[:, None] / lam + phi)).sum(1)
+    kappa *= np.clip(s / (0.1 * length), 0.0, 1.0)
+    h = np.diff(s)
+    heading = start[2] + np.concatenate([[0.0], np.cumsum(0.5 * (kappa[1:] + kappa[:-1]) * h)])
+    step = np.stack([np.cos(heading), np.sin(heading)], axis=1)
+    xy = np.asarray(start[:2], float) + np.concatenate(
+        [[[0.0, 0.0]], np.cumsum(0.5 * (step[1:] + step[:-1]) * h[:, None], axis=0)])
+    return Path("random_path", s, xy, heading, kappa)
+
+
+def hermite_path(start: np.ndarray, goal: np.ndarray, tangent: float = 1.0,
+                 ds: float = DS) -> Path:
+    """The cubic Hermite curve from the pose ``start`` to the pose ``goal``.
+
+    ``p(τ) = h₀₀ p₀ + h₁₀ m₀ + h₀₁ p₁ + h₁₁ m₁``, ``τ ∈ [0, 1]``, with tangents
+    ``m = k d (cos ψ, sin ψ)``, ``d = |p₁ − p₀|``, ``k = tangent``; 2d/ds samples (>= 64).
+    """
+    p0, p1 = np.asarray(start[:2], float), np.asarray(goal[:2], float)
+    d = float(np.hypot(*(p1 - p0)))
+    m0, m1 = (tangent * d * np.array([math.cos(q[2]), math.sin(q[2])]) for q in (start, goal))
+
+    def curve(t: np.ndarray):  # the basis h₀₀, h₁₀, h₀₁, h₁₁ and its two derivatives
+        t = t[:, None]
+        return tuple(a * p0 + b * m0 + c * p1 + e * m1 for a, b, c, e in (
+            (2 * t**3 - 3 * t**2 + 1, t**3 - 2 * t**2 + t, 3 * t**2 - 2 * t**3, t**3 - t**2),
+            (6 * t**2 - 6 * t, 3 * t**2 - 4 * t + 1, 6 * t - 6 * t**2, 3 * t**2 - 2 * t),
+            (12 * t - 6, 6 * t - 4, 6 - 12 * t, 6 * t - 2)))
+    return from_curve("hermite_path", curve, 1.0, samples=max(64, math.ceil(2 * d / ds)))
 
 
 #: The paths by name; each factory takes the seed (used only by the random spline).

@@ -24,7 +24,7 @@ from wmr_mujoco.analytic.planar import twist_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
-from wmr_mujoco.robots.omni3 import builder, coasting, dynamics, peer, traction
+from wmr_mujoco.robots.omni3 import builder, coasting, dynamics, families, peer, traction
 from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import CENTRE_BODY, WHEELS
 from wmr_mujoco.robots.roller_wheels import (
@@ -183,19 +183,23 @@ SCENARIOS = (
     Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True,
              family=WIDE_FAMILY, open_targets=SQUARE_OPEN),
     *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_step,
-               duration=s.duration, description="rate servo stepped to a twist (no ramp): "
-               "physics vs the hybrid model (servo law, torque limit) and the kinematics")
+               duration=s.duration, family=families.STEP_FAMILY,
+               description="rate servo stepped to a twist (no ramp): physics vs the hybrid "
+                           "model (servo law, torque limit) and the kinematics")
       for s in dynamics.STEP_SPECS),
     *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_torque,
-               duration=s.duration, description="constant wheel torques from rest: physics "
-               "vs the hybrid, Lagrange and kinematic models, windowed over the run")
+               duration=s.duration, family=families.TORQUE_FAMILY,
+               description="constant wheel torques from rest: physics vs the hybrid, "
+                           "Lagrange and kinematic models, windowed over the run")
       for s in dynamics.TORQUE_SPECS),
     Scenario(NAME, coasting.COAST_SPEC.name, kind=ScenarioKind.MEASUREMENT,
              evaluate=coasting.evaluate_coast, duration=coasting.COAST_TIME,
+             family=families.COAST_FAMILY,
              description="drive at (u, 0, r), motors off: yaw-rate decay, turn rate of "
                          "the velocity, energy lost per second"),
     Scenario(NAME, "slip onset", kind=ScenarioKind.MEASUREMENT,
              evaluate=traction.evaluate_slip, duration=traction.RAMP_TIME,
+             family=families.SLIP_FAMILY,
              description="one slowly ramped push along x: the torque at which a wheel "
                          "slips, against the traction limit μ N with load transfer"),
 )
@@ -215,5 +219,5 @@ SPEC = RobotSpec(
     bench_scenario="translate+rotate", render_scenario="square with rotation",
     clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
     peer=peer.peer_comparison, command=COMMAND,
-    scene_extras=builder.floor_pairs,
+    scene_extras=builder.floor_pairs, prepare=families.prepare,
 )

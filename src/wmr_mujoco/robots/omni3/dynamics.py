@@ -28,15 +28,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from wmr_mujoco.analytic.integrate import rk4_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.robots.omni3.members import member_run, member_spec
 from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import (
     CONTACT_WINDOW,
     Run,
     RunSpec,
-    cached_runs,
     hybrid,
     phase_lag_steps,
 )
@@ -58,10 +57,19 @@ STEP_PATH = Target.requirement(0.3, f"{SOURCE}: a step command within 0.3 % of p
                                     "the dynamic model, worst over the run")
 STEP_HEADING = Target.requirement(0.2, f"{SOURCE}: a step command within 0.2° of the "
                                        "dynamic model, worst over the run")
-TORQUE_COMPONENT = Target.requirement(
-    1.0, f"{SOURCE}: each body-velocity component within 1 % of its peak over the whole run")
-TORQUE_PATH = Target.requirement(0.5, f"{SOURCE}: pose within 0.5 % of path under torque "
-                                      "inputs, worst over the run")
+#: Open over their families (issue 24; spreads: ``python -m wmr_mujoco.bench.omni_families``).
+TORQUE_COMPONENT = Target.open(
+    1.0, f"{SOURCE}: each body-velocity component within 1 % of its peak over the whole run",
+    "over the start phase the model's hand-overs land a sample or more from the physics' "
+    "(the one-sample allowance holds only where its wheel phase stays within one step's "
+    "turn), and a wheel starting in a valley with both rows touching creeps out through "
+    "the soft contact's slip, which the rigid-contact model does not hold "
+    "(docs/omni-dynamics.md § 13)")
+TORQUE_PATH = Target.open(0.5, f"{SOURCE}: pose within 0.5 % of path under torque "
+                               "inputs, worst over the run",
+                          "a wheel starting in a valley with both rows touching creeps out "
+                          "through the soft contact's slip; the rigid-contact model keeps it "
+                          "there (docs/omni-dynamics.md § 13)")
 TRACTION = Target.derived(1.0, "Coulomb friction: a wheel rolls without slip while |F_t| ≤ "
                                "μ N, N from the robot's balance with load transfer; the "
                                "torque inputs must stay below it for the rolling models")
@@ -189,9 +197,10 @@ def _run(scenario: Scenario, params: RobotParams | None, specs: tuple[RunSpec, .
 
     if params is not None and not isinstance(params, OmniParams):
         raise ValueError(f"params must be OmniParams, got {type(params).__name__}")
-    if scenario.name not in {s.name for s in specs}:
+    base = {s.name: s for s in specs}.get(scenario.name)
+    if base is None:
         raise ValueError(f"no dynamic run named {scenario.name!r}")
-    return cached_runs(DYNAMIC_SPECS, params)[scenario.name]
+    return member_run(member_spec(scenario, base), params, DYNAMIC_SPECS)
 
 
 def off_floor_metric(run: Run) -> Metric:
@@ -237,11 +246,27 @@ def lagrange_twists(params: RobotParams | None, torques: np.ndarray, twist0: np.
     (:class:`~wmr_mujoco.robots.roller_wheels.omni_dynamics.OmniDynamics`).
     """
     dyn = lagrange_of(hybrid(params))  # type: ignore[arg-type]
+    minv = np.linalg.inv(dyn.mass_matrix)
+    force = minv @ dyn.H.T @ np.asarray(torques, float)
+    # body_acceleration with c(ν) = (−M r v, M r u, 0): ν̇ = f − M r (−v m₀ + u m₁),
+    # m_j the columns of the inverse mass matrix (plain floats: 4 stages × n steps).
+    f = [float(x) for x in force]
+    m0 = [float(x) * dyn.mass for x in minv[:, 0]]
+    m1 = [float(x) * dyn.mass for x in minv[:, 1]]
+
+    def accel(nu: list[float]) -> list[float]:
+        u, v, r = nu
+        return [f[j] + r * (v * m0[j] - u * m1[j]) for j in range(3)]
+
     out = np.zeros((n + 1, 3))
     out[0] = twist0
-    nu = np.asarray(twist0, float)
-    for k in range(n):
-        nu = rk4_step(dyn.body_acceleration, nu, torques, dt)
+    nu = [float(x) for x in twist0]
+    for k in range(n):  # RK4
+        k1 = accel(nu)
+        k2 = accel([nu[j] + 0.5 * dt * k1[j] for j in range(3)])
+        k3 = accel([nu[j] + 0.5 * dt * k2[j] for j in range(3)])
+        k4 = accel([nu[j] + dt * k3[j] for j in range(3)])
+        nu = [nu[j] + dt / 6.0 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]) for j in range(3)]
         out[k + 1] = nu
     return out
 

@@ -23,14 +23,18 @@ import numpy as np
 from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.models.actuation import ActuationMode, set_actuation_mode
 from wmr_mujoco.robots.omni3.params import OmniParams
+from wmr_mujoco.robots.omni3.physics import (  # noqa: F401  (contact readers re-exported)
+    WHEELS,
+    contact_wheels,
+    rollout_from,
+    settle_at_phases,
+    wheels_off_floor,
+)
 from wmr_mujoco.robots.roller_wheels import drive_from_model, hybrid_from_model, roller_rates
 from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
 from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
-from wmr_mujoco.sim.engine import STATE_SPEC, simulate, simulate_batch
 from wmr_mujoco.sim.stepping import check_healthy
 
-#: omni3's wheel hinges (and their actuators), in layout order.
-WHEELS = ("wheel1", "wheel2", "wheel3")
 #: The body the platform's yaw inertia is taken about.
 CENTRE_BODY = "platform"
 #: Seconds from a run's start over which the wheels' floor contacts are read
@@ -57,9 +61,13 @@ class RunSpec:
         command: constant wheel rates (rad/s, rate mode) or torques (N·m), held from rest
             (a step: no ramp).
         duration: judged phase, s.
-        lead_in: body twist driven (rate servo, 0.5 s linear ramp) for ``lead_time``
-            before the judged phase (a coast's drive), or None: the run starts at rest.
+        lead_in: body twist driven (rate servo, linear ramp over ``lead_ramp``) for
+            ``lead_time`` before the judged phase (a coast's drive), or None: the run
+            starts at rest.
         lead_time: s.
+        phase: every wheel's angle at the start, rad (the robot settles at rest on it,
+            the wheels held by the rate servo: :func:`~.physics.settle_at_phases`).
+        lead_ramp: the lead-in's ramp time, s (0: a step).
     """
 
     name: str
@@ -68,6 +76,8 @@ class RunSpec:
     duration: float
     lead_in: tuple[float, float, float] | None = None
     lead_time: float = 0.0
+    phase: float = 0.0
+    lead_ramp: float = 0.5
 
     def __post_init__(self) -> None:
         for label, vec in (("command", self.command), ("lead_in", self.lead_in or (0,) * 3)):
@@ -75,10 +85,14 @@ class RunSpec:
             if arr.shape != (3,) or not np.all(np.isfinite(arr)):
                 raise ValueError(f"{self.name}: {label} = {vec!r}; needs 3 finite numbers")
         for label, value, low in (("duration", self.duration, 0.0),
-                                  ("lead_time", self.lead_time, -1.0)):
+                                  ("lead_time", self.lead_time, -1.0),
+                                  ("lead_ramp", self.lead_ramp, -1.0)):
             if not (math.isfinite(value) and low < value <= 30.0):
                 raise ValueError(f"{self.name}: {label} = {value!r} s; valid range is "
                                  f"({max(low, 0.0):g}, 30] s")
+        if not (math.isfinite(self.phase) and abs(self.phase) <= 2 * math.pi):
+            raise ValueError(f"{self.name}: phase = {self.phase!r} rad; valid range is "
+                             "[-2π, 2π]")
 
 
 @dataclass(frozen=True)
@@ -106,40 +120,6 @@ class Run:
     hybrid: oh.HybridRun
     dt: float
     off_floor: np.ndarray
-
-
-def contact_wheels(model: mujoco.MjModel, data: mujoco.MjData,
-                   wheels: Sequence[str] = WHEELS) -> np.ndarray:
-    """The wheel of each current floor contact: (ncon,) indices into ``wheels``.
-
-    A contact belongs to the wheel whose roller (a child body of the wheel) touches the
-    ``floor`` in it; −1 for any other contact.
-    """
-    floor = model.geom("floor").id
-    wheel_of = {int(model.body(w).id): i for i, w in enumerate(wheels)}
-    out = np.full(data.ncon, -1)
-    for ci, c in enumerate(data.contact[:data.ncon]):
-        if floor in (c.geom1, c.geom2):
-            geom = c.geom2 if c.geom1 == floor else c.geom1
-            out[ci] = wheel_of.get(int(model.body_parentid[model.geom_bodyid[geom]]), -1)
-    return out
-
-
-def wheels_off_floor(model: mujoco.MjModel, states: np.ndarray,
-                     wheels: Sequence[str] = WHEELS) -> np.ndarray:
-    """(N, len(wheels)) True where no roller of a wheel touches the ``floor``.
-
-    Each full-physics state (rows of ``STATE_SPEC``) is set and its contacts found
-    (``mj_fwdPosition``), assigned to wheels by :func:`contact_wheels`.
-    """
-    data = mujoco.MjData(model)
-    out = np.ones((len(states), len(wheels)), dtype=bool)
-    for k, state in enumerate(states):
-        mujoco.mj_setState(model, data, state, STATE_SPEC)
-        mujoco.mj_fwdPosition(model, data)
-        touching = contact_wheels(model, data, wheels)
-        out[k, touching[touching >= 0]] = False
-    return out
 
 
 def phase_lag_steps(run: Run) -> float:
@@ -255,15 +235,72 @@ def relative(pose: np.ndarray, start: np.ndarray) -> np.ndarray:
     return np.column_stack([c * d[:, 0] + s * d[:, 1], -s * d[:, 0] + c * d[:, 1], heading])
 
 
-def _ramp(twist: Sequence[float], hy: oh.OmniHybrid, n: int, dt: float) -> np.ndarray:
-    """Wheel rates ``H ν · min(1, t / 0.5 s)`` over n steps."""
+def _ramp(twist: Sequence[float], hy: oh.OmniHybrid, n: int, dt: float,
+          ramp: float = 0.5) -> np.ndarray:
+    """Wheel rates ``H ν · min(1, t / ramp)`` over n steps (ramp 0: a step)."""
     H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
-    return np.clip(np.arange(n) * dt / 0.5, 0.0, 1.0)[:, None] * (H @ np.asarray(twist))
+    share = np.clip(np.arange(n) * dt / ramp, 0.0, 1.0) if ramp > 0 else np.ones(n)
+    return share[:, None] * (H @ np.asarray(twist))
+
+
+#: Most runs of one rollout call: a batch's states (~3 MB a run) are reduced to what the
+#: runs keep (:func:`physics_states`) before the next chunk is simulated.
+CHUNK = 40
+
+
+def _chunks(items: list, size: int = CHUNK) -> list[list]:
+    return [items[k:k + size] for k in range(0, len(items), size)]
+
+
+def physics_states(specs: Sequence[RunSpec], models: dict[ActuationMode, mujoco.MjModel],
+                   hy: oh.OmniHybrid, keep: Callable[[RunSpec, np.ndarray], object]
+                   ) -> dict[str, object]:
+    """Every run's full-physics states, reduced by ``keep(spec, states)`` chunk by chunk.
+
+    Settled at each spec's phase (rate servo holding the wheels, :data:`SETTLE` s); then
+    the runs from rest and the lead-ins (rate servo on the ramped twist), in threaded
+    batches of at most :data:`CHUNK` runs per mode; then, from each lead-in's end, the
+    judged phase in the spec's mode.
+    """
+    rate = models[ActuationMode.RATE]
+    dt = rate.opt.timestep
+    limit = float(rate.actuator(WHEELS[0]).ctrlrange[1])
+    phases = sorted({s.phase for s in specs})
+    rest = dict(zip(phases, settle_at_phases(rate, WHEELS, phases, SETTLE), strict=True))
+    first: dict[ActuationMode, list[tuple[RunSpec, np.ndarray]]] = {m: [] for m in ActuationMode}
+    for s in specs:
+        if s.mode is ActuationMode.RATE and np.any(np.abs(s.command) > limit):
+            raise ValueError(f"{s.name}: wheel rates {s.command} beyond the rate limit "
+                             f"±{limit:g} rad/s")
+        if s.lead_in is not None:
+            first[ActuationMode.RATE].append((s, _ramp(
+                s.lead_in, hy, round(s.lead_time / dt), dt, s.lead_ramp)))
+        else:
+            first[s.mode].append((s, np.tile(np.asarray(s.command, float),
+                                             (round(s.duration / dt), 1))))
+    out: dict[str, object] = {}
+    lead_end: dict[str, np.ndarray] = {}
+    for mode, group in first.items():
+        for chunk in _chunks(group):
+            trajs = rollout_from(models[mode], np.array([rest[g[0].phase] for g in chunk]),
+                                 [g[1] for g in chunk])
+            for (spec, _), traj in zip(chunk, trajs, strict=True):
+                if spec.lead_in is not None:
+                    lead_end[spec.name] = traj[-1]
+                else:
+                    out[spec.name] = keep(spec, traj)
+    for mode in ActuationMode:
+        for chunk in _chunks([s for s in specs if s.lead_in is not None and s.mode is mode]):
+            trajs = rollout_from(models[mode], np.array([lead_end[s.name] for s in chunk]),
+                                 [np.tile(np.asarray(s.command, float),
+                                          (round(s.duration / dt), 1)) for s in chunk])
+            out.update({s.name: keep(s, t) for s, t in zip(chunk, trajs, strict=True)})
+    return out
 
 
 def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
                   timestep: float | None = None, arc: bool = True,
-                  relax: bool = True) -> dict[str, Run]:
+                  relax: bool = True, turning: bool = True) -> dict[str, Run]:
     """Every run through the physics (batched rollouts) and the hybrid model (one batch).
 
     ``timestep``: the physics' step (None: the model's own, as ``wmr validate``); the
@@ -271,8 +308,11 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
     ``arc``: the hybrid model with the weight's moment over the roller arc
     (:func:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.simulate_batch`; on in ``wmr validate``).
     ``relax``: each hand-over's jump spread as the soft contact makes it at the physics'
-    step (:attr:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid.handover_relaxation`; on in
-    ``wmr validate``); off: made at once (the rigid impact map).
+    step (:attr:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid.handover_relaxation`;
+    on in ``wmr validate``); off: made at once (the rigid impact map). ``turning``: the
+    hand-over overlap's duration with the wheel's acceleration, and the normal loads at
+    the contact points with the heave (on in ``wmr validate``; off: the model before
+    issue 24).
 
     Raises:
         ValueError: duplicate names, a command beyond the actuators' range, or a bad
@@ -284,47 +324,21 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
     if len(set(names)) != len(names):
         raise ValueError(f"run names must be unique: {names}")
     models = {m: settled(m, params, timestep) for m in ActuationMode}
-    hy = _read(models[ActuationMode.TORQUE][0], params)
+    hy = hybrid(params) if timestep is None else _read(models[ActuationMode.TORQUE][0], params)
     dt = models[ActuationMode.TORQUE][0].opt.timestep
-    starts: dict[str, np.ndarray] = {}
-    states: dict[str, np.ndarray] = {}
-    # 1. Lead-ins (rate servo) and step commands from the settled rate-mode start.
-    rate_model, _rate_data = models[ActuationMode.RATE]
-    limit = float(rate_model.actuator(WHEELS[0]).ctrlrange[1])
-    groups: dict[ActuationMode, list[tuple[str, np.ndarray]]] = {m: [] for m in ActuationMode}
-    for s in specs:
-        n = round(s.duration / dt)
-        if s.mode is ActuationMode.RATE and np.any(np.abs(s.command) > limit):
-            raise ValueError(f"{s.name}: wheel rates {s.command} beyond the rate limit "
-                             f"±{limit:g} rad/s")
-        if s.lead_in is not None:
-            groups[ActuationMode.RATE].append(
-                (f"lead-in {s.name}", _ramp(s.lead_in, hy, round(s.lead_time / dt), dt)))
-        else:
-            groups[s.mode].append((s.name, np.tile(np.asarray(s.command, float), (n, 1))))
-    for mode, members in groups.items():
-        if members:
-            model, data = models[mode]
-            for (name, _), traj in zip(members, simulate_batch(
-                    model, data, [c for _, c in members]), strict=True):
-                states[name] = traj
-    # 2. Runs after a lead-in, from its end state, in their own mode.
-    for s in specs:
-        if s.lead_in is not None:
-            model, data = models[s.mode]
-            data = mujoco.MjData(model)
-            mujoco.mj_setState(model, data, states.pop(f"lead-in {s.name}")[-1], STATE_SPEC)
-            mujoco.mj_forward(model, data)
-            states[s.name] = simulate(model, data, np.tile(np.asarray(s.command, float),
-                                                           (round(s.duration / dt), 1)))
     model = models[ActuationMode.TORQUE][0]
-    phys = {}
-    for s in specs:
-        pose, twist, th, rates = base_states(model, states[s.name])
-        phys[s.name] = (relative(pose, pose[0]), twist, th, rates)
-        starts[s.name] = states[s.name][0]
+    window = round(CONTACT_WINDOW / dt) + 1
+
+    def keep(spec: RunSpec, states: np.ndarray) -> tuple:
+        pose, twist, th, rates = base_states(model, states)
+        return ((relative(pose, pose[0]), twist, th, rates), states[0],
+                wheels_off_floor(model, states[:window], WHEELS))
+
+    kept = physics_states(specs, {m: mm for m, (mm, _) in models.items()}, hy, keep)
+    phys = {name: k[0] for name, k in kept.items()}  # type: ignore[index]
+    starts = {name: k[1] for name, k in kept.items()}  # type: ignore[index]
     # 3. The hybrid model, every run in one batch from the measured starts.
-    nmax = max(len(states[s.name]) - 1 for s in specs)
+    nmax = max(len(phys[s.name][0]) - 1 for s in specs)
     inputs = np.zeros((len(specs), nmax, 3))
     for b, s in enumerate(specs):
         inputs[b] = np.asarray(s.command, float)
@@ -335,16 +349,15 @@ def simulate_runs(specs: Sequence[RunSpec], params: OmniParams | None = None,
         np.array([phys[s.name][2][0] for s in specs]),
         np.array([roller_rates(model, starts[s.name][1 + model.nq:], WHEELS)
                   for s in specs]), substeps=max(1, math.ceil(dt / HYBRID_STEP - 1e-9)), arc=arc,
-        relax=hy.handover_relaxation if relax else 0.0)
+        relax=hy.handover_relaxation if relax else 0.0, turning=turning, heave=turning)
     out = {}
     for s, run in zip(specs, runs, strict=True):
         pose, twist, th, rates = phys[s.name]
         n = len(pose)
         cut = oh.HybridRun(run.t[:n], run.pose[:n], run.twist[:n], run.thetas[:n],
                            run.torques[:n], [w for w in run.switches if w[0] <= run.t[n - 1]])
-        window = states[s.name][:round(CONTACT_WINDOW / dt) + 1]
         out[s.name] = Run(s, cut.t, pose, twist, th, rates, cut, dt,
-                          wheels_off_floor(model, window))
+                          kept[s.name][2])  # type: ignore[index]
     return out
 
 

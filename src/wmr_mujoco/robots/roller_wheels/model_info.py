@@ -122,6 +122,24 @@ def static_penetration(model: mujoco.MjModel, settle: float = 1.0) -> float:
     return float(max(0.0, -np.mean(dist)))
 
 
+def floor_contact(model: mujoco.MjModel, geom: int
+                  ) -> tuple[float, float, np.ndarray, np.ndarray | None]:
+    """``(μ, t_c, solimp, solreffriction)`` of a collider's contact with the ``floor``.
+
+    From the ``<pair>`` of the geom and the floor where the scene has one (MuJoCo takes
+    a pair's parameters whole), else from the geom (rollers have priority 1 over the
+    floor, so theirs win); ``solreffriction`` None where no pair sets it.
+    """
+    floor = model.geom("floor").id
+    for k in range(model.npair):
+        if {int(model.pair_geom1[k]), int(model.pair_geom2[k])} == {floor, geom}:
+            ref = model.pair_solreffriction[k].copy()
+            return (float(model.pair_friction[k, 0]), float(model.pair_solref[k, 0]),
+                    model.pair_solimp[k].copy(), ref if ref.any() else None)
+    return (float(model.geom_friction[geom, 0]), float(model.geom_solref[geom, 0]),
+            model.geom_solimp[geom].copy(), None)
+
+
 def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body: str,
                       wheel_joints: Sequence[str], compliant: bool = True) -> OmniHybrid:
     """The hybrid model of a compiled three-omni-wheel model with ellipsoid rollers.
@@ -157,7 +175,8 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
     children = [b for b in range(model.nbody) if model.body_parentid[b] == wb]
     if not children:
         raise ValueError(f"wheel {wheel_joints[0]!r} has no roller bodies")
-    angles, offsets, size, friction, timeconst, solimp = [], [], None, 1.0, 0.0, None
+    angles, offsets, size = [], [], None
+    friction, timeconst, solimp, friction_ref = 1.0, 0.0, None, None
     for c in children:
         x, y, z = model.body_pos[c]
         angles.append(np.arctan2(x, z))
@@ -169,9 +188,7 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
             raise ValueError(f"roller body {model.body(c).name!r} has {len(geoms)} ellipsoid "
                              f"colliders; the hybrid model needs exactly one")
         size = model.geom_size[geoms[0]]
-        friction = float(model.geom_friction[geoms[0], 0])  # rollers have priority 1
-        timeconst = float(model.geom_solref[geoms[0], 0])
-        solimp = model.geom_solimp[geoms[0]]
+        friction, timeconst, solimp, friction_ref = floor_contact(model, geoms[0])
     d = float(np.mean(np.hypot(model.body_pos[children, 0], model.body_pos[children, 2])))
     roller_joint = int(model.body_jntadr[children[0]])
     roller_axial = float(model.body_inertia[children[0]][2]
@@ -184,8 +201,13 @@ def hybrid_from_model(model: mujoco.MjModel, layout: ok.WheelLayout, centre_body
     elliptic = model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC
     refsafe = not model.opt.disableflags & mujoco.mjtDisableBit.mjDSBL_REFSAFE
     relaxation = (slip_relaxation(model.opt.timestep, timeconst, solimp, penetration,
-                                  float(model.opt.impratio) if elliptic else 1.0, refsafe)
+                                  float(model.opt.impratio) if elliptic else 1.0, refsafe,
+                                  friction_ref)
                   if compliant and timeconst > 0 else 0.0)
+    if compliant and friction_ref is not None:
+        # The friction rows' own damping: a slip decays at d_f b = (1 − ρ)/Δt, which the
+        # overlap friction reads as 2/t_c (OmniHybrid.contact_timeconst).
+        timeconst = 2.0 * model.opt.timestep / (1.0 - relaxation)
     return OmniHybrid(
         mass=lagrange.mass, inertia=inertia,
         wheel_axial=lagrange.wheel_inertia - armature, wheel_armature=armature,

@@ -15,6 +15,8 @@ import numpy as np
 
 from wmr_mujoco.analytic.checks import as_array, positive
 from wmr_mujoco.analytic.planar import wrap_angle
+from wmr_mujoco.robots.roller_wheels.omni_heave import balance_loads as _normal_loads
+from wmr_mujoco.robots.roller_wheels.omni_heave import contact_inertia, heave_loads
 
 if TYPE_CHECKING:
     from wmr_mujoco.robots.roller_wheels.omni_hybrid import OmniHybrid
@@ -47,20 +49,21 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
              pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
              roller_rates0: np.ndarray | None = None, substeps: int = 4,
              impacts: bool = True, slip: bool = True, arc: bool = False,
-             relax: float = 0.0) -> HybridRun:
+             relax: float = 0.0, heave: bool = False) -> HybridRun:
     """One run of :func:`simulate_batch` (same arguments without the batch axis)."""
     inputs = as_array("inputs", inputs, (None, 3))
     rates0 = None if roller_rates0 is None else np.asarray(roller_rates0, float)[None]
     return simulate_batch(model, [drive], inputs[None], dt, np.asarray(pose0, float)[None],
                           np.asarray(twist0, float)[None], np.asarray(thetas0, float)[None],
-                          rates0, substeps, impacts, slip, arc, relax)[0]
+                          rates0, substeps, impacts, slip, arc, relax, heave)[0]
 
 
 @dataclass(frozen=True)
 class _Geometry:
     """Mode-dependent contact geometry of a batch (B runs, 3 wheels).
 
-    ``modes`` (B, 3); ``H``, ``ks``, ``dks`` (B, 3, 3) rows per wheel; ``xc`` (B, 3).
+    ``modes`` (B, 3); ``H``, ``ks``, ``dks`` (B, 3, 3) rows per wheel; ``xc`` = R' and
+    ``dxc`` = R'' (B, 3).
     """
 
     modes: np.ndarray
@@ -68,6 +71,7 @@ class _Geometry:
     ks: np.ndarray
     dks: np.ndarray
     xc: np.ndarray
+    dxc: np.ndarray
 
 
 def _lowest(model: OmniHybrid, thetas: np.ndarray) -> np.ndarray:
@@ -114,7 +118,7 @@ def _geometry(model: OmniHybrid, thetas: np.ndarray, modes: np.ndarray | None = 
     ks /= rho[..., None]
     dks = -ks * drho_rho[..., None]
     dks[..., 2] += dxc / rho
-    return _Geometry(modes, H, ks, dks, xc)
+    return _Geometry(modes, H, ks, dks, xc, dxc)
 
 
 def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: np.ndarray,
@@ -143,19 +147,6 @@ def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: n
     thdd = np.where(slipping, (torques - model.radius * slip_forces) / model.wheel_inertia, hnd)
     forces = np.where(slipping, slip_forces, (torques - model.wheel_inertia * hnd) / model.radius)
     return nudot, thdd, forces
-
-
-def _normal_loads(model: OmniHybrid, forces: np.ndarray, wheel_accels: np.ndarray
-                  ) -> np.ndarray:
-    """:meth:`OmniHybrid.normal_loads` for a batch of (B, 3) forces and wheel accelerations."""
-    e, t = model.radial, model.drive_dirs
-    pos = model.distance * e[:, :2]
-    dL = model.wheel_axial * wheel_accels @ -e[:, :2]
-    r = model.radius
-    A = np.vstack([pos[:, 1], -pos[:, 0], np.ones(3)])
-    rhs = np.stack([dL[:, 0] - r * forces @ t[:, 1], dL[:, 1] + r * forces @ t[:, 0],
-                    np.full(forces.shape[0], model.mass * model.gravity)], axis=-1)
-    return np.linalg.solve(A, rhs.T).T
 
 
 @dataclass
@@ -227,7 +218,8 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                    pose0: np.ndarray, twist0: np.ndarray, thetas0: np.ndarray,
                    roller_rates0: np.ndarray | None = None, substeps: int = 4,
                    impacts: bool = True, slip: bool = True, arc: bool = False,
-                   relax: float = 0.0) -> list[HybridRun]:
+                   relax: float = 0.0, heave: bool = False, turning: bool = True
+                   ) -> list[HybridRun]:
     """Integrate B runs of the hybrid model at once (RK4; the impact map at switches).
 
     The continuous phase is vectorised over the runs (numpy, (B, 3) arrays); the rare
@@ -265,6 +257,11 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             integrates it too (``docs/omni-dynamics.md`` § 5, "Finite duration"; ρ of a
             MuJoCo contact: :func:`wmr_mujoco.sim.soft_contact.slip_relaxation`). The
             dynamics continue from ``ν⁺`` (the transient is superposed, first order).
+        heave: add to the slip test's normal loads those of the platform riding over
+            the rollers' arcs (:mod:`~wmr_mujoco.robots.roller_wheels.omni_heave`).
+        turning: a hand-over's overlap lasts the wheel's crossing time at its rate and
+            acceleration (:func:`~wmr_mujoco.robots.roller_wheels.omni_impacts.crossing_time`);
+            False: at its rate alone (the model before issue 24, for comparison).
 
     Raises:
         ValueError: non-finite or mis-shaped inputs, non-positive dt.
@@ -301,6 +298,8 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
     drift = np.zeros((nb, 3))  # its integral, world frame
 
     st = _Stepper(model, rate_mode, gain, limit_tau, arc, slipping, slip_dir, loads)
+    kz = contact_inertia(model.distance * model.radial[:, :2], model.mass,
+                         model.inertia[0, 0], model.inertia[1, 1])
     full = np.full((nb, 1), h)
     for k in range(n):
         u_in = inputs[:, k]
@@ -324,7 +323,10 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             hnu = (geo.H @ nu[..., None])[..., 0]
             thd = np.where(st.slipping, thd, hnu)  # rolling wheels stay on the constraint
             if slip:
-                st.loads = np.maximum(_normal_loads(model, forces, thdd), 0.0)
+                st.loads = _normal_loads(model, forces, thdd, geo if heave else None)
+                if heave:
+                    st.loads += heave_loads(kz, geo.xc, geo.dxc, thd, thdd)
+                np.maximum(st.loads, 0.0, out=st.loads)
                 onset = ~st.slipping & (np.abs(forces) > model.friction * st.loads)
                 st.slip_dir = np.where(onset, np.sign(forces), st.slip_dir)
                 st.slipping = st.slipping | onset
@@ -347,7 +349,8 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                 lost = 0.0
                 if impacts:
                     before = nu[b].copy()
-                    nu[b], lost = model.planar_impact(nu[b], old_m, new_m, th[b], entering)
+                    nu[b], lost = model.planar_impact(nu[b], old_m, new_m, th[b], entering,
+                                                       thdd[b] if turning else None)
                     pending[b] += before - nu[b]
                 for j, i in enumerate(i for i in range(3) if new_m[i] != old_m[i]):
                     # One impact, its loss counted once (on the first switching wheel).

@@ -22,6 +22,28 @@ if TYPE_CHECKING:
     from wmr_mujoco.robots.roller_wheels.roller_geometry import RollerGeometry
 
 
+def crossing_time(window: float, rate: float, accel: float) -> float:
+    """Time a wheel at rate ``θ̇`` and acceleration ``θ̈`` takes to turn through ``window``.
+
+    ``Δφ = |θ̇| t + ½ |θ̈| t²`` solved for t (the rate's and the acceleration's magnitudes:
+    a wheel slowing down inside the window turns back and leaves it after at most the
+    same time, so this is the time to the first exit, within a factor 2 of the whole
+    stay)::
+
+        t = 2 Δφ / (|θ̇| + √(θ̇² + 2 |θ̈| Δφ))
+
+    ``Δφ/|θ̇|`` for ``θ̈ = 0``; ``√(2 Δφ/|θ̈|)`` for ``θ̇ = 0``; inf for both zero.
+
+    Raises:
+        ValueError: a negative or non-finite window.
+    """
+    if not (math.isfinite(window) and window >= 0.0):
+        raise ValueError(f"window = {window!r} rad; valid range is [0, inf)")
+    w, a = abs(float(rate)), abs(float(accel))
+    den = w + math.sqrt(w * w + 2.0 * a * window)
+    return 2.0 * window / den if den > 0.0 else math.inf
+
+
 class HybridImpacts:
     """Impact maps of the hybrid model (mixed into ``OmniHybrid``, which has the fields)."""
 
@@ -43,6 +65,16 @@ class HybridImpacts:
         Mq = self._build_full_mass()
         Mq.setflags(write=False)
         return Mq
+
+    @functools.cached_property
+    def _full_mass_invs(self) -> dict[int, np.ndarray]:
+        return {}
+
+    def _full_mass_inv(self, n: int) -> np.ndarray:
+        """Inverse of the leading n×n block of 𝕄 (n = 12, or 9 with massless rollers)."""
+        if n not in self._full_mass_invs:
+            self._full_mass_invs[n] = np.linalg.inv(self._full_mass[:n, :n])
+        return self._full_mass_invs[n]
 
     def full_mass(self) -> np.ndarray:
         """𝕄 of ``q̇ = (V, Ω, θ̇, β̇)``: the wheel spin couples to Ω through I_ax a_i."""
@@ -153,8 +185,7 @@ class HybridImpacts:
         A = self.constraint_rows(new, thetas)
         cols, rows = self._massive(A)
         Ar = A[np.ix_(rows, cols)]
-        impulse = np.linalg.solve(Ar @ np.linalg.solve(self.full_mass()[np.ix_(cols, cols)],
-                                                        Ar.T), Ar @ q[cols])
+        impulse = np.linalg.solve(Ar @ self._full_mass_inv(cols.size) @ Ar.T, Ar @ q[cols])
         g = self.rollers
         xc = np.array([g.contact_ahead(float(g.phases(float(th))[m]))
                        for m, th in zip(new, thetas, strict=True)])
@@ -162,7 +193,8 @@ class HybridImpacts:
         return xc * impulse[1::step]
 
     def remove_energy(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
-                      wheel: int, energy: float) -> np.ndarray:
+                      wheel: int, energy: float, m_red: np.ndarray | None = None
+                      ) -> np.ndarray:
         """Take ``energy`` out of wheel ``wheel``'s rolling by an impulse J along ``H_i``.
 
         ``T(ν − M⁻¹H_iᵀJ) = T − s J + ½ c J²`` with ``s = H_i ν``, ``c = H_i M⁻¹ H_iᵀ``;
@@ -170,7 +202,8 @@ class HybridImpacts:
         share brought to rest, if ΔE exceeds it).
         """
         h = self.jacobian(modes)[wheel]
-        m_red = self.planar_mass(modes, thetas)
+        if m_red is None:  # the planar mass matrix of mode σ (given: already known)
+            m_red = self.planar_mass(modes, thetas)
         rate = float(h @ nu)
         c = float(h @ np.linalg.solve(m_red, h))
         disc = rate * rate - 2.0 * c * energy
@@ -178,7 +211,7 @@ class HybridImpacts:
         return nu - np.linalg.solve(m_red, h * j)
 
     def overlap_impulse(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,
-                        wheel: int, rate: float) -> float:
+                        wheel: int, rate: float, accel: float = 0.0) -> float:
         """Yaw angular impulse of the two rows' friction while both touch, N·m·s.
 
         Compliant contacts overlap over ``Δφ_w = δ / |x_c|`` of wheel rotation (the two
@@ -189,9 +222,14 @@ class HybridImpacts:
         linearly across the window, unless the soft contact's tangential damping
         ``(N/g)(2/t_c) e |r|`` is smaller (slow turning): force ``f``, at levers
         ``L ± e``: a yaw moment ``2 e f`` against r and no net force. Impulse
-        ``2 e f Δt_w``.
+        ``2 e f Δt_w``, ``Δt_w`` the time the wheel takes to cross the window
+        (:func:`crossing_time`) at its rate ``θ̇`` and acceleration ``θ̈`` (``accel``, the
+        continuous phase's at the hand-over): ``Δφ_w / |θ̇|`` while the wheel turns fast,
+        bounded by ``√(2 Δφ_w / |θ̈|)`` where it turns back inside the window (a wheel
+        whose rate passes through zero at the hand-over: ``Δφ_w/|θ̇|`` alone diverges there
+        and would stop the platform's yaw).
         """
-        if self.penetration == 0.0 or rate == 0.0:
+        if self.penetration == 0.0 or (rate == 0.0 and accel == 0.0):
             return 0.0
         g = self.rollers
         phi = float(g.phases(float(thetas[wheel]))[modes[wheel]])
@@ -202,7 +240,7 @@ class HybridImpacts:
         if self.contact_timeconst > 0.0:
             force = min(force, load / self.gravity * 2.0 / self.contact_timeconst
                         * e * abs(float(nu[2])))
-        return 2.0 * e * force * window / abs(rate)
+        return 2.0 * e * force * crossing_time(window, rate, accel)
 
     @property
     def handover_dissipation(self) -> float:
@@ -210,7 +248,8 @@ class HybridImpacts:
         return 0.5 * self.mass * self.gravity / 3.0 * self.penetration
 
     def planar_impact(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
-                      thetas: np.ndarray, spins: np.ndarray) -> tuple[np.ndarray, float]:
+                      thetas: np.ndarray, spins: np.ndarray,
+                      wheel_accels: np.ndarray | None = None) -> tuple[np.ndarray, float]:
         """Switch from mode ``old`` to ``new`` in the planar model: ``(ν⁺, ΔT)``.
 
         1. :meth:`inplane_impact` (row lever L ± e, entering roller spins);
@@ -218,27 +257,30 @@ class HybridImpacts:
            (:meth:`vertical_impulses`): ``Δν = M_red⁻¹ H_newᵀ (x_c Λ_z)``;
         3. compliant contacts: :attr:`handover_dissipation` per switching wheel
            (:meth:`remove_energy`) and the rows' friction while both touch
-           (:meth:`overlap_impulse`).
+           (:meth:`overlap_impulse`, with the wheels' accelerations ``wheel_accels`` θ̈
+           of the continuous phase at the hand-over; None: zero).
         """
+        accels = np.zeros(3) if wheel_accels is None else np.asarray(wheel_accels, float)
         nu_plus = self.inplane_impact(nu, old, new, thetas, spins)
         J = self.vertical_impulses(nu, old, new, thetas, spins)
         H_new = self.jacobian(new)
-        nu_plus = nu_plus + np.linalg.solve(self.planar_mass(new, thetas), H_new.T @ J)
+        m_red = self.planar_mass(new, thetas)
+        nu_plus = nu_plus + np.linalg.solve(m_red, H_new.T @ J)
         if self.penetration > 0:
-            m_red = self.planar_mass(new, thetas)
             for i in range(3):
                 if new[i] != old[i]:
                     nu_plus = self.remove_energy(nu_plus, new, thetas, i,
-                                                 self.handover_dissipation)
+                                                 self.handover_dissipation, m_red)
                     rate = float(H_new[i] @ nu_plus)
-                    impulse = self.overlap_impulse(nu_plus, new, thetas, i, rate)
+                    impulse = self.overlap_impulse(nu_plus, new, thetas, i, rate,
+                                                   float(accels[i]))
                     dnu = np.linalg.solve(m_red, np.array([0.0, 0.0, impulse]))
                     if abs(dnu[2]) >= abs(nu_plus[2]):  # friction stops, never reverses
                         dnu *= abs(nu_plus[2]) / max(abs(dnu[2]), 1e-300)
                     nu_plus = nu_plus - math.copysign(1.0, nu_plus[2]) * dnu
         ks, _ = self.roller_rows(new, thetas)
         lost = (self.kinetic_energy(nu, old, thetas) + 0.5 * self.roller_axial * (
-            spins @ spins - (ks @ nu) @ (ks @ nu)) - self.kinetic_energy(nu_plus, new, thetas))
+            spins @ spins - (ks @ nu) @ (ks @ nu)) - 0.5 * nu_plus @ m_red @ nu_plus)
         return nu_plus, float(lost)
 
     def full_energy(self, q: np.ndarray) -> float:
