@@ -15,6 +15,7 @@ member's own result is kept (``ScenarioResult.members``) for the report's spread
 from __future__ import annotations
 
 import time
+import traceback
 from collections.abc import Callable, Sequence
 
 import mujoco
@@ -61,6 +62,12 @@ def run_family(spec: RobotSpec, s: Scenario, seed: int = DEFAULT_SEED,
     if s.family is None:
         return run_scenario(spec, s, progress, params=params)
     if s.kind is ScenarioKind.MEASUREMENT:
+        if spec.prepare is not None:
+            try:  # the robot runs its members batched; each evaluate then finds its run
+                spec.prepare(members, params)
+            except Exception:  # an unprepared member still runs on its own
+                if progress:
+                    progress(traceback.format_exc())
         results = [run_scenario(spec, m, progress, params=params) for m in members]
     else:
         results = run_batched(spec, members, progress, params)
@@ -106,7 +113,7 @@ def run_batched(spec: RobotSpec, members: list[Scenario],
             try:
                 batch = simulate_starts(model, [preps[i].data for i in group],
                                         [preps[i].controls for i in group], NTHREAD)
-            except Exception:
+            except Exception:  # an unprepared member still runs on its own
                 out.update({i: run_scenario(spec, members[i], progress, params=params)
                             for i in group})
                 continue
