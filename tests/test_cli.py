@@ -180,15 +180,15 @@ def test_render_and_validate_say_they_take_robot_names_not_files(tmp_path, capsy
 
 def test_validate_scenario_typed_loosely(tmp_path, monkeypatch, capsys):
     """``translate 45`` is ``translate 45°``; the scenarios chosen reach the runner."""
-    from wmr_mujoco.validation import runner
+    from wmr_mujoco.validation import members
 
     chosen = []
 
-    def fake_run_all(scenarios, **_):
+    def fake_run_families(scenarios, **_):
         chosen.extend(s.name for _, s in scenarios)
         raise KeyboardInterrupt  # stop before any work
 
-    monkeypatch.setattr(runner, "run_all", fake_run_all)
+    monkeypatch.setattr(members, "run_families", fake_run_families)
     assert main(["validate", "omni3", "--scenario", "Translate 45", "--out",
                  str(tmp_path / "r"), "-q"]) == 130
     assert chosen == ["translate 45°"]

@@ -89,8 +89,11 @@ def _cmd_info(args: argparse.Namespace) -> int:
 
 def _cmd_demo(args: argparse.Namespace) -> int:
     if not args.quick:  # the main job, as `make demo`: the full validation and its report
+        from wmr_mujoco.validation.family import DEFAULT_SEED
+
         return _cmd_validate(argparse.Namespace(robots=[], scenario=None, out=args.out,
-                                                quiet=args.quiet, all_metrics=False))
+                                                quiet=args.quiet, all_metrics=False,
+                                                seed=DEFAULT_SEED, draws=None))
     from wmr_mujoco.demo import run_demo
 
     print(run_demo())
@@ -98,16 +101,18 @@ def _cmd_demo(args: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
+    from wmr_mujoco.family_cli import draws_of
     from wmr_mujoco.lookup import validation_jobs
     from wmr_mujoco.progress import bar, shown
     from wmr_mujoco.robots import ROBOTS
+    from wmr_mujoco.validation.family_report import slowest, spread_text
+    from wmr_mujoco.validation.members import run_families
     from wmr_mujoco.validation.report import (
         check_report_folder,
         summary_line,
         text_table,
         write_report,
     )
-    from wmr_mujoco.validation.runner import run_all
 
     _robots_only("validate", args.robots, "a model file has no analytic model or scenarios "
                  "to validate against")
@@ -124,10 +129,12 @@ def _cmd_validate(args: argparse.Namespace) -> int:
         progress_bar.write(msg, file=sys.stderr)
 
     try:
-        results = run_all(work, progress=progress)
+        results = run_families(work, progress=progress, seed=args.seed, draws=draws_of(args))
     finally:
         progress_bar.close()
     print(text_table(results, judged_only=not args.all_metrics))
+    print(f"\nover each family (seed {args.seed}):\n{spread_text(results)}\n"
+          f"{slowest(results)}")
     path = write_report(results, args.out, robots=ROBOTS)
     failed = [r.scenario.key for r in results if not r.passed]
     print(f"\n{summary_line(results)}; report: {path}")
@@ -218,6 +225,9 @@ def build_parser() -> argparse.ArgumentParser:
     val.add_argument("-q", "--quiet", action="store_true", help="no progress output")
     val.add_argument("--all-metrics", action="store_true",
                      help="print informative metrics too, not only judged ones")
+    from wmr_mujoco import family_cli
+
+    family_cli.add_options(val)
     val.set_defaults(func=_cmd_validate)
     ren = sub.add_parser("render", help="offscreen video of a scenario (EGL, else OSMesa)")
     ren.add_argument("robots", nargs="*", metavar="robot",

@@ -46,11 +46,12 @@ def test_sync_pastes_each_report(tmp_path):
     (reports / "summary.md").write_text("| robot | pass |\n|---|---|\n| disc | pass |\n")
     (reports / "bench.md").write_text("# Benchmarks\n\n## Speed\n\n| x |\n")
     (reports / "open.md").write_text("| omni3 | torque rotate | open |\n")
+    (reports / "families.md").write_text("| disc | straight | 5 |\n")
     _complete(reports)
     assert sync(tmp_path, reports) == list(SECTIONS)
     text = _text(tmp_path)
     assert "old" not in text and "| disc | pass |" in text and "#### Speed" in text
-    assert "| omni3 | torque rotate | open |" in text
+    assert "| omni3 | torque rotate | open |" in text and "| disc | straight | 5 |" in text
 
 
 def test_missing_report_names_the_command(tmp_path, capsys):
@@ -65,12 +66,13 @@ def test_only_the_sections_asked_for_and_nothing_when_one_is_missing(tmp_path):
     original = _text(tmp_path)
     (tmp_path / "summary.md").write_text("| new |\n")
     (tmp_path / "open.md").write_text("No open targets.\n")
+    (tmp_path / "families.md").write_text("| families |\n")
     _complete(tmp_path)
     with pytest.raises(FileNotFoundError, match="`make bench` writes it"):
         sync(tmp_path, tmp_path)
     assert _text(tmp_path) == original  # nothing written when a report is missing
     assert sync(tmp_path, tmp_path, ["validation results"]) == ["validation results"]
-    assert _text(tmp_path).count("old") == 2 and "| new |" in _text(tmp_path)
+    assert _text(tmp_path).count("old") == 3 and "| new |" in _text(tmp_path)
     with pytest.raises(ValueError, match="unknown sections"):
         sync(tmp_path, tmp_path, ["results"])
 
@@ -88,7 +90,17 @@ def _refused(tmp_path, capsys):
 def _reports(tmp_path, summary="| disc | pass |\n", bench="# Benchmarks\n\n| x |\n"):
     (tmp_path / "summary.md").write_text(summary)
     (tmp_path / "open.md").write_text("No open targets.\n")
+    (tmp_path / "families.md").write_text("| families |\n")
     (tmp_path / "bench.md").write_text(bench)
+
+
+def test_a_quick_validation_report_is_refused(tmp_path, capsys):
+    """Fewer draws than the families declare (``wmr validate --quick``): not for the docs."""
+    _reports(tmp_path)
+    _complete(tmp_path)
+    doc = json.loads((tmp_path / "validation.json").read_text())
+    (tmp_path / "validation.json").write_text(json.dumps({**doc, "quick": True}))
+    assert "is from a quick run" in _refused(tmp_path, capsys)
 
 
 def test_a_partial_validation_report_is_refused(tmp_path, capsys):

@@ -38,7 +38,7 @@ def test_unknown_robot_lists_valid_names():
 def test_every_target_says_requirement_or_derived_bound():
     for spec in ROBOTS.values():
         for key, target in spec.targets.items():
-            assert target.kind in ("requirement", "derived bound"), key
+            assert target.kind in ("requirement", "derived bound", "open"), key
             assert len(target.basis) > 10, key
 
 

@@ -73,7 +73,7 @@ def test_summary_line_counts_open_targets():
     res = ScenarioResult(s, rows, Trace())
     assert res.passed
     assert summary_line([res]) == ("1 of 1 scenarios pass; 1 targets open (shown with "
-                                   "their figures, not judged)")
+                                   "their figures, not judged): omni3/x: a")
     assert "open" in text_table([res], judged_only=True)
 
 

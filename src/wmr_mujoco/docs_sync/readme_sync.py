@@ -1,11 +1,12 @@
 """Paste the latest reports into the docs: ``python -m wmr_mujoco.docs_sync.readme_sync``.
 
-``make demo`` writes ``reports/summary.md`` and ``reports/open.md`` (the open targets) and
-``make bench`` writes ``reports/bench.md``; this copies them between the ``validation
-results`` and ``open targets`` markers of ``docs/results.md`` and the ``benchmarks``
-markers of ``docs/benchmarks.md`` (:mod:`wmr_mujoco.docs_sync.markers`), so that every
-figure in the docs comes from a run of the code, never from typing. ``make readme`` runs
-it.
+``make demo`` writes ``reports/summary.md``, ``reports/open.md`` (the open targets) and
+``reports/families.md`` (each family's spread), and ``make bench`` writes
+``reports/bench.md``; this copies them between the ``validation results``, ``open
+targets`` and ``validation families`` markers of ``docs/results.md`` and the
+``benchmarks`` markers of ``docs/benchmarks.md`` (:mod:`wmr_mujoco.docs_sync.markers`),
+so that every figure in the docs comes from a run of the code, never from typing.
+``make readme`` runs it.
 """
 
 from __future__ import annotations
@@ -23,9 +24,11 @@ from wmr_mujoco.models.paths import REPO_ROOT, REPORTS_DIR
 #: Marker key -> (report file, command that writes it).
 SECTIONS = {"validation results": ("summary.md", "make demo"),
             "open targets": ("open.md", "make demo"),
+            "validation families": ("families.md", "make demo"),
             "benchmarks": ("bench.md", "make bench")}
 #: Marker key -> the page that holds the section, relative to the repository root.
 PAGES = {"validation results": "docs/results.md", "open targets": "docs/results.md",
+         "validation families": "docs/results.md",
          "benchmarks": "docs/benchmarks.md"}
 
 
@@ -45,7 +48,8 @@ def refusal(key: str, reports: Path, text: str) -> str | None:
     """Why a report must not go into the docs (one line), or None if it may.
 
     Refused: a partial validation report (not every registered scenario, see
-    ``validation.json``'s ``complete``), a ``--quick`` or partial bench (the peer model
+    ``validation.json``'s ``complete``) or a quick one (fewer draws than the families
+    declare, ``quick``), a ``--quick`` or partial bench (the peer model
     left out), and any report naming a path of this machine.
     """
     reports = Path(reports)
@@ -57,6 +61,9 @@ def refusal(key: str, reports: Path, text: str) -> str | None:
                                               if len(missing) > 3 else "")
             return (f"{reports / SECTIONS[key][0]} is partial (not run: {shown}); run "
                     "`make demo`")
+        if doc.get("quick"):
+            return (f"{reports / SECTIONS[key][0]} is from a quick run (fewer draws than "
+                    "the families declare); run `make demo`")
     if key == "benchmarks":
         doc = _json(reports / "bench.json")
         if doc.get("quick", True):

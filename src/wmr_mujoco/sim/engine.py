@@ -112,3 +112,41 @@ def simulate_batch(model: mujoco.MjModel, start: mujoco.MjData,
             raise SimulationDivergedError(f"trajectory {i} of the batch: non-finite states")
         out.append(states)
     return out
+
+
+def simulate_starts(model: mujoco.MjModel, starts: Sequence[mujoco.MjData],
+                    controls: Sequence[np.ndarray], nthread: int = 2) -> list[np.ndarray]:
+    """Simulate each control sequence from its own start, in one threaded rollout.
+
+    ``starts[i]`` holds trajectory i's initial state and solver warm start (one model for
+    all). Shorter sequences are padded with their last control and cut afterwards; each
+    trajectory is what :func:`simulate` gives from its start alone, bit for bit.
+
+    Raises:
+        ValueError: ``starts`` and ``controls`` differ in length, or are empty.
+        SimulationDivergedError: a trajectory has non-finite states (the caller reruns
+            the batch one by one to say which).
+    """
+    from mujoco import rollout
+
+    if len(starts) != len(controls) or not starts:
+        raise ValueError(f"{len(starts)} starts and {len(controls)} control sequences; "
+                         "give one start per sequence, at least one")
+    nstep = max(len(c) for c in controls)
+    padded = np.stack([np.concatenate([c, np.repeat(c[-1:], nstep - len(c), axis=0)])
+                       for c in controls])
+    initial = np.stack([get_state(model, d) for d in starts])
+    warm = np.stack([d.qacc_warmstart for d in starts])
+    nthread = max(1, min(nthread, len(controls)))
+    datas = [mujoco.MjData(model) for _ in range(nthread)]
+    rolled, _ = rollout.rollout(model, datas if nthread > 1 else datas[0], initial, padded,
+                                initial_warmstart=warm)
+    for d in datas:
+        check_healthy(model, d)
+    out = []
+    for i, (c, traj) in enumerate(zip(controls, rolled, strict=True)):
+        states = np.concatenate([initial[i][None], traj[:len(c)]])
+        if not np.all(np.isfinite(states)):
+            raise SimulationDivergedError(f"trajectory {i} of the batch: non-finite states")
+        out.append(states)
+    return out

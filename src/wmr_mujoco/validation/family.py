@@ -81,15 +81,35 @@ class Family:
         Raises:
             ValueError: ``seed`` not a non-negative integer, or ``draws`` out of range.
         """
-        if isinstance(seed, bool) or not isinstance(seed, int | np.integer) or seed < 0:
-            raise ValueError(f"seed = {seed!r}; must be an integer >= 0")
-        n = self.draws if draws is None else draws
-        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= MAX_DRAWS:
-            raise ValueError(f"draws = {n!r}; must be an integer in 1..{MAX_DRAWS}")
+        check_seed(seed)
+        n = self.draws if draws is None else check_draws(draws)
         rng = np.random.default_rng([int(seed), zlib.crc32(key.encode())])
         values = rng.uniform(size=(n, len(self.vary)))
         return [{v.name: float(v.low + (v.high - v.low) * u)
                  for v, u in zip(self.vary, row, strict=True)} for row in values]
+
+
+def check_seed(seed: object) -> int:
+    """``seed`` as an int, if it is an integer >= 0 (any size).
+
+    Raises:
+        ValueError: anything else (a bool, a float, a negative number).
+    """
+    if isinstance(seed, bool) or not isinstance(seed, int | np.integer) or seed < 0:
+        raise ValueError(f"seed = {seed!r}; must be an integer >= 0")
+    return int(seed)
+
+
+def check_draws(draws: object) -> int:
+    """``draws`` as an int, if it is an integer in ``1..MAX_DRAWS``.
+
+    Raises:
+        ValueError: anything else.
+    """
+    if isinstance(draws, bool) or not isinstance(draws, int | np.integer) or not (
+            1 <= draws <= MAX_DRAWS):
+        raise ValueError(f"draws = {draws!r}; must be an integer in 1..{MAX_DRAWS}")
+    return int(draws)
 
 
 def describe(draw: Mapping[str, float]) -> str:

@@ -15,6 +15,13 @@ from pathlib import Path
 
 from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.models.paths import REPORTS_DIR
+from wmr_mujoco.validation.family_plots import plot_spreads
+from wmr_mujoco.validation.family_report import (
+    families_markdown,
+    members_record,
+    quick_label,
+    restore_members,
+)
 from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace
 from wmr_mujoco.validation.plots import plot_trace
 from wmr_mujoco.validation.runner import ScenarioResult
@@ -74,15 +81,20 @@ def _verdict(row: Row) -> str:
 
 
 def summary_line(results: Sequence[ScenarioResult]) -> str:
-    """``N of M scenarios pass; K targets open (...)``: open targets counted, not judged."""
+    """``N of M scenarios pass; K targets open (...): list``, and the quick label if any.
+
+    Open targets are counted and named (``robot/scenario: metric``), not judged.
+    """
     failed = [r for r in results if not r.passed]
-    opened = [r for res in results for r in res.rows if r.open]
+    opened = [(res, r) for res in results for r in res.rows if r.open]
     line = f"{len(results) - len(failed)} of {len(results)} scenarios pass"
     if opened:
-        met = sum(r.verdict == "open (met)" for r in opened)
+        met = sum(r.verdict == "open (met)" for _, r in opened)
+        named = "; ".join(f"{res.scenario.key}: {r.metric}" for res, r in opened)
         line += (f"; {len(opened)} targets open (shown with their figures, not judged"
-                 f"{f'; {met} of them now met' if met else ''})")
-    return line
+                 f"{f'; {met} of them now met' if met else ''}): {named}")
+    label = quick_label(results)
+    return f"{line} [{label}]" if label else line
 
 
 def text_table(results: Sequence[ScenarioResult], judged_only: bool = False) -> str:
@@ -229,7 +241,8 @@ def _record(r: ScenarioResult) -> dict[str, object]:
             "kind": r.scenario.kind.value, "passed": r.passed, "error": r.error,
             "metrics": [{"metric": m.metric, "value": clean(m.value), "unit": m.unit,
                          "target": m.target, "basis": m.basis, "passed": m.passed,
-                         "open": m.open, "note": m.note} for m in r.rows]}
+                         "open": m.open, "note": m.note} for m in r.rows],
+            "family": members_record(r), "seconds": r.seconds}
 
 
 def _restore(record: dict, robots: Robots) -> ScenarioResult | None:
@@ -243,7 +256,8 @@ def _restore(record: dict, robots: Robots) -> ScenarioResult | None:
                 float("nan") if m["value"] is None else float(m["value"]), m["unit"],
                 m["target"], m["passed"], m["note"], m["basis"], bool(m.get("open")))
             for m in record.get("metrics", [])]
-    return ScenarioResult(scenario, rows, Trace(), record.get("error"))
+    return restore_members(record.get("family"),
+                           ScenarioResult(scenario, rows, Trace(), record.get("error")))
 
 
 def _order(results: Sequence[ScenarioResult], robots: Robots) -> list[ScenarioResult]:
@@ -289,7 +303,8 @@ def to_json(results: Sequence[ScenarioResult], robots: Robots) -> str:
     """Every metric of every scenario as JSON, with whether every scenario is there."""
     missing = missing_scenarios(results, robots)
     doc = {"passed": all(r.passed for r in results), "complete": not missing,
-           "missing": missing, "scenarios": [_record(r) for r in results]}
+           "missing": missing, "quick": bool(quick_label(results)),
+           "scenarios": [_record(r) for r in results]}
     return json.dumps(doc, indent=2)
 
 
@@ -298,10 +313,16 @@ def plot_path(folder: Path, scenario: Scenario) -> Path:
     return Path(folder) / "validation" / scenario.robot / f"{slug(scenario.name)}.png"
 
 
+def spread_path(folder: Path, robot: str) -> Path:
+    """Where a robot's family spread plot goes: ``validation/<robot>/spread.png``."""
+    return Path(folder) / "validation" / robot / "spread.png"
+
+
 def _remove_stale_plots(folder: Path, robots: set[str], results: Sequence[ScenarioResult]
                         ) -> None:
     """Delete plots, in the folders of the robots this run covered, of no kept scenario."""
     kept = {plot_path(folder, r.scenario) for r in results}
+    kept |= {spread_path(folder, robot) for robot in robots}
     for robot in robots:
         for png in (Path(folder) / "validation" / robot).glob("*.png"):
             if png not in kept:
@@ -340,6 +361,15 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, 
     if open_table(merged):
         lines += ["## Open targets", "", "Required, not yet met by any model: shown with "
                   "their figures, counted, not judged.", "", open_table(merged), ""]
+    lines += ["## Families", "", families_markdown(merged), ""]
+    for robot in robots:
+        mine = [r for r in merged if r.scenario.robot == robot]
+        png = spread_path(folder, robot)
+        if any(r.scenario.key in fresh for r in mine):
+            png.parent.mkdir(parents=True, exist_ok=True)
+            plot_spreads(mine, f"{robot}: each family's members against their targets", png)
+        if png.is_file():
+            lines += [f"![{robot} spread]({png.relative_to(folder).as_posix()})", ""]
     lines += ["## How the metrics are judged",
               "", DEFINITIONS, "", "## Every metric", "",
               markdown_table(merged), "", "## Plots", ""]
@@ -355,4 +385,5 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, 
     write_text_atomic(folder / "validation.json", to_json(merged, robots))
     write_text_atomic(folder / "summary.md", summary_table(merged) + "\n")
     write_text_atomic(folder / "open.md", (open_table(merged) or "No open targets.") + "\n")
+    write_text_atomic(folder / "families.md", families_markdown(merged) + "\n")
     return write_text_atomic(folder / "validation.md", "\n".join(lines) + "\n")

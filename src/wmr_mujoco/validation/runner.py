@@ -9,10 +9,14 @@ initial state. The robot's adapter, judge, probes and targets come from the
 here looks a robot up or knows one by name. A measurement scenario's own ``evaluate``
 runs instead, and its metrics are judged the same way.
 
-One execution path: :func:`run_all` runs the scenarios one after the other through
-:func:`run_scenario` (each simulated by one ``mujoco.rollout`` call). Batching scenarios
-into one multi-threaded rollout and a process pool were measured against it and gave
-nothing on the machines this runs on (``docs/architecture.md``).
+One execution path: :func:`run_scenario` runs one scenario (one member of a family: the
+generic variations of :mod:`wmr_mujoco.validation.variations` are applied through
+``Scenario.input_at`` and ``Scenario.member``, the wheel phase before the settle in
+:func:`prepare`); :func:`run_all` runs scenarios once each, and
+:mod:`wmr_mujoco.validation.members` runs every member of their families and judges the
+worst. Batching scenarios into one multi-threaded rollout and a process pool were
+measured against it and gave nothing on the machines this runs on
+(``docs/architecture.md``); a family's members share one model and are batched there.
 
 Metrics are in :mod:`wmr_mujoco.validation.metrics` (pose tracking: worst, RMS and final
 errors over the whole run; lateral slip) and in each robot's module (dynamic judges,
@@ -23,7 +27,7 @@ from __future__ import annotations
 
 import traceback
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
@@ -47,9 +51,11 @@ from wmr_mujoco.validation.metrics import (
 )
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.spec import RobotSpec
+from wmr_mujoco.validation.variations import WHEEL_PHASE, add_wheel_phase
 
 #: A scenario with the robot it runs on.
 Job = tuple[RobotSpec, Scenario]
+
 
 
 def jobs(specs: Sequence[RobotSpec]) -> list[Job]:
@@ -59,17 +65,26 @@ def jobs(specs: Sequence[RobotSpec]) -> list[Job]:
 
 @dataclass
 class ScenarioResult:
-    """Rows and trace of one scenario (``error`` set when it diverged or raised)."""
+    """Rows and trace of one scenario (``error`` set when it diverged or raised).
+
+    For a family: ``rows`` are the worst member's per metric, ``trace`` the worst
+    member's, ``members`` every member's own result, ``seed`` the seed of the draws;
+    ``seconds`` the wall time of the whole family (None: not timed).
+    """
 
     scenario: Scenario
     rows: list[Row]
     trace: Trace
     error: str | None = None
+    members: list[ScenarioResult] = field(default_factory=list)
+    seed: int | None = None
+    seconds: float | None = None
 
     @property
     def passed(self) -> bool:
-        """No error and no judged row failed."""
-        return self.error is None and all(r.passed is not False for r in self.rows)
+        """No error and no judged row failed (in any member)."""
+        return (self.error is None and all(r.passed is not False for r in self.rows)
+                and all(m.passed for m in self.members))
 
 
 def make_adapter(spec: RobotSpec, scenario: Scenario, model: mujoco.MjModel,
@@ -112,8 +127,7 @@ def run_scenario(spec: RobotSpec, s: Scenario,
     ``engine`` picks :func:`~wmr_mujoco.sim.engine.simulate`'s stepping (an observer
     forces the Python loop).
     """
-    trace = Trace()
-    try:
+    def run() -> ScenarioResult:
         if s.kind is ScenarioKind.MEASUREMENT:
             return _evaluate(s, params)
         prep = prepare(spec, s, params)
@@ -122,7 +136,17 @@ def run_scenario(spec: RobotSpec, s: Scenario,
             def on_step(k: int) -> None:
                 observer(prep.model, prep.data, prep.analytic[k + 1], prep.adapter)
         states = simulate(prep.model, prep.data, prep.controls, engine, on_step)
+        trace = Trace()
         return ScenarioResult(s, measure(prep, states, trace), trace)
+
+    return guarded(s, run, progress)
+
+
+def guarded(s: Scenario, run: Callable[[], ScenarioResult],
+            progress: Callable[[str], None] | None) -> ScenarioResult:
+    """``run()``, a divergence or an exception turned into a failed result."""
+    try:
+        return run()
     except SimulationDivergedError as err:
         reason = f"diverged: {err}"
     except Exception as err:  # a failed scenario becomes a failed row
@@ -130,7 +154,7 @@ def run_scenario(spec: RobotSpec, s: Scenario,
         if progress:
             progress(traceback.format_exc())
     row = Row(s.robot, s.name, "run", float("nan"), "", None, False, reason)
-    return ScenarioResult(s, [row], trace, error=reason)
+    return ScenarioResult(s, [row], Trace(), error=reason)
 
 
 def _evaluate(s: Scenario, params: RobotParams | None) -> ScenarioResult:
@@ -138,7 +162,8 @@ def _evaluate(s: Scenario, params: RobotParams | None) -> ScenarioResult:
     assert s.evaluate is not None  # guaranteed by Scenario for this kind
     result = s.evaluate(s, params)
     trace = Trace(series=list(result.series))
-    return ScenarioResult(s, [Row.of(s.robot, s.name, m) for m in result.metrics], trace)
+    return ScenarioResult(s, [Row.of(s.robot, s.name, m) for m in s.opened(result.metrics)],
+                          trace)
 
 
 def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: int
@@ -210,6 +235,9 @@ def prepare(spec: RobotSpec, s: Scenario, params: RobotParams | None = None,
             model: mujoco.MjModel | None = None) -> Prepared:
     """Load, settle at rest for ``s.settle`` seconds, and compute the schedule.
 
+    A drawn wheel phase (:data:`~wmr_mujoco.validation.variations.WHEEL_PHASE`) turns the
+    adapter's wheel joints by it before the settle.
+
     ``model``: the robot's compiled model to use (and modify) instead of loading it.
     The scenario is checked against the robot before anything is loaded or simulated.
 
@@ -224,6 +252,9 @@ def prepare(spec: RobotSpec, s: Scenario, params: RobotParams | None = None,
     if adapter.mode is not None:
         set_actuation_mode(model, adapter.mode)
     data = mujoco.MjData(model)
+    phase = s.value(WHEEL_PHASE, 0.0)
+    if phase:
+        add_wheel_phase(model, data, adapter.wheel_joints, phase)
     dt = model.opt.timestep
     for _ in range(round(s.settle / dt)):
         mujoco.mj_step(model, data)
@@ -285,13 +316,15 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
         metrics += slip_metrics(trace, adapter.lateral_wheels, spec.targets)
     for probe in probes:
         metrics += probe.metrics()
-    return metrics
+    return s.opened(metrics)
 
 
 def run_all(work: Sequence[Job], progress: Callable[[str], None] | None = None,
             on_result: Callable[[ScenarioResult], None] | None = None
             ) -> list[ScenarioResult]:
-    """Run every scenario, one after the other; a failure does not stop the others.
+    """Run every scenario once (its nominal run); a failure does not stop the others.
+
+    :func:`wmr_mujoco.validation.members.run_families` runs their families instead.
 
     ``progress`` gets one line ``"[k/n] robot/scenario"`` as the k-th result is there
     (numbered by completion), besides the tracebacks of failed runs; ``on_result`` sees

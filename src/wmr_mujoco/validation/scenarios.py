@@ -27,6 +27,7 @@ from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Metric, Series
 from wmr_mujoco.validation.signals import Signal
+from wmr_mujoco.validation.variations import DURATION, envelope, is_generic, scale_factors
 
 if TYPE_CHECKING:
     import mujoco
@@ -128,6 +129,9 @@ class Scenario:
         family: what a user would vary in it and how many draws are judged (None: the
             scenario is one run; see :mod:`wmr_mujoco.validation.family`).
         draw: the values of this member of the family (empty: the nominal scenario).
+        open_targets: metric name -> reason, for the requirements this scenario's family
+            misses (its worst members): those metrics' targets become open
+            (:meth:`~wmr_mujoco.validation.targets.Target.opened`), shown, not judged.
     """
 
     robot: str
@@ -142,6 +146,8 @@ class Scenario:
     description: str = field(default="", compare=False)
     family: Family | None = field(default=None, compare=False)
     draw: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
+    open_targets: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}),
+                                            compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kind", parse_choice(ScenarioKind, self.kind, "scenario kind"))
@@ -161,18 +167,49 @@ class Scenario:
             if unknown:
                 raise ValueError(f"{self.key}: draw sets {unknown}, which the family does not "
                                  f"vary; it varies {sorted(varied)}")
+        if self.family is not None and self.kind is not ScenarioKind.MEASUREMENT:
+            own = sorted(v.name for v in self.family.vary if not is_generic(v.name))
+            if own:
+                raise ValueError(f"{self.key}: a {self.kind.value} scenario varies only what "
+                                 f"the runner applies (validation.variations); not {own}")
         object.__setattr__(self, "draw", MappingProxyType(dict(self.draw)))
+        if self.inputs:
+            scale_factors(self.draw, len(self.inputs))  # a bad channel fails here
 
     def __hash__(self) -> int:
         return hash((self.robot, self.name, self.kind, tuple(sorted(self.draw.items()))))
 
     def member(self, draw: Mapping[str, float]) -> Scenario:
-        """The member of this scenario's family with the values ``draw``."""
-        return replace(self, draw=draw)
+        """The member of this scenario's family with the values ``draw``.
+
+        A drawn ``duration`` (:data:`~wmr_mujoco.validation.variations.DURATION`) becomes
+        the member's ``duration``; call it on the nominal scenario.
+        """
+        return replace(self, draw=draw, duration=float(draw.get(DURATION, self.duration)))
+
+    def members(self, seed: int, draws: int | None = None) -> list[Scenario]:
+        """The family's members for ``seed`` (``draws``: how many, default the family's).
+
+        A scenario without a family is its own only member.
+
+        Raises:
+            ValueError: a bad seed or number of draws (:meth:`Family.sample`).
+        """
+        if self.family is None:
+            return [self]
+        return [self.member(d) for d in self.family.sample(seed, self.key, draws)]
 
     def value(self, name: str, nominal: float) -> float:
         """The drawn value of a varied quantity, or ``nominal`` (the nominal scenario)."""
         return float(self.draw.get(name, nominal))
+
+    def opened(self, metrics: list[Metric]) -> list[Metric]:
+        """``metrics`` with the targets named in :attr:`open_targets` made open."""
+        if not self.open_targets:
+            return metrics
+        return [m._replace(target=m.target.opened(self.open_targets[m.name]))
+                if m.target is not None and m.target.judged and m.name in self.open_targets
+                else m for m in metrics]
 
     @property
     def key(self) -> str:
@@ -180,5 +217,13 @@ class Scenario:
         return f"{self.robot}/{self.name}"
 
     def input_at(self, t: float) -> np.ndarray:
-        """Input vector at time ``t`` after the settle."""
-        return np.array([s(t) for s in self.inputs])
+        """Input vector at time ``t`` after the settle, with the draw's generic variations.
+
+        ``u(t) = min(1, t / T) · s ⊙ u_nominal(t)`` with the drawn per-channel factors ``s``
+        and lead-in ``T`` (:mod:`wmr_mujoco.validation.variations`; ones and no envelope
+        for the nominal scenario).
+        """
+        u = np.array([s(t) for s in self.inputs])
+        if not self.draw:
+            return u
+        return envelope(self.draw, t) * scale_factors(self.draw, len(u)) * u

@@ -60,6 +60,14 @@ class Target:
         """
         return cls(value, "open", f"{source}; not yet met: {reason}")
 
+    def opened(self, reason: str) -> Target:
+        """The same bound as an open target (value and basis kept), with why it is missed.
+
+        For a scenario whose family's worst members miss it
+        (``Scenario.open_targets``).
+        """
+        return Target(self.value, "open", f"{self.basis}; not yet met: {reason}")
+
     @property
     def judged(self) -> bool:
         """Whether a row with this target decides pass or fail (not an open target)."""

@@ -55,3 +55,15 @@ def test_implicitfast_misses_steady_precession(free):
 def test_bad_input(free, call, match):
     with pytest.raises(ValueError, match=match):
         call(free)
+
+
+def test_a_members_draw_reaches_the_measurement_as_keywords():
+    """The free disc's families: each drawn value is the measurement's keyword argument."""
+    from wmr_mujoco.robots import disc_free
+
+    seen = []
+    evaluate = disc_free._evaluate(lambda model, **kw: seen.append(kw))
+    s = disc_free.SPEC.scenario("incline")
+    evaluate(s.member({"slope": 0.09, "speed": 1.1}), None)
+    evaluate(s, None)
+    assert seen == [{"slope": 0.09, "speed": 1.1}, {}]

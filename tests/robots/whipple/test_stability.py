@@ -64,3 +64,18 @@ def test_5_5_mps_uses_the_derived_bound():
 def test_bad_push_raises(model):
     with pytest.raises(ValueError, match=r"lean_rate = 0.0 rad/s; valid range"):
         st.push_response(None, 5.0, lean_rate=0.0, model=model)
+
+
+def test_the_drawn_push_strength_is_the_runs():
+    """A push member's lean rate is its draw: the linear benchmark's lean is linear in
+    the push, so its curve scales by the ratio of the pushes exactly (to rounding)."""
+    import numpy as np
+
+    from wmr_mujoco.robots.whipple import SPEC as WHIPPLE
+    from wmr_mujoco.robots.whipple import stability as st
+
+    s = WHIPPLE.scenario("push at 5 m/s")
+    strong = s.member({st.PUSH: 1.2 * st.PUSH_LEAN_RATE})
+    lin = {k: next(x for x in m.evaluate(m, None).series if x.label == "linear benchmark")
+           for k, m in (("nominal", s), ("strong", strong))}
+    np.testing.assert_allclose(lin["strong"].y[:50], 1.2 * lin["nominal"].y[:50], rtol=1e-9)

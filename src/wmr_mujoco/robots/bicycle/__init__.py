@@ -20,8 +20,10 @@ from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.bicycle import builder
 from wmr_mujoco.robots.bicycle.params import BicycleParams
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.command import RateCommand, Servo
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const, pulses, steer_to
@@ -62,11 +64,16 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
 TARGETS: Mapping[str, Target] = req.vehicle_targets(0.5)
 
 SCENARIOS = (
-    *(Scenario(NAME, f"steady turn {phi:g} rad", (const(2.0, 1.0), steer_to(phi)))
+    # Families: speed and steering (rate, so angle) ±20 %; a steady turn's length ±20 %.
+    *(Scenario(NAME, f"steady turn {phi:g} rad", (const(2.0, 1.0), steer_to(phi)),
+               family=Family((var.channel(0), var.channel(1),
+                              var.around(var.DURATION, 10.0)), var.KINEMATIC_DRAWS))
       for phi in (0.15, 0.3, 0.5)),
-    Scenario(NAME, "steering ramp", (const(2.0, 1.0), const(0.05))),
+    Scenario(NAME, "steering ramp", (const(2.0, 1.0), const(0.05)), family=Family(
+        (var.channel(0), var.channel(1)), var.KINEMATIC_DRAWS)),
     Scenario(NAME, "lane change", (const(2.0, 1.0), pulses(
-        (2.0, 2.5, 0.4), (2.5, 3.5, -0.4), (3.5, 4.0, 0.4)))),
+        (2.0, 2.5, 0.4), (2.5, 3.5, -0.4), (3.5, 4.0, 0.4))), family=Family(
+        (var.channel(0), var.channel(1)), var.KINEMATIC_DRAWS)),
 )
 
 #: Driven by ``(v_r, φ)``: rear-wheel ground speed and steering angle (servoed).

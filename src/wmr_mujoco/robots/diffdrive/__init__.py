@@ -27,8 +27,10 @@ from wmr_mujoco.robots.diffdrive import builder, caster_drag
 from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Sine, const
@@ -77,15 +79,23 @@ def wheel_arc(scenario: Scenario, track: float, dt: float = 1e-3) -> float:
 
 
 SPIN = Scenario(NAME, "spin in place", (const(0.0), const(1.5, 0.5)), duration=2.0,
-                description="turn in place at 1.5 rad/s: judged on the centre's drift")
+                description="turn in place at 1.5 rad/s: judged on the centre's drift",
+                family=Family((var.channel(1), var.around(var.DURATION, 2.0)),
+                              var.KINEMATIC_DRAWS))
 
 SCENARIOS = (
-    Scenario(NAME, "straight", (const(0.5, 0.5), const(0.0)), duration=2.0),
-    Scenario(NAME, "arc", (const(0.5, 0.5), const(0.5, 0.5)), duration=3.0),
+    # Families: speed and turn rate ±20 %, run length ±20 % where the inputs hold.
+    Scenario(NAME, "straight", (const(0.5, 0.5), const(0.0)), duration=2.0, family=Family(
+        (var.channel(0), var.around(var.DURATION, 2.0)), var.KINEMATIC_DRAWS)),
+    Scenario(NAME, "arc", (const(0.5, 0.5), const(0.5, 0.5)), duration=3.0, family=Family(
+        (var.channel(0), var.channel(1), var.around(var.DURATION, 3.0)),
+        var.KINEMATIC_DRAWS)),
     SPIN,
     # ω = ω₀ sin(2πt/T) at constant v: the heading swings ±ω₀T/2π and returns, two
     # loops traced in opposite senses: a figure eight.
-    Scenario(NAME, "figure eight", (const(0.5, 0.5), Sine(1.5, 5.0)), duration=5.0),
+    # Its spread is not small (bench.family_spread): 20 draws.
+    Scenario(NAME, "figure eight", (const(0.5, 0.5), Sine(1.5, 5.0)), duration=5.0,
+             family=Family((var.channel(0), var.channel(1)), var.DYNAMIC_DRAWS)),
     Scenario(NAME, "caster drag", kind=ScenarioKind.MEASUREMENT, duration=caster_drag.STEADY,
              settle=caster_drag.SETTLE, evaluate=caster_drag.evaluate,
              description="the ball caster's drag, freely rolling and with MuJoCo's "

@@ -24,8 +24,10 @@ from wmr_mujoco.robots.disc import builder, sliding
 from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.robots.disc.wheel import mounted_wheel
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Metric, Target, Trace
 from wmr_mujoco.validation.scenarios import MeasurementResult, Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Sine, const
@@ -106,20 +108,21 @@ def judge_rolling(scenario: Scenario, trace: Trace, adapter: DiscDynamics,
                   targets: Mapping[str, Target]) -> list[Metric]:
     """Rolling acceleration: slope of the measured speed (after 0.5 s) against the model.
 
-    The slope is a least-squares fit over the whole steady part of the run, so it is
-    judged on every sample, not on one instant.
+    The slope is a least-squares fit over the whole steady part of the run (after 0.5 s,
+    or after a longer drawn lead-in), so it is judged on every sample, not on one
+    instant; the torque is the one held there.
 
     Raises:
         ValueError: the run ends before two samples of its steady part (duration ≤ 0.5 s).
     """
     tr = trace.arrays()
     t, sim, ana = tr["time"], tr["sim"], tr["analytic"]
-    steady = t > 0.5
+    steady = t > max(0.5, scenario.value(var.LEAD_IN, 0.0))
     if np.count_nonzero(steady) < 2:
         raise ValueError(f"{scenario.key}: duration = {scenario.duration:g} s; the rolling "
                          "acceleration is fitted after 0.5 s, give a longer run")
     measured = float(np.polyfit(t[steady], sim[steady, 1], 1)[0])
-    torque = scenario.input_at(0.0)[0]
+    torque = scenario.input_at(scenario.duration)[0]
     expected = adapter.wheel.rolling_acceleration(torque)
     return [
         Metric("rolling acceleration error", 100.0 * (measured - expected) / expected, "%",
@@ -149,11 +152,20 @@ def _on_model(measure: Callable[[mujoco.MjModel], MeasurementResult]
 
 
 SCENARIOS = (
-    Scenario(NAME, "straight", (const(1.0, 0.5), const(0.0))),
-    Scenario(NAME, "constant steering", (const(1.0, 0.5), const(0.5))),
-    Scenario(NAME, "sinusoidal steering", (const(1.0, 0.5), Sine(0.8, 4.0))),
+    # Families: speed and steering rate ±20 %, run length ±20 % where the inputs hold;
+    # the torque ±20 %, from a step or a ramp of up to 0.2 s (the disc's wheel is
+    # round: no phase to vary).
+    Scenario(NAME, "straight", (const(1.0, 0.5), const(0.0)), family=Family(
+        (var.channel(0), var.around(var.DURATION, 10.0)), var.KINEMATIC_DRAWS)),
+    Scenario(NAME, "constant steering", (const(1.0, 0.5), const(0.5)), family=Family(
+        (var.channel(0), var.channel(1), var.around(var.DURATION, 10.0)),
+        var.KINEMATIC_DRAWS)),
+    Scenario(NAME, "sinusoidal steering", (const(1.0, 0.5), Sine(0.8, 4.0)), family=Family(
+        (var.channel(0), var.channel(1)), var.KINEMATIC_DRAWS)),
     Scenario(NAME, "torque", (const(0.3), const(0.0)), duration=2.0,
-             kind=ScenarioKind.DYNAMIC),
+             kind=ScenarioKind.DYNAMIC, family=Family(
+                 (var.speeds(), var.around(var.DURATION, 2.0), var.lead_in(0.0, 0.2)),
+                 var.DYNAMIC_DRAWS)),
     Scenario(NAME, "sliding wheel", duration=2.0, kind=ScenarioKind.MEASUREMENT,
              evaluate=_on_model(sliding.sliding_wheel),
              description="torque ramp to the slip onset, then five torque pulses 5-23 % "

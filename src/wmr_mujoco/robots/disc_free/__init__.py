@@ -20,7 +20,9 @@ from wmr_mujoco.robots.disc.params import FreeDiscParams
 from wmr_mujoco.robots.disc_free import measurements as ms
 from wmr_mujoco.robots.disc_free.state import FreeRun
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
+from wmr_mujoco.validation.family import Family, Vary
 from wmr_mujoco.validation.scenarios import FilmFrame, MeasurementResult, Scenario, ScenarioKind
+from wmr_mujoco.validation.variations import DYNAMIC_DRAWS
 
 NAME = "disc_free"
 
@@ -34,10 +36,21 @@ def _model(params: RobotParams | None) -> mujoco.MjModel:
     return load(SPEC, params)
 
 
-def _evaluate(measure: Measure) -> Callable[[Scenario, RobotParams | None], MeasurementResult]:
+def _evaluate(measure: Callable[..., MeasurementResult]
+              ) -> Callable[[Scenario, RobotParams | None], MeasurementResult]:
+    """``measure(model, **drawn)``, as a measurement scenario's ``evaluate``.
+
+    A member's drawn values are the measurement's keyword arguments of the same names
+    (its own defaults where nothing is drawn).
+    """
     def evaluate(scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
-        return measure(_model(params))
+        return measure(_model(params), **dict(scenario.draw))
     return evaluate
+
+
+def _around(name: str, nominal: float, unit: str) -> Vary:
+    """``name`` within ±20 % of ``nominal``."""
+    return Vary(name, 0.8 * nominal, 1.2 * nominal, unit)
 
 
 def _film(runs: Runs, reference: Callable[[FreeRun], np.ndarray] | None = None
@@ -79,23 +92,42 @@ def _sweep_clip(model: mujoco.MjModel) -> list[FreeRun]:
                              stop_lean=1.2)
 
 
+#: The leaning start's requirements are open over its family: the slower draws (below the
+#: nominal speed, toward the upright disc's stability limit) miss all three, the energy
+#: drift too, so the physics itself loses energy there (the families table shows the
+#: spread against the speed).
+LEANING_OPEN = dict.fromkeys(
+    ("worst contact path error, first 5 s", "worst lean error, first 5 s",
+     "worst energy drift"),
+    "the family's slower draws miss it (the errors grow as the speed falls; the energy "
+    "drift too, so not only the comparison: not yet explained; spread in the families "
+    "table)")
+
 SCENARIOS = (
     Scenario(NAME, "incline", duration=1.0, kind=ScenarioKind.MEASUREMENT,
              evaluate=_evaluate(ms.incline), film=_film(ms.incline_runs),
-             description="upright rolling down 0.1 rad: g sin β/(1 + C/(m a²))"),
+             description="upright rolling down 0.1 rad: g sin β/(1 + C/(m a²))",
+             family=Family((_around("slope", 0.1, "rad"), _around("speed", 1.0, "m/s")),
+                           DYNAMIC_DRAWS)),
     Scenario(NAME, "stability sweep", duration=4.0, kind=ScenarioKind.MEASUREMENT,
              evaluate=_evaluate(ms.stability_sweep), film=_film(_sweep_clip),
              description="upright rolling at 0.8 to 1.2 v_c with a lean kick: threshold "
-                         "speed and lean growth rate"),
+                         "speed and lean growth rate",
+             family=Family((_around("kick", ms.SWEEP_KICK, "rad/s"),), DYNAMIC_DRAWS)),
     Scenario(NAME, "steady precession", duration=3.5, kind=ScenarioKind.MEASUREMENT,
              evaluate=_evaluate(ms.steady_precession),
              film=_film(ms.precession_runs, _circle),
              description="steady circling at 0.3 rad lean on a 0.6 m circle, one full "
-                         "circle"),
+                         "circle",
+             family=Family((_around("lean", ms.PRECESSION[0], "rad"),
+                            _around("radius", ms.PRECESSION[1], "m")), DYNAMIC_DRAWS)),
     Scenario(NAME, "leaning start", duration=10.0, kind=ScenarioKind.MEASUREMENT,
              evaluate=_evaluate(ms.leaning_start), film=_film(ms.leaning_runs, _nonlinear),
              description="leaning rolling start: path and lean against the nonlinear "
-                         "equations over 5 s, energy over 10 s"),
+                         "equations over 5 s, energy over 10 s",
+             family=Family((_around("lean", ms.LEANING_START[0], "rad"),
+                            _around("speed", ms.LEANING_START[1], "m/s")), DYNAMIC_DRAWS),
+             open_targets=LEANING_OPEN),
 )
 
 SPEC = RobotSpec(

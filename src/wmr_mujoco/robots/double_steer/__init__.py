@@ -23,8 +23,10 @@ from wmr_mujoco.robots.double_steer import builder
 from wmr_mujoco.robots.double_steer.params import DoubleSteerParams
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.robots.steered import analytic as steered
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.command import RateCommand, Servo
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const, steer_to
 
@@ -65,13 +67,26 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
     return DoubleSteerKinematics(params_or_default(params, DoubleSteerParams))
 
 
+#: The tight turn's position requirement is open over its family: its spread is not
+#: small (20 draws), and the shorter runs at up to 1.2 times the speed and steering miss
+#: it, which the kinematic model does not yet explain (the families table shows it).
+TIGHT_TURN_OPEN = {"worst position error": "the family's shorter runs at up to 1.2 times "
+                   "the speed and steering miss it; not yet explained by the kinematic "
+                   "model (spread in the families table)"}
+
 SCENARIOS = (
     # Steering first (0.5 s at rest), then speed over a 0.5 s ramp: crabbing (both
     # wheels parallel, a translation) and turning about a near ICR (opposite angles).
+    # Families: speed and both steering angles by one factor ±20 % (one factor keeps
+    # the crab's angles equal and the tight turn's opposite), the length ±20 %.
     Scenario(NAME, "crab 0.5 rad", (const(0.4, 0.5), steer_to(0.5), steer_to(0.5)),
-             duration=2.5),
+             duration=2.5, family=Family(
+                 (var.speeds(), var.around(var.DURATION, 2.5)),
+                 var.KINEMATIC_DRAWS)),
     Scenario(NAME, "tight turn ±1 rad", (const(0.3, 0.5), steer_to(1.0), steer_to(-1.0)),
-             duration=3.0),
+             duration=3.0, family=Family(
+                 (var.speeds(), var.around(var.DURATION, 3.0)), var.DYNAMIC_DRAWS),
+             open_targets=TIGHT_TURN_OPEN),
 )
 
 #: Driven by ``(v₁, β₁, β₂)``: front wheel ground speed and both steering angles

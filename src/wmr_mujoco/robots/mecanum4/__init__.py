@@ -10,6 +10,7 @@ Derivations: docs/mecanum.md.
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Mapping
 
 import mujoco
@@ -31,8 +32,10 @@ from wmr_mujoco.robots.roller_wheels import (
 )
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Probe, Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const
@@ -49,6 +52,19 @@ TURN_DURATION = 10.0
 TORQUE_AHEAD = (0.04, 0.04, 0.04, 0.04)
 TORQUE_MIXED = (0.04, -0.01, 0.03, 0.0)
 TORQUE_DURATION = 2.0
+#: What a user would vary in a kinematic run: speeds and yaw rate ±20 %, the wheels'
+#: start angle over one roller pitch (the contact moves from roller to roller).
+KINEMATIC_FAMILY = Family((var.speeds(), var.roller_pitch(MecanumParams().rollers_per_wheel)),
+                          var.KINEMATIC_DRAWS)
+#: The eight translations together: their spread over the start angle is not small (the
+#: diagonals' worst position error moves by more than half the target), so 20 draws.
+GROUP_FAMILY = dataclasses.replace(KINEMATIC_FAMILY, draws=var.DYNAMIC_DRAWS)
+#: And in a torque run: the torques ±20 %, from a step or a ramp of up to 0.2 s, the
+#: run's length ±20 %, the start angle over one roller pitch.
+TORQUE_FAMILY = Family((var.speeds(), var.lead_in(0.0, 0.2),
+                        var.around(var.DURATION, TORQUE_DURATION),
+                        var.roller_pitch(MecanumParams().rollers_per_wheel)),
+                       var.DYNAMIC_DRAWS)
 
 TARGETS: Mapping[str, Target] = {
     mt.POSITION_PCT: req.position_pct(1.0, SOURCE),
@@ -61,15 +77,40 @@ TARGETS: Mapping[str, Target] = {
                                                    "body velocity within 3 % of the "
                                                    "Lagrange model"),
 }
+#: The torque run's forward-speed requirement is open over its family: the reduced
+#: Lagrange model leaves out the roller hand-overs (the contact moving from roller to
+#: roller), so the wheels' start angle moves the error (the report shows its spread).
+TORQUE_OPEN = {"Lagrange: worst u error": "the reduced model leaves out the roller "
+               "hand-overs; over the wheels' start angle the worst draws miss it (spread in "
+               "the families table)"}
 
 
 TAGS = ((RAMP, "ramp"), (0.0, "step"))
 
 
+#: A diagonal step translation's position requirement is open over its family: the step
+#: model averages the roller contact over the roller pitch; over the wheels' start angle
+#: the diagonal steps' worst draws miss it (the families table shows the spread; the
+#: steps along the axes stay judged).
+STEP_OPEN = {"worst position error": "the step model averages the roller contact over the "
+             "roller pitch; over the wheels' start angle the diagonal steps' worst draws "
+             "miss it (spread in the families table)"}
+
+
+#: The stepped rotation's heading requirement is open over its family: its worst draws
+#: start near a roller hand-over (a start angle near a multiple of the roller pitch) at
+#: the higher yaw rates, which the step model's pitch-averaged contact leaves out.
+ROTATE_STEP_OPEN = {"worst heading error": "the family's worst draws start near a roller "
+                    "hand-over at the higher yaw rates; the step model averages the roller "
+                    "contact over the pitch (spread in the families table)"}
+
+
 def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
     """The eight translations at 0.3 m/s (a ramp of ``ramp`` seconds; 0: a step)."""
     return tuple(Scenario(NAME, f"translate {deg}° ({tag})",
-                          twist_inputs(translation(deg), ramp), duration=TRANSLATE_DURATION)
+                          twist_inputs(translation(deg), ramp), duration=TRANSLATE_DURATION,
+                          family=KINEMATIC_FAMILY,
+                          open_targets=STEP_OPEN if not ramp and deg % 90 else {})
                  for deg in DIRECTIONS_DEG)
 
 
@@ -79,9 +120,13 @@ def turning(ramp: float, tag: str) -> tuple[Scenario, ...]:
     The first is the robot's first kinematic scenario: the bench's cruising controls.
     """
     return (Scenario(NAME, f"translate+rotate ({tag})",
-                     twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE), ramp), duration=TURN_DURATION),
+                     twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE), ramp), duration=TURN_DURATION,
+                     family=KINEMATIC_FAMILY),
+            # Its spread is not small (bench.family_spread): 20 draws; stepped, its
+            # heading requirement is open over them (ROTATE_STEP_OPEN).
             Scenario(NAME, f"rotate ({tag})", twist_inputs((0.0, 0.0, YAW_RATE), ramp),
-                     duration=TURN_DURATION))
+                     duration=TURN_DURATION, family=GROUP_FAMILY,
+                     open_targets={} if ramp else ROTATE_STEP_OPEN))
 
 
 def kinematic_runs() -> tuple[Scenario, ...]:
@@ -95,12 +140,14 @@ def _scenarios() -> tuple[Scenario, ...]:
     for ramp, tag in TAGS:
         out.append(Scenario(NAME, f"8 translations ({tag})", kind=ScenarioKind.MEASUREMENT,
                             evaluate=Group(translations(ramp, tag)),
-                            description="eight kinematic runs, each judged over the run"))
+                            description="eight kinematic runs, each judged over the run",
+                            family=GROUP_FAMILY))
         out += turning(ramp, tag)
     out += [Scenario(NAME, f"{dynamics.JUDGED_PREFIX}", tuple(const(t) for t in TORQUE_AHEAD),
-                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC),
+                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC, family=TORQUE_FAMILY,
+                     open_targets=TORQUE_OPEN),
             Scenario(NAME, "torque mixed", tuple(const(t) for t in TORQUE_MIXED),
-                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC),
+                     duration=TORQUE_DURATION, kind=ScenarioKind.DYNAMIC, family=TORQUE_FAMILY),
             Scenario(NAME, "rolling-radius ripple", kind=ScenarioKind.MEASUREMENT,
                      evaluate=ripple.ripple,
                      description="collision geometry of wheel FL over one revolution")]

@@ -37,8 +37,14 @@ class Group:
     members: tuple[Scenario, ...]
 
     def __call__(self, scenario: Scenario, params: RobotParams | None) -> MeasurementResult:
-        """Run, measure and judge every member; one error curve each."""
-        return evaluate_group(self.members, params)
+        """Run, measure and judge every member; one error curve each.
+
+        A member of the group scenario's family passes its draw to every run (they
+        declare the same family).
+        """
+        runs = [m.member(scenario.draw) for m in self.members] if scenario.draw \
+            else list(self.members)
+        return evaluate_group(runs, params)
 
 
 def evaluate_group(members: Sequence[Scenario], params: RobotParams | None

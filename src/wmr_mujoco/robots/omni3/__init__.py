@@ -11,6 +11,7 @@ the dynamic runs are simulated together (:mod:`.runs`).
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from collections.abc import Mapping
@@ -40,8 +41,10 @@ from wmr_mujoco.robots.roller_wheels import (
 from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.spec import Clip, RobotSpec
 from wmr_mujoco.validation import metrics as mt
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.command import RateCommand
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Target
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Piecewise, Signal, const
@@ -154,12 +157,31 @@ def square_with_rotation(side: float = 0.6, speed: float = 0.24, yaw_rate: float
 #: Every dynamic run, simulated together once per parameter set (:mod:`.runs`).
 DYNAMIC_SPECS = (*dynamics.STEP_SPECS, *dynamics.TORQUE_SPECS, coasting.COAST_SPEC)
 
+#: What a user would vary in a kinematic run: speeds and yaw rate ±20 %, the wheels' start
+#: angle over one full roller pitch (both rows: the pattern repeats after ``2π / n`` for
+#: ``n`` rollers per row).
+KINEMATIC_FAMILY = Family((var.speeds(), var.roller_pitch(OmniParams().rollers_per_row)),
+                          var.KINEMATIC_DRAWS)
+#: The square with rotation's heading requirement is open over its family: the two roller
+#: rows put the contact at L ± e in turn, so the yaw rate ripples and the heading drifts
+#: (models/omni3/README.md), which the ideal kinematics leaves out; over the family's
+#: start angles and speeds its worst draws miss 1° (seeds other than the default too).
+SQUARE_OPEN = {"worst heading error": "the roller rows' contact at L ± e makes the heading "
+               "drift, which the ideal kinematics leaves out; the family's worst draws "
+               "miss it (spread in the families table)"}
+#: The same family where its spread is not small: 20 draws.
+WIDE_FAMILY = dataclasses.replace(KINEMATIC_FAMILY, draws=var.DYNAMIC_DRAWS)
+
 SCENARIOS = (
-    *(Scenario(NAME, f"translate {deg}°", twist_inputs(translation(deg)))
-      for deg in DIRECTIONS_DEG),
-    Scenario(NAME, "rotate", twist_inputs((0.0, 0.0, YAW_RATE))),
-    Scenario(NAME, "translate+rotate", twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE))),
-    Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True),
+    *(Scenario(NAME, f"translate {deg}°", twist_inputs(translation(deg)),
+               family=KINEMATIC_FAMILY) for deg in DIRECTIONS_DEG),
+    # The turning runs' heading spread is not small (python -m
+    # wmr_mujoco.bench.family_spread omni3): 20 draws.
+    Scenario(NAME, "rotate", twist_inputs((0.0, 0.0, YAW_RATE)), family=WIDE_FAMILY),
+    Scenario(NAME, "translate+rotate", twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE)),
+             family=KINEMATIC_FAMILY),
+    Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True,
+             family=WIDE_FAMILY, open_targets=SQUARE_OPEN),
     *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_step,
                duration=s.duration, family=families.STEP_FAMILY,
                description="rate servo stepped to a twist (no ramp): physics vs the hybrid "

@@ -25,8 +25,10 @@ from wmr_mujoco.robots.single_steer import builder
 from wmr_mujoco.robots.single_steer.params import SingleSteerParams
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.robots.steered import analytic as steered
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
 from wmr_mujoco.validation.command import RateCommand, Servo
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import Sine, const, steer_to
 
@@ -78,8 +80,12 @@ def sleigh_adapter(scenario: Scenario, model: mujoco.MjModel,
 SCENARIOS = (
     # The casters lead, the steered wheel pushes from behind: start straight, then
     # steer 0.5 rad in 0.5 s while rolling (the chassis yaws, the sleigh's free mode).
-    Scenario(NAME, "crab 0.5 rad", (const(0.4, 0.5), steer_to(0.5, 1.0)), duration=3.0),
-    Scenario(NAME, "slalom", (const(0.4, 0.5), Sine(0.6, 3.0)), duration=4.0),
+    # Families: speed and steering ±20 %; the crab's length ±20 %.
+    Scenario(NAME, "crab 0.5 rad", (const(0.4, 0.5), steer_to(0.5, 1.0)), duration=3.0,
+             family=Family((var.channel(0), var.channel(1), var.around(var.DURATION, 3.0)),
+                           var.KINEMATIC_DRAWS)),
+    Scenario(NAME, "slalom", (const(0.4, 0.5), Sine(0.6, 3.0)), duration=4.0,
+             family=Family((var.channel(0), var.channel(1)), var.KINEMATIC_DRAWS)),
 )
 
 #: Driven by ``(v_w, β)``: the steered wheel's ground speed and steering angle (servoed);

@@ -24,8 +24,10 @@ from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.robots.tricycle import analytic as tricycle
 from wmr_mujoco.robots.tricycle import builder
 from wmr_mujoco.robots.tricycle.params import TricycleParams
+from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose
 from wmr_mujoco.validation.command import RateCommand, Servo
+from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Metric, Sample, Target, rms
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.signals import const, pulses, steer_to
@@ -101,14 +103,30 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
 
 TARGETS: Mapping[str, Target] = req.vehicle_targets(0.5)
 
+#: The 0.6 rad turn's position requirement is open over its family: its fastest, tightest
+#: draws (up to 1.2 times the speed and the steering: the largest lateral acceleration)
+#: miss it, with lateral slip several times the other turns' (the families table), which
+#: the kinematic model leaves out.
+SHARP_TURN_OPEN = {"worst position error": "the family's fastest, tightest draws miss it; "
+                   "their lateral slip is several times the gentler turns' (spread in the "
+                   "families table), which the kinematic model leaves out"}
+
 SCENARIOS = (
     # The driven wheel is the inner one in left turns: speed first, then steering, so
     # that the midpoint's acceleration v_L/(1 − k) stays below the traction limit.
-    *(Scenario(NAME, f"steady turn {phi:g} rad", (const(1.0, 1.0), steer_to(phi, 1.0)))
-      for phi in (0.2, 0.4, 0.6)),
+    # Families: speed and steering (rate, so angle) ±20 %; a steady turn's length ±20 %.
+    # The tightest turn's spread is not small (python -m wmr_mujoco.bench.family_spread):
+    # 20 draws, and its position requirement open over them (SHARP_TURN_OPEN).
+    *(Scenario(NAME, f"steady turn {phi:g} rad", (const(1.0, 1.0), steer_to(phi, 1.0)),
+               family=Family((var.channel(0), var.channel(1),
+                              var.around(var.DURATION, 10.0)),
+                             var.DYNAMIC_DRAWS if sharp else var.KINEMATIC_DRAWS),
+               open_targets=SHARP_TURN_OPEN if sharp else {})
+      for phi, sharp in ((0.2, False), (0.4, False), (0.6, True))),
     # Steer to +0.5 rad, one full circle (about 4.5 s), steer through to −0.5, a second.
     Scenario(NAME, "figure eight", (const(1.0, 1.0), pulses(
-        (1.0, 1.5, 1.0), (5.7, 6.7, -1.0))), duration=12.0),
+        (1.0, 1.5, 1.0), (5.7, 6.7, -1.0))), duration=12.0, family=Family(
+        (var.channel(0), var.channel(1)), var.KINEMATIC_DRAWS)),
 )
 
 def left_wheel_speed(adapter: TricycleKinematics, u: np.ndarray,

@@ -19,7 +19,9 @@ from wmr_mujoco.robots.whipple import builder, eigen, lean, stability
 from wmr_mujoco.robots.whipple.params import WhippleParams
 from wmr_mujoco.robots.whipple.rolling import NAME, compile_model, pushed, readings
 from wmr_mujoco.validation.command import Balance, TorqueCommand
+from wmr_mujoco.validation.family import Family, Vary
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind, free_run
+from wmr_mujoco.validation.variations import DYNAMIC_DRAWS
 
 
 def push_name(speed: float) -> str:
@@ -27,12 +29,18 @@ def push_name(speed: float) -> str:
     return f"push at {speed:g} m/s"
 
 
+#: What a user would vary in a push: its strength, the lean rate it gives, ±20 %.
+PUSH_FAMILY = Family((Vary(stability.PUSH, 0.8 * stability.PUSH_LEAN_RATE,
+                           1.2 * stability.PUSH_LEAN_RATE, "rad/s"),), DYNAMIC_DRAWS)
+
+
 def _push(speed: float, what: str) -> Scenario:
     evaluate, start = stability.push_scenario_parts(speed)
     return Scenario(NAME, push_name(speed), duration=stability.PUSH_DURATION,
                     kind=ScenarioKind.MEASUREMENT, settle=0.0, evaluate=evaluate,
                     film=free_run(start, compile_model),
-                    description=f"sideways push at {speed:g} m/s: {what}")
+                    description=f"sideways push at {speed:g} m/s: {what}",
+                    family=PUSH_FAMILY)
 
 
 SCENARIOS = (

@@ -46,6 +46,8 @@ STABLE_SPEEDS = (4.6, 5.0, 5.5)
 UNSTABLE_SPEED = 3.0
 #: The push: lean rate about the ground line, rad/s.
 PUSH_LEAN_RATE = 0.5
+#: Name of the push's lean rate in a push scenario's family draw.
+PUSH = "push lean rate"
 #: Length of a push run, s; the late window judged, s; sampling, s.
 PUSH_DURATION, WINDOW, SAMPLE = 10.0, 2.0, 0.01
 #: Lean ratio requirement.
@@ -197,9 +199,14 @@ def stability_metrics(params: WhippleParams | None, run: PushResponse) -> list[M
 
 def evaluate_push(scenario: Scenario, params: WhippleParams | None, speed: float
                   ) -> MeasurementResult:
-    """One push run: its judged metrics and its lean beside the linear benchmark's."""
-    run = push_response(params, speed)
-    lin = linear_lean(params, speed, run.time)
+    """One push run: its judged metrics and its lean beside the linear benchmark's.
+
+    The push's lean rate is the scenario's drawn :data:`PUSH` (nominal
+    :data:`PUSH_LEAN_RATE`).
+    """
+    lean_rate = scenario.value(PUSH, PUSH_LEAN_RATE)
+    run = push_response(params, speed, lean_rate)
+    lin = linear_lean(params, speed, run.time, lean_rate)
     series = [Series("MuJoCo", run.time, run.lean, "t [s]", "lean φ [rad]"),
               Series("linear benchmark", run.time, lin, "t [s]", "lean φ [rad]",
                      style="--")]
