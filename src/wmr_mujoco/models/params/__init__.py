@@ -29,6 +29,8 @@ from wmr_mujoco.models.params.parts import (
     MAX_TORQUE,
     MAX_WHEEL_MASS,
     MAX_WHEEL_RADIUS,
+    PAIRS_SET_IMPRATIO,
+    SIM_PAIR_FIELDS,
     STEERING_FIELDS,
     DriveParams,
     SimParams,
@@ -37,7 +39,8 @@ from wmr_mujoco.models.params.parts import (
 from wmr_mujoco.models.params.protocol import ParamsT, RobotParams, params_or_default
 
 __all__ = ["MAX_GAIN", "MAX_RATE", "MAX_TORQUE", "MAX_WHEEL_MASS",
-           "MAX_WHEEL_RADIUS", "STEERING_FIELDS", "DriveParams",
+           "MAX_WHEEL_RADIUS", "PAIRS_SET_IMPRATIO", "SIM_PAIR_FIELDS", "STEERING_FIELDS",
+           "DriveParams",
            "ParamsT", "RobotParams", "SimParams",
            "WheelParams", "_check_choice", "_check_count",
            "_check_floor_pair", "_check_positive_fields", "_check_range", "_check_types",

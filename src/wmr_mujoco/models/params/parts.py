@@ -77,6 +77,14 @@ STEERING_FIELDS: tuple[str, ...] = ("drive.steer_kp", "drive.steer_kv",
                                     "drive.steer_torque_limit", "drive.steer_rate_limit",
                                     "drive.steer_angle_limit")
 
+#: With the remedy's wheel-floor pairs (``sim.floor_impedance`` > 0) the builder sets
+#: MuJoCo's ``impratio`` from the pairs' impedance, so ``sim.impratio`` is not used.
+PAIRS_SET_IMPRATIO: tuple[str, ...] = ("sim.impratio",)
+
+#: The remedy's pair settings in :class:`SimParams`, unused by a robot whose floor contact
+#: has its own settings (the disc's, the roller robots' own ``floor_impedance``) or none.
+SIM_PAIR_FIELDS: tuple[str, ...] = ("sim.floor_impedance", "sim.floor_dampratio")
+
 
 @dataclass(frozen=True)
 class DriveParams:

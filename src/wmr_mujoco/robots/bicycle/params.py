@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 from wmr_mujoco.models.params.fields import (
     _check_positive_fields,
 )
 from wmr_mujoco.models.params.parts import (
+    PAIRS_SET_IMPRATIO,
     DriveParams,
     SimParams,
     WheelParams,
@@ -32,6 +34,10 @@ class BicycleParams:
         sim: simulation settings.
 
     """
+
+    #: Fields its model does not use: ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = (*PAIRS_SET_IMPRATIO,)
+
 
     rear_wheel: WheelParams = WheelParams(radius=0.34, width=0.035, mass=1.8)
     front_wheel: WheelParams = WheelParams(radius=0.34, width=0.035, mass=1.4)

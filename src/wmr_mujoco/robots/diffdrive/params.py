@@ -6,7 +6,13 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from wmr_mujoco.models.params.fields import _check_positive_fields, _check_range
-from wmr_mujoco.models.params.parts import STEERING_FIELDS, DriveParams, SimParams, WheelParams
+from wmr_mujoco.models.params.parts import (
+    PAIRS_SET_IMPRATIO,
+    STEERING_FIELDS,
+    DriveParams,
+    SimParams,
+    WheelParams,
+)
 from wmr_mujoco.models.params.wheeled import (
     _CASTER,
     _DRIVE,
@@ -58,7 +64,7 @@ class DiffDriveParams:
     sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
 
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS
+    UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, *PAIRS_SET_IMPRATIO)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("caster_x", "chassis_com_x"))

@@ -11,6 +11,7 @@ from wmr_mujoco.models.params.fields import (
     _check_range,
 )
 from wmr_mujoco.models.params.parts import (
+    SIM_PAIR_FIELDS,
     DriveParams,
     SimParams,
     WheelParams,
@@ -75,7 +76,8 @@ class DiscParams:
     #: settings belong to ``disc_free``; ``floor_impratio`` replaces ``sim.impratio``):
     #: ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = ("drive.steer_angle_limit", "free_integrator",
-                                         "free_timestep", "free_rim", "sim.impratio")
+                                         "free_timestep", "free_rim", "sim.impratio",
+                                         *SIM_PAIR_FIELDS)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)
@@ -102,7 +104,7 @@ class FreeDiscParams(DiscParams):
 
     #: Fields the free disc's model does not use: ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = (
-        "mount_mass", "sim.timestep", "floor_impedance", "floor_impratio",
+        "mount_mass", "sim.timestep", "floor_impedance", "floor_impratio", *SIM_PAIR_FIELDS,
         *(f"drive.{f.name}" for f in fields(DriveParams)))
 
     @property

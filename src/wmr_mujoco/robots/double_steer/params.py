@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 from wmr_mujoco.models.params.fields import _check_positive_fields, _check_range
-from wmr_mujoco.models.params.parts import DriveParams, SimParams, WheelParams
+from wmr_mujoco.models.params.parts import PAIRS_SET_IMPRATIO, DriveParams, SimParams, WheelParams
 from wmr_mujoco.models.params.wheeled import (
     _CASTER,
     _DRIVE,
@@ -44,6 +45,10 @@ class DoubleSteerParams:
     in (0, 5] m. Masses: positive, no upper bound.
 
     """
+
+    #: Fields its model does not use: ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = (*PAIRS_SET_IMPRATIO,)
+
 
     wheel: WheelParams = _WHEEL
     half_wheelbase: float = 0.2

@@ -13,6 +13,7 @@ from typing import ClassVar
 from wmr_mujoco.models.params import (
     MAX_WHEEL_MASS,
     MAX_WHEEL_RADIUS,
+    PAIRS_SET_IMPRATIO,
     STEERING_FIELDS,
     DriveParams,
     SimParams,
@@ -103,7 +104,8 @@ class MecanumParams:
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
     SOLVERS = ("Newton", "PGS", "CG")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS
+    UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "sim.floor_impedance",
+                                         *PAIRS_SET_IMPRATIO)
 
     def __post_init__(self) -> None:
         _check_types(self)  # before any range: a message that names the wrong type

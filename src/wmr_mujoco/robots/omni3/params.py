@@ -14,6 +14,7 @@ from wmr_mujoco.models.params.fields import (
     _check_range,
 )
 from wmr_mujoco.models.params.parts import (
+    PAIRS_SET_IMPRATIO,
     STEERING_FIELDS,
     DriveParams,
     SimParams,
@@ -76,7 +77,8 @@ class OmniParams:
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = STEERING_FIELDS
+    UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "sim.floor_impedance",
+                                         *PAIRS_SET_IMPRATIO)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self, exclude=("roller_armature", "roller_damping",

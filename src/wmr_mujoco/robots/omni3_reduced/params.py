@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, fields
 from typing import ClassVar
 
-from wmr_mujoco.models.params.parts import STEERING_FIELDS, SimParams
+from wmr_mujoco.models.params.parts import SIM_PAIR_FIELDS, STEERING_FIELDS, SimParams
 from wmr_mujoco.robots.omni3.params import OmniParams
 
 
@@ -19,7 +19,8 @@ class OmniReducedParams(OmniParams):
     """
 
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "roller_shape", "roller_armature",
-                                         "roller_damping", "floor_impedance")
+                                         "roller_damping", "floor_impedance",
+                                         *SIM_PAIR_FIELDS)
     #: Its capsule pairs take the collision class's contact (``builder.floor_pairs``), at
     #: the step and time constant its tests derive their tolerances for (omni3's before
     #: omni3 took the floor pairs' remedy, docs/floor-contact.md).

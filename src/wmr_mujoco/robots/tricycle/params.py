@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 from wmr_mujoco.models.params.fields import (
     _check_choice,
@@ -10,6 +11,7 @@ from wmr_mujoco.models.params.fields import (
     _check_range,
 )
 from wmr_mujoco.models.params.parts import (
+    PAIRS_SET_IMPRATIO,
     DriveParams,
     SimParams,
     WheelParams,
@@ -38,6 +40,10 @@ class TricycleParams:
         sim: simulation settings.
 
     """
+
+    #: Fields its model does not use: ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = (*PAIRS_SET_IMPRATIO,)
+
 
     rear_wheel: WheelParams = WheelParams(radius=0.1, width=0.03, mass=0.4)
     front_wheel: WheelParams = WheelParams(radius=0.1, width=0.03, mass=0.4)

@@ -17,12 +17,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 
 from wmr_mujoco.models.params import (
     MAX_WHEEL_MASS,
     MAX_WHEEL_RADIUS,
+    SIM_PAIR_FIELDS,
     SimParams,
     _check_choice,
     _check_count,
@@ -136,6 +138,10 @@ class WhippleParams:
     (a real body). The frame masses have no physical upper bound of their own.
 
     """
+
+    #: Fields its model does not use (the knife-edge wheels keep the collision class's
+    #: contact): ``wmr info`` leaves them out.
+    UNUSED: ClassVar[tuple[str, ...]] = SIM_PAIR_FIELDS
 
     wheelbase: float = 1.02
     trail: float = 0.08
