@@ -23,7 +23,10 @@ from wmr_mujoco.robots.omni3.runs import RunSpec, hybrid, simulate_runs
 from wmr_mujoco.robots.roller_wheels import omni_hybrid as oh
 from wmr_mujoco.robots.roller_wheels.twist_errors import twist_metrics
 
-STIFF = OmniParams(sim=SimParams(timestep=0.0005, contact_timeconst=0.001))
+#: Stiff contacts of the collision class (contact bits): the rigid limit is derived for its
+#: hard solimp; the default floor pairs' small impedance (0.001) is deliberately soft.
+STIFF = OmniParams(floor_impedance=0.0,
+                   sim=SimParams(timestep=0.0005, contact_timeconst=0.001))
 PUSH = RunSpec("push", ActuationMode.TORQUE, (0.04, -0.03, 0.01), 1.0)
 
 

@@ -3,8 +3,17 @@
 import numpy as np
 import pytest
 
+from wmr_mujoco.models.params import SimParams
 from wmr_mujoco.robots.omni3 import traction as tr
+from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import hybrid
+
+#: omni3 with the collision class's contact (contact bits) at the step and time constant it
+#: had when these claims were derived (1 ms, 2 ms; docs/omni-dynamics.md). The default is
+#: now the floor pairs' remedy (floor_impedance 0.001, 1.25 ms, solref 3.75 ms,
+#: docs/floor-contact.md § 4), where the hybrid model's tolerances are not re-derived yet.
+COLLISION_CLASS = OmniParams(floor_impedance=0.0,
+                              sim=SimParams(timestep=0.001, contact_timeconst=0.002))
 
 
 def test_slip_onset_follows_the_wheel_phase():
@@ -16,7 +25,8 @@ def test_slip_onset_follows_the_wheel_phase():
     at a roller's centre, 0° and 30°), where the physics' slip re-sticks once and its
     reading jumps by ~12 % (an open point, docs/omni-dynamics.md). The ramp's derived
     resolution stays under 2 % of the onset (so 5 % is not decided by the reading)."""
-    runs = tr.measure_slip_onsets(np.radians(np.arange(2.5, 60.0, 5.0)))
+    runs = tr.measure_slip_onsets(np.radians(np.arange(2.5, 60.0, 5.0)),
+                                  params=COLLISION_CLASS)
     model = [abs(r.predicted - r.measured) / r.measured for r in runs]
     static = [abs(r.quasi_static - r.measured) / r.measured for r in runs]
     assert max(model) <= 0.05 < max(static)
