@@ -21,8 +21,10 @@ $(EXTRA_STAMP): $(STAMP)
 	$(BIN)/python -m pip install --quiet -e ".[test,gpu,docs]"
 	touch $(EXTRA_STAMP)
 
+# DEMO_ARGS: extra `wmr validate` options, e.g. DEMO_ARGS=--quick (3 draws a family,
+# labelled quick) where only the set-up path is checked (scripts/ci-fresh-user.sh).
 demo: $(STAMP)
-	$(BIN)/wmr validate
+	$(BIN)/wmr validate $(DEMO_ARGS)
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests scripts

@@ -25,14 +25,12 @@ import math
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic.integrate import rk4_step
-from wmr_mujoco.loop.kinematic import WheelGeometry
+from wmr_mujoco.loop.kinematic import WheelGeometry, hold
 from wmr_mujoco.loop.readout import place
 from wmr_mujoco.loop.robot import Robot, substeps
 from wmr_mujoco.loop.state import CommandSpace, RobotState
 from wmr_mujoco.models.actuation import set_actuation_mode
 from wmr_mujoco.models.params import RobotParams
-from wmr_mujoco.sim.stepping import SimulationDivergedError
 from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.spec import RobotSpec
@@ -125,17 +123,7 @@ class DynamicRobot(Robot):
 
     def _advance(self, command: np.ndarray) -> RobotState:
         """Hold the torques for one period: exact step, or RK4 on the timestep."""
-        x = self._x
-        if self._exact is not None:
-            x = self._exact(x, command, self.control_period)
-        else:
-            rhs = self.adapter.rhs
-            for _ in range(self.nstep):
-                x = rk4_step(rhs, x, command, self.dt)
-        if not np.all(np.isfinite(x)):
-            raise SimulationDivergedError(f"{self.spec.name}: the dynamic model's state "
-                                          f"became non-finite at t={self.time:.4f} s: {x}")
-        self._x = np.asarray(x, float)
+        self._x = hold(self, self._x, command, "dynamic")
         self._periods += 1
         return self._read(self._periods * self.control_period, command)
 

@@ -35,6 +35,27 @@ from wmr_mujoco.validation.command import RateCommand
 from wmr_mujoco.validation.spec import RobotSpec
 
 
+def hold(robot: Robot, x: np.ndarray, u: np.ndarray, what: str) -> np.ndarray:
+    """``x`` after one control period with ``u`` held: the model's exact step, else RK4.
+
+    ``robot`` gives the adapter's ``rhs``, its exact step (None: none), the substeps
+    ``nstep`` of ``dt`` and its name; ``what`` names the model in the error.
+
+    Raises:
+        SimulationDivergedError: the state became non-finite.
+    """
+    if robot._exact is not None:
+        x = robot._exact(x, u, robot.control_period)
+    else:
+        rhs = robot.adapter.rhs
+        for _ in range(robot.nstep):
+            x = rk4_step(rhs, x, u, robot.dt)
+    if not np.all(np.isfinite(x)):
+        raise SimulationDivergedError(f"{robot.spec.name}: the {what} model's state "
+                                      f"became non-finite at t={robot.time:.4f} s: {x}")
+    return np.asarray(x, float)
+
+
 class WheelGeometry:
     """Rolling rates of the wheels under a body twist (module docstring).
 
@@ -156,16 +177,7 @@ class KinematicRobot(Robot):
         x = self._x
         u = self.cmap.inputs(self.adapter, command, x[self._servo_states],
                              self.control_period, self._rate_limits)
-        if self._exact is not None:
-            x = self._exact(x, u, self.control_period)
-        else:
-            rhs = self.adapter.rhs
-            for _ in range(self.nstep):
-                x = rk4_step(rhs, x, u, self.dt)
-        if not np.all(np.isfinite(x)):
-            raise SimulationDivergedError(f"{self.spec.name}: the kinematic model's state "
-                                          f"became non-finite at t={self.time:.4f} s: {x}")
-        self._x = np.asarray(x, float)
+        self._x = hold(self, x, u, "kinematic")
         self._periods += 1
         return self._read(self._periods * self.control_period, u)
 
