@@ -113,3 +113,14 @@ def test_a_new_robot_runs_through_validate_report_and_render(tmp_path):
 def test_a_name_cannot_be_registered_twice():
     with pytest.raises(ValueError, match="robot 'disc' is already registered"):
         register(get_spec("disc"))
+
+
+def test_every_declared_open_target_names_a_scenario_and_a_judged_metric_target():
+    """A robot's ``open_targets`` names one of its scenarios (appended ones included), and
+    that scenario then carries the reasons (so the runner shows the metric open)."""
+    for spec in ROBOTS.values():
+        names = {s.name: s for s in spec.scenarios}
+        for scenario, reasons in spec.open_targets.items():
+            assert scenario in names, f"{spec.name}: open target of unknown {scenario!r}"
+            assert set(reasons) <= set(names[scenario].open_targets)
+            assert all(r for r in reasons.values()), "every open target gives its reason"

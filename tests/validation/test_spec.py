@@ -71,3 +71,13 @@ def test_clips_name_their_scenarios_and_files():
         dataclasses.replace(BASE, clips=(Clip("nope"),))
     with pytest.raises(ValueError, match=r"clip files repeat: \['disc.gif', 'disc.gif'\]"):
         dataclasses.replace(BASE, clips=(Clip(), Clip(BASE.scenarios[0].name)))
+
+
+def test_open_targets_of_the_spec_reach_scenarios_appended_later():
+    spec = get_spec("diffdrive")
+    extra = Scenario("diffdrive", "appended", (const(0.1), const(0.0)), duration=1.0)
+    opened = dataclasses.replace(spec, open_targets={"appended": {"worst position error": "x"}})
+    appended = dataclasses.replace(opened, scenarios=(*opened.scenarios, extra))
+    assert appended.scenario("appended").open_targets == {"worst position error": "x"}
+    assert opened.scenario(spec.scenarios[0].name).open_targets == \
+        spec.scenarios[0].open_targets

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
 from typing import Generic, TypeVar
@@ -103,6 +103,9 @@ class RobotSpec(Generic[P]):
         command_range: per kinematic input, the largest magnitude a user commands (the
             range of the random stepped inputs, :mod:`wmr_mujoco.bench.floor_runs`; None:
             the largest its kinematic scenarios command).
+        open_targets: scenario name -> (metric name -> reason): requirements the robot's
+            worst draws miss in scenarios it does not declare itself (the families every
+            drivable robot gets: random steps, closed loop), shown open with the reason.
         prepare: ``(members, params) -> None``, runs the given members of its measurement
             families at once (batched) before they are evaluated one by one, so that each
             ``evaluate`` finds its run ready (None: each member runs on its own; a member
@@ -132,8 +135,14 @@ class RobotSpec(Generic[P]):
     command: CommandMap | None = None
     command_range: tuple[float, ...] | None = None
     prepare: Callable[[Sequence[Scenario], P | None], None] | None = None
+    open_targets: Mapping[str, Mapping[str, str]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
+        if self.open_targets:  # also for scenarios appended later (dataclasses.replace)
+            object.__setattr__(self, "scenarios", tuple(
+                replace(s, open_targets={**s.open_targets, **self.open_targets[s.name]})
+                if s.name in self.open_targets and not set(self.open_targets[s.name])
+                <= set(s.open_targets) else s for s in self.scenarios))
         names = [s.name for s in self.scenarios]
         if len(set(names)) != len(names):
             raise ValueError(f"robot {self.name!r}: scenario names repeat: {names}")

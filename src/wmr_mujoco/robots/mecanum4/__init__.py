@@ -97,6 +97,13 @@ STEP_OPEN = {"worst position error": "the step model averages the roller contact
              "miss it (spread in the families table)"}
 
 
+#: At the floor pairs (issue 24: wheels on the floor) the ramped diagonals' worst draws
+#: over the wheels' start angle miss it too (the families table shows the spread).
+RAMP_OPEN = {"worst position error": "at the default floor pairs the ramped diagonals' "
+             "worst draws over the wheels' start angle miss it; the kinematic model leaves "
+             "the roller contact's phase out (spread in the families table)"}
+
+
 #: The stepped rotation's heading requirement is open over its family: its worst draws
 #: start near a roller hand-over (a start angle near a multiple of the roller pitch) at
 #: the higher yaw rates, which the step model's pitch-averaged contact leaves out.
@@ -110,7 +117,8 @@ def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
     return tuple(Scenario(NAME, f"translate {deg}° ({tag})",
                           twist_inputs(translation(deg), ramp), duration=TRANSLATE_DURATION,
                           family=KINEMATIC_FAMILY,
-                          open_targets=STEP_OPEN if not ramp and deg % 90 else {})
+                          open_targets=(STEP_OPEN if not ramp else RAMP_OPEN) if deg % 90
+                          else {})
                  for deg in DIRECTIONS_DEG)
 
 

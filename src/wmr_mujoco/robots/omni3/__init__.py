@@ -208,6 +208,16 @@ SCENARIOS = (
 COMMAND = RateCommand(("u", "v", "r"), ("m/s", "m/s", "rad/s"), wheels=WHEELS,
                       kinematics=lambda p: OmniKinematics(params_or_default(p, OmniParams)))
 
+#: The step families' hybrid-model requirements, checked at the collision-class contact
+#: they were derived for (tests/robots/omni3 pin them there), are open at the default
+#: floor pairs (issue 24: wheels on the floor): worst draws miss them (families table).
+STEP_OPEN_REASON = ("derived at the collision-class contact; at the default floor pairs "
+                    "the hybrid model's hand-overs drift from the physics' and the worst "
+                    "draws miss it (spread in the families table)")
+STEP_OPEN = {name: {"hybrid: worst position error": STEP_OPEN_REASON,
+                    "hybrid: worst heading error": STEP_OPEN_REASON}
+             for name in dynamics.STEP_TWISTS}
+
 SPEC = RobotSpec(
     name=NAME,
     description="three omni wheels at 120 degrees, each with two staggered rows of "
@@ -219,5 +229,5 @@ SPEC = RobotSpec(
     bench_scenario="translate+rotate", render_scenario="square with rotation",
     clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
     peer=peer.peer_comparison, command=COMMAND,
-    scene_extras=builder.floor_pairs, prepare=families.prepare,
+    scene_extras=builder.floor_pairs, prepare=families.prepare, open_targets=STEP_OPEN,
 )

@@ -109,7 +109,12 @@ TARGETS: Mapping[str, Target] = req.vehicle_targets(0.5)
 #: the kinematic model leaves out.
 SHARP_TURN_OPEN = {"worst position error": "the family's fastest, tightest draws miss it; "
                    "their lateral slip is several times the gentler turns' (spread in the "
-                   "families table), which the kinematic model leaves out"}
+                   "families table), which the kinematic model leaves out",
+                   **{f"lateral slip RMS, {w}": "the floor pairs' friction is viscous "
+                      "(damping 1/Δt, docs/floor-contact.md): the wheels creep sideways in "
+                      "proportion to the cornering force, which the fastest, tightest draws "
+                      "raise past the bound" for w in ("rear_left_wheel", "rear_right_wheel",
+                                                        "front_wheel")}}
 
 SCENARIOS = (
     # The driven wheel is the inner one in left turns: speed first, then steering, so
