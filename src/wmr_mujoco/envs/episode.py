@@ -157,8 +157,7 @@ class Episode:
         task = self.task
         self.state = state = self.robot.step(self.command(a))
         self.last_action = a
-        terms = task.reward_terms(prev, state, a, self.dt)
-        success, failure = task.outcome(state)
+        terms, success, failure = task.evaluate(prev, state, a, self.dt)
         time = state.time.item()
         truncated = not (success or failure) and time >= task.time_limit - 1e-9
         if truncated:

@@ -179,11 +179,10 @@ class MujocoState(RobotState):
         if raw is None or name not in _LAZY:
             raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
         reader, time, pose_twist, qpos, pairs = raw
-        if name == "time":
-            fields["time"] = np.array(time)
-        elif name in ("pose", "twist"):
+        if name in ("time", "pose", "twist"):  # read together (an environment's step does)
             both = np.array(pose_twist)  # one array, two views
             fields["pose"], fields["twist"] = both[:3], both[3:]
+            fields["time"] = np.array(time)
         elif name == "steer_angles":
             fields[name] = qpos[reader.steer_qpos] if reader.nsteer else _EMPTY
         else:

@@ -44,7 +44,10 @@ EFFORT = 0.01
 
 def effort(action: Sequence[float]) -> float:
     """``−EFFORT mean(a²)`` of a normalised action (floats, or an array)."""
-    return -EFFORT * float(sum([a * a for a in action])) / len(action)
+    total = 0.0
+    for a in action:
+        total += a * a
+    return -EFFORT * float(total) / len(action)
 
 
 def wrap(angle: float) -> float:
@@ -108,6 +111,15 @@ class Task(ABC):
     @abstractmethod
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """``(success, failure)`` now: either ends the episode (terminated)."""
+
+    def evaluate(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                 ) -> tuple[dict[str, float], bool, bool]:
+        """``(reward_terms(...), *outcome(state))`` of one step, in one call.
+
+        A task may override it to share the work of both (the environments' hot path);
+        the result must equal the two calls'.
+        """
+        return (self.reward_terms(prev, state, action, dt), *self.outcome(state))
 
     def succeeded_at_time_limit(self, state: Any) -> bool:
         """Whether an episode that runs to its time limit counts as a success (default no)."""

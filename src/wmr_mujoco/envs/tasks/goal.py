@@ -50,7 +50,18 @@ class GoToGoal(Task):
         self.options = o
         self.time_limit = o["time_limit"]
         self.goal = np.zeros(3)
-        self._cache: tuple[Any, tuple[float, float]] | None = None
+
+    @property
+    def goal(self) -> np.ndarray:
+        """The goal pose ``(x_g, y_g, ψ_g)``, m, m, rad."""
+        return self._goal_array
+
+    @goal.setter
+    def goal(self, pose: np.ndarray) -> None:
+        self._goal_array = np.asarray(pose, float)
+        self._goal = self._goal_array.tolist()
+        #: ``(state, measure)`` of the last state measured, then of the one before.
+        self._cache: tuple[Any, Any, Any, Any] = (None, None, None, None)
 
     def sample(self, rng: np.random.Generator) -> np.ndarray:
         """Goal ahead within ±120°, its heading within ±60° of the bearing (docstring)."""
@@ -60,22 +71,26 @@ class GoToGoal(Task):
         d = rng.uniform(o["min_distance"], o["max_distance"])
         self.goal = np.array([d * math.cos(bearing), d * math.sin(bearing),
                               wrap(bearing + rng.uniform(-math.pi / 3, math.pi / 3))])
-        self._cache = None
         return np.array([0.0, 0.0, heading])
 
     def measure(self, state: Any) -> tuple[float, float, float, float]:
         """``(x_g, y_g, d, e_ψ)``: body-frame goal, m, distance, m, heading error, rad.
 
-        Computed once per state (the last one is kept).
+        Computed once per state: the last two are kept (a step reads the previous state
+        and the new one).
         """
-        if self._cache is not None and self._cache[0] is state:
-            return self._cache[1]
+        cache = self._cache
+        if cache[0] is state:
+            return cache[1]
+        if cache[2] is state:
+            return cache[3]
         x, y, psi = state.pose.tolist()
-        gx, gy, gpsi = self.goal.tolist()
+        gx, gy, gpsi = self._goal
         dx, dy = gx - x, gy - y
         c, s = math.cos(psi), math.sin(psi)
-        out = c * dx + s * dy, c * dy - s * dx, math.hypot(dx, dy), wrap(gpsi - psi)
-        self._cache = (state, out)
+        e = math.remainder(gpsi - psi, math.tau)  # wrap() on a float, inlined
+        out = c * dx + s * dy, c * dy - s * dx, math.hypot(dx, dy), math.pi if e == -math.pi else e
+        self._cache = (state, out, cache[0], cache[1])
         return out
 
     def errors(self, state: Any) -> tuple[float, float]:
@@ -90,15 +105,7 @@ class GoToGoal(Task):
     def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
                      ) -> dict[str, float]:
         """Progress, heading, effort, success and failure terms (docstring)."""
-        _, _, d0, e0 = self.measure(prev)
-        _, _, d, e = self.measure(state)
-        o, scale = self.options, self.scale
-        # Φ_ψ(s′) − Φ_ψ(s) with Φ_ψ = −½ (|e_ψ| / π) e^{−d/L}
-        heading = 0.5 / math.pi * (abs(e0) * math.exp(-d0 / scale) - abs(e) * math.exp(-d / scale))
-        success = d < o["position_tolerance"] and abs(e) < o["heading_tolerance"]
-        return {"progress": (d0 - d) / scale, "heading": heading, "effort": effort(action),
-                "success": BONUS if success else 0.0,
-                "failure": -BONUS if d > o["arena"] else 0.0}
+        return self.evaluate(prev, state, action, dt)[0]
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """Success inside both tolerances; failure outside the arena."""
@@ -106,3 +113,17 @@ class GoToGoal(Task):
         o = self.options
         return (d < o["position_tolerance"] and abs(e) < o["heading_tolerance"],
                 d > o["arena"])
+
+    def evaluate(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                 ) -> tuple[dict[str, float], bool, bool]:
+        """The reward terms and the outcome, from one measurement of each state."""
+        _, _, d0, e0 = self.measure(prev)
+        _, _, d, e = self.measure(state)
+        o, scale = self.options, self.scale
+        # Φ_ψ(s′) − Φ_ψ(s) with Φ_ψ = −½ (|e_ψ| / π) e^{−d/L}
+        heading = 0.5 / math.pi * (abs(e0) * math.exp(-d0 / scale) - abs(e) * math.exp(-d / scale))
+        success = d < o["position_tolerance"] and abs(e) < o["heading_tolerance"]
+        failure = d > o["arena"]
+        return ({"progress": (d0 - d) / scale, "heading": heading, "effort": effort(action),
+                 "success": BONUS if success else 0.0, "failure": -BONUS if failure else 0.0},
+                success, failure)
