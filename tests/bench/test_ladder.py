@@ -25,8 +25,12 @@ def test_dynamic_errors_are_the_worst_distance_over_the_reference_path():
     assert errors["torques"] == (0.0, 0.0)
     assert errors["coast"][1] == pytest.approx(3.0)
     assert ladder.dynamic_errors(ref, ref, 0.15) == dict.fromkeys(ladder.GROUPS, (0.0, 0.0))
+    # The same run on another timestep (half the samples) is interpolated: a straight line
+    # at constant speed is linear in time, so it lands on the reference exactly.
+    assert ladder.dynamic_errors({**ref, "step a": _line(len(ref["step a"]) // 2 + 1)},
+                                 ref, 0.15)["step commands"] == pytest.approx((0.0, 0.0))
     with pytest.raises(ValueError, match="step a"):
-        ladder.dynamic_errors({**ref, "step a": _line(50)}, ref, 0.15)
+        ladder.dynamic_errors({**ref, "step a": _line()[:, :2]}, ref, 0.15)
 
 
 def test_the_reduced_rung_measured_on_one_run_per_group():

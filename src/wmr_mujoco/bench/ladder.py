@@ -1,8 +1,7 @@
 """omni3's fidelity ladder: each rung's cost, and its errors on the same scenarios.
 
-``python -m wmr_mujoco.bench.ladder [--quick] [--no-write]`` measures, in one run, every
-rung of :data:`RUNGS` (the full roller model ``omni3``, the registry's reduced variants,
-and the reduced rung's design alternatives) and pastes the table into ``docs/ladder.md``:
+``python -m wmr_mujoco.bench.ladder [--quick] [--no-write]`` measures every rung of
+:data:`RUNGS` in one run and pastes the table into ``docs/ladder.md``:
 
 * **cost**: degrees of freedom (``nv``), floor contacts per step (mean over the bench
   scenario), steps per second of C MuJoCo on one thread (``mujoco.rollout``, median of
@@ -284,10 +283,10 @@ def dynamic_errors(poses: dict[str, np.ndarray], reference: dict[str, np.ndarray
     ``poses`` against ``reference``, worst over the group's runs. A run's errors are
     ``max_k |p_k − p*_k| / path*`` and ``max_k |ψ_k − ψ*_k|``, ``path*``
     :func:`~wmr_mujoco.robots.omni3.dynamics.path_length` of the reference with lever
-    ``distance``.
+    ``distance``; a rung on another timestep is interpolated onto the reference's instants.
 
     Raises:
-        ValueError: runs of different lengths.
+        ValueError: runs of other pose columns.
     """
     from wmr_mujoco.robots.omni3.dynamics import path_length
 
@@ -298,8 +297,11 @@ def dynamic_errors(poses: dict[str, np.ndarray], reference: dict[str, np.ndarray
             if not name.startswith(prefix):
                 continue
             got = poses[name]
-            if got.shape != ref.shape:
+            if got.ndim != 2 or got.shape[1] != ref.shape[1] or len(got) < 2:
                 raise ValueError(f"{name}: poses {got.shape} against {ref.shape}")
+            if len(got) != len(ref):  # the same duration on another timestep
+                at, of = np.linspace(0, 1, len(ref)), np.linspace(0, 1, len(got))
+                got = np.column_stack([np.interp(at, of, col) for col in got.T])
             pos = 100 * float(np.max(np.linalg.norm(got[:, :2] - ref[:, :2], axis=1))
                               ) / path_length(ref, distance)
             head = math.degrees(float(np.max(np.abs(got[:, 2] - ref[:, 2]))))
