@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from wmr_mujoco.batch.simulate import simulate_batch
+from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.validation.metrics import CENTRE_DRIFT_M, MIN_PATH, POSITION_PCT
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
@@ -86,19 +87,24 @@ def draws(robot: str, members: int, seed: int) -> list[list[Callable[[float], fl
 
 
 def parity(robot: str, members: int = 3, duration: float = 1.0, seed: int = 0,
-           **warp_options: object) -> Parity:
+           params: RobotParams | None = None, **warp_options: object) -> Parity:
     """Run the draws through ``"rollout"`` and ``"warp"``; the worst member's difference.
+
+    ``params``: the robot built from these parameters on both backends (None: defaults).
 
     Raises:
         ValueError: as :func:`~wmr_mujoco.batch.simulate_batch`; a robot without a
             position target.
+        SimulationDivergedError: a backend diverged.
     """
     targets = get_spec(robot).targets
     if POSITION_PCT not in targets:
         raise ValueError(f"robot {robot!r} has no {POSITION_PCT!r} target to judge parity by")
     inputs = draws(robot, members, seed)
-    ref = simulate_batch(robot, inputs, duration, backend="rollout").pose[:, :, :2]
-    got = simulate_batch(robot, inputs, duration, backend="warp", **warp_options).pose[:, :, :2]
+    ref = simulate_batch(robot, inputs, duration, backend="rollout", params=params
+                         ).pose[:, :, :2]
+    got = simulate_batch(robot, inputs, duration, backend="warp", params=params,
+                         **warp_options).pose[:, :, :2]
     err = np.linalg.norm(got - ref, axis=2).max(axis=1)
     path = np.linalg.norm(np.diff(ref, axis=1), axis=2).sum(axis=1)
     pct_tol = SHARE * targets[POSITION_PCT].value
