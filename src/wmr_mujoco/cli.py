@@ -101,12 +101,13 @@ def _cmd_demo(args: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
-    from wmr_mujoco.family_cli import draws_of
+    from wmr_mujoco.family_cli import draws_of, jobs_of
     from wmr_mujoco.lookup import validation_jobs
     from wmr_mujoco.progress import bar, shown
     from wmr_mujoco.robots import ROBOTS
     from wmr_mujoco.validation.family_report import slowest, spread_text
     from wmr_mujoco.validation.members import run_families
+    from wmr_mujoco.validation.pool import time_hints
     from wmr_mujoco.validation.report import (
         check_report_folder,
         summary_line,
@@ -129,7 +130,8 @@ def _cmd_validate(args: argparse.Namespace) -> int:
         progress_bar.write(msg, file=sys.stderr)
 
     try:
-        results = run_families(work, progress=progress, seed=args.seed, draws=draws_of(args))
+        results = run_families(work, progress=progress, seed=args.seed, draws=draws_of(args),
+                               jobs=jobs_of(args), hints=time_hints(args.out))
     finally:
         progress_bar.close()
     print(text_table(results, judged_only=not args.all_metrics))

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import time
 import traceback
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 import mujoco
 import numpy as np
@@ -26,6 +26,7 @@ from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.sim.engine import STATE_SPEC, simulate_starts
 from wmr_mujoco.validation.family import DEFAULT_SEED, check_draws, check_seed, describe
 from wmr_mujoco.validation.metrics import Trace
+from wmr_mujoco.validation.pool import can_fork, check_jobs, run_pooled
 from wmr_mujoco.validation.runner import (
     Job,
     Prepared,
@@ -129,22 +130,29 @@ def run_batched(spec: RobotSpec, members: list[Scenario],
 
 def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = None,
                  on_result: Callable[[ScenarioResult], None] | None = None,
-                 seed: int = DEFAULT_SEED, draws: int | None = None
-                 ) -> list[ScenarioResult]:
-    """Run every scenario's family, one after the other; a failure does not stop the others.
+                 seed: int = DEFAULT_SEED, draws: int | None = None, jobs: int = 1,
+                 hints: Mapping[str, float] | None = None) -> list[ScenarioResult]:
+    """Run every scenario's family; a failure does not stop the others.
 
     ``seed`` draws the members (:meth:`Family.sample`), ``draws`` overrides every
-    family's number of draws (None: the declared ones). ``progress`` gets one line
-    ``"[k/n] robot/scenario"`` as the k-th result is there (numbered by completion),
-    besides the tracebacks of failed runs; ``on_result`` sees each result as soon as it
-    is there.
+    family's number of draws (None: the declared ones). ``jobs`` > 1 runs the families
+    in that many worker processes (:func:`wmr_mujoco.validation.pool.run_pooled`; one
+    process where forking is not available), with the same results in the same order;
+    ``hints`` (scenario key -> seconds of an earlier run) hands the longest out first.
+    ``progress`` gets one line ``"[k/n] robot/scenario"`` as the k-th result is there
+    (numbered by completion), besides the tracebacks of failed runs; ``on_result`` sees
+    each result as soon as it is there. Each result's ``seconds`` is its family's wall
+    time.
 
     Raises:
-        ValueError: a bad ``seed`` or ``draws``, before anything runs.
+        ValueError: a bad ``seed``, ``draws`` or ``jobs``, before anything runs.
     """
     check_seed(seed)  # a bad seed or draw count fails before any work
     if draws is not None:
         check_draws(draws)
+    check_jobs(jobs)
+    if jobs > 1 and len(work) > 1 and can_fork():
+        return run_pooled(work, jobs, seed, draws, progress, on_result, hints)
     results = []
     for spec, s in work:
         start = time.perf_counter()

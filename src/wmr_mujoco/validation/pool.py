@@ -1,0 +1,182 @@
+"""Scenario families over a process pool: ``wmr validate --jobs N``.
+
+The families of a validation are independent: each loads its own model, draws its own
+members from ``(seed, scenario key)`` and runs them (:func:`~wmr_mujoco.validation.members.
+run_family`). :func:`run_pooled` hands them to ``N`` worker processes, each running whole
+families one after the other, and puts the results back in the declared order, so that
+everything printed and written after the run is what one process gives (the same
+figures, bit for bit: a family's result does not depend on which process ran it or what
+ran before it there). What comes back in completion order is only the progress line
+``"[k/n] robot/scenario"`` (numbered by completion, as in one process) and ``on_result``.
+
+The workers are forked from the command's process, so that they share its registry
+entries (scenarios carry their robots' code, which need not pickle); a result comes back
+without its scenarios (:class:`Detached`), which the parent puts back from its own. Where
+``fork`` is not available (Windows), or for one job, the families run in this process.
+
+Interrupts: the workers ignore Ctrl-C and die of SIGTERM; the command's process gets
+both, and on its way out terminates the pool (:func:`run_pooled`'s ``finally``). Workers
+write nothing, so an interrupted run leaves nothing behind (the report is written by the
+command's process, atomically, after every family is done).
+
+Order of hand-out: the longest families first where an earlier run's per-family times
+are known (``hints``, from the report already in the output folder), families without
+a time before them in declared order; this only shortens the run's tail.
+"""
+
+from __future__ import annotations
+
+import json
+import multiprocessing
+import os
+import signal
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from wmr_mujoco.validation.metrics import Trace
+from wmr_mujoco.validation.runner import Job, ScenarioResult
+from wmr_mujoco.validation.scenarios import Scenario
+from wmr_mujoco.validation.targets import Row
+
+#: Most worker processes ``--jobs`` may ask for (a typed number may not exhaust memory).
+MAX_JOBS = 64
+
+
+def usable_cores() -> int:
+    """Cores this process may run on (``os.sched_getaffinity``; ``os.cpu_count`` elsewhere)."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):
+        return max(1, os.cpu_count() or 1)
+
+
+def check_jobs(jobs: object) -> int:
+    """``jobs`` as an int, if it is an integer in ``1..MAX_JOBS``.
+
+    Raises:
+        ValueError: anything else (a bool, a float, zero, a negative number).
+    """
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or not 1 <= jobs <= MAX_JOBS:
+        raise ValueError(f"jobs = {jobs!r}; must be an integer in 1..{MAX_JOBS}")
+    return jobs
+
+
+def can_fork() -> bool:
+    """Whether worker processes can be forked here."""
+    return "fork" in multiprocessing.get_all_start_methods()
+
+
+@dataclass(frozen=True)
+class Detached:
+    """A :class:`ScenarioResult` without its scenarios (what pickles across processes).
+
+    ``draw``: the member's draw (None: the result of the scenario itself).
+    """
+
+    draw: Mapping[str, float] | None
+    rows: list[Row]
+    trace: Trace
+    error: str | None
+    members: tuple[Detached, ...]
+    seed: int | None
+    seconds: float | None
+
+
+def detach(result: ScenarioResult, member: bool = False) -> Detached:
+    """``result`` without its scenario objects (``member``: keep the member's draw)."""
+    return Detached(dict(result.scenario.draw) if member else None, result.rows,
+                    result.trace, result.error,
+                    tuple(detach(m, True) for m in result.members), result.seed,
+                    result.seconds)
+
+
+def attach(detached: Detached, scenario: Scenario) -> ScenarioResult:
+    """The result of ``scenario`` (its members from ``scenario.member(draw)``)."""
+    members = [attach(m, scenario.member(m.draw or {})) for m in detached.members]
+    return ScenarioResult(scenario, detached.rows, detached.trace, detached.error, members,
+                          detached.seed, detached.seconds)
+
+
+def time_hints(folder: Path) -> dict[str, float]:
+    """Per scenario key, its family's seconds in the report in ``folder`` (empty: none)."""
+    try:
+        records = json.loads((Path(folder) / "validation.json").read_text())["scenarios"]
+        return {f"{r['robot']}/{r['scenario']}": float(r["seconds"]) for r in records
+                if isinstance(r, dict) and isinstance(r.get("seconds"), (int, float))}
+    except (OSError, ValueError, KeyError, TypeError):
+        return {}
+
+
+def hand_out_order(work: Sequence[Job], hints: Mapping[str, float] | None) -> list[int]:
+    """Indices of ``work``: those without a hint in declared order, then longest first."""
+    hints = hints or {}
+    unknown = [i for i, (_, s) in enumerate(work) if s.key not in hints]
+    known = sorted((i for i, (_, s) in enumerate(work) if s.key in hints),
+                   key=lambda i: (-hints[work[i][1].key], i))
+    return unknown + known
+
+
+#: What the forked workers run: the jobs, the seed and the draw count (set before forking).
+_SHARED: dict[str, object] = {}
+
+
+def _init_worker() -> None:
+    """Workers leave Ctrl-C to the command's process and die of SIGTERM."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+def _run_one(i: int) -> tuple[int, Detached, list[str]]:
+    """Family ``i`` of the shared jobs, timed; its progress notes (tracebacks) kept."""
+    from wmr_mujoco.validation.members import run_family
+
+    spec, s = _SHARED["work"][i]  # type: ignore[index]
+    notes: list[str] = []
+    start = time.perf_counter()
+    result = run_family(spec, s, _SHARED["seed"], _SHARED["draws"],  # type: ignore[arg-type]
+                        notes.append)
+    result.seconds = time.perf_counter() - start
+    return i, detach(result), notes
+
+
+def run_pooled(work: Sequence[Job], jobs: int, seed: int, draws: int | None,
+               progress: Callable[[str], None] | None = None,
+               on_result: Callable[[ScenarioResult], None] | None = None,
+               hints: Mapping[str, float] | None = None) -> list[ScenarioResult]:
+    """Every family of ``work`` in ``jobs`` forked processes; results in declared order.
+
+    ``progress`` gets each family's notes and then ``"[k/n] robot/scenario"`` as the
+    k-th result is back; ``on_result`` sees each result as it is back. ``seed`` and
+    ``draws`` as :func:`~wmr_mujoco.validation.members.run_families` (checked there).
+
+    Raises:
+        ValueError: a bad ``jobs``; or ``fork`` is not available here.
+    """
+    check_jobs(jobs)
+    if not can_fork():
+        raise ValueError("worker processes need the 'fork' start method, which this "
+                         "platform lacks; use jobs=1")
+    results: list[ScenarioResult | None] = [None] * len(work)
+    _SHARED.update(work=list(work), seed=seed, draws=draws)
+    pool = multiprocessing.get_context("fork").Pool(min(jobs, len(work)), _init_worker)
+    try:
+        order = hand_out_order(work, hints)
+        for done, (i, detached, notes) in enumerate(
+                pool.imap_unordered(_run_one, order, chunksize=1), 1):
+            result = attach(detached, work[i][1])
+            results[i] = result
+            if progress:
+                for note in notes:
+                    progress(note)
+                progress(f"[{done}/{len(work)}] {result.scenario.key}")
+            if on_result:
+                on_result(result)
+        pool.close()
+    finally:
+        pool.terminate()
+        pool.join()
+        _SHARED.clear()
+    assert all(r is not None for r in results)
+    return results  # type: ignore[return-value]

@@ -1,0 +1,109 @@
+"""Families over a process pool: the same results, in the same order, as one process."""
+
+import json
+
+import numpy as np
+import pytest
+
+from wmr_mujoco.cli import main
+from wmr_mujoco.lookup import validation_jobs
+from wmr_mujoco.validation import pool
+from wmr_mujoco.validation.members import run_families
+from wmr_mujoco.validation.pool import attach, check_jobs, detach, hand_out_order
+
+needs_fork = pytest.mark.skipif(not pool.can_fork(), reason="no 'fork' start method here")
+
+
+def _same(a, b):
+    """Rows, errors, seeds and traces equal; members likewise (recursively)."""
+    assert a.scenario == b.scenario
+    assert a.rows == b.rows and a.error == b.error and a.seed == b.seed
+    for name, x in a.trace.arrays().items():
+        np.testing.assert_array_equal(x, b.trace.arrays()[name], err_msg=name)
+    assert len(a.members) == len(b.members)
+    for m, n in zip(a.members, b.members, strict=True):
+        _same(m, n)
+
+
+@needs_fork
+def test_two_jobs_give_the_results_of_one_in_declared_order():
+    """single_steer's families (2 draws each): bit-identical across process counts.
+
+    Exact equality, no tolerance: a family's draws, model and run do not depend on the
+    process that runs it, and the worker sends back the very floats it computed.
+    """
+    work = validation_jobs(["single_steer"])
+    seen_one, seen_two = [], []
+    one = run_families(work, draws=2, jobs=1, on_result=seen_one.append)
+    lines = []
+    two = run_families(work, draws=2, jobs=2, on_result=seen_two.append,
+                       progress=lines.append)
+    assert [r.scenario.key for r in two] == [s.key for _, s in work]
+    for a, b in zip(one, two, strict=True):
+        _same(a, b)
+        assert b.seconds is not None and b.seconds > 0
+    assert sorted(r.scenario.key for r in seen_two) == sorted(s.key for _, s in work)
+    # one progress line per family, numbered by completion
+    numbered = [line.split("] ")[0] for line in lines if line.startswith("[")]
+    assert numbered == [f"[{k}/{len(work)}" for k in range(1, len(work) + 1)]
+
+
+def test_detach_and_attach_give_back_the_result():
+    work = validation_jobs(["single_steer"])
+    spec, s = work[0]
+    (res,) = run_families([(spec, s)], draws=2, jobs=1)
+    back = attach(detach(res), s)
+    _same(res, back)
+    assert [m.scenario.draw for m in back.members] == [m.scenario.draw for m in res.members]
+
+
+def test_hand_out_order_puts_unknown_first_then_longest():
+    work = validation_jobs(["single_steer"])
+    keys = [s.key for _, s in work]
+    assert hand_out_order(work, None) == list(range(len(work)))
+    hints = {keys[0]: 1.0, keys[1]: 5.0}
+    assert hand_out_order(work, hints) == [*range(2, len(work)), 1, 0]
+
+
+def test_time_hints_read_an_earlier_report(tmp_path):
+    assert pool.time_hints(tmp_path) == {}
+    (tmp_path / "validation.json").write_text(json.dumps({"scenarios": [
+        {"robot": "a", "scenario": "b", "seconds": 2.5},
+        {"robot": "a", "scenario": "c", "seconds": None}]}))
+    assert pool.time_hints(tmp_path) == {"a/b": 2.5}
+    (tmp_path / "validation.json").write_text("not json")
+    assert pool.time_hints(tmp_path) == {}
+
+
+@pytest.mark.parametrize("bad", [0, -1, True, 1.5, "2", pool.MAX_JOBS + 1])
+def test_a_bad_job_count_is_refused(bad):
+    with pytest.raises(ValueError, match="jobs"):
+        check_jobs(bad)
+    with pytest.raises(ValueError, match="jobs"):
+        run_families(validation_jobs(["single_steer"]), jobs=bad)
+
+
+@pytest.mark.parametrize("text", ["0", "-2", "x", str(pool.MAX_JOBS + 1)])
+def test_a_bad_jobs_option_is_exit_2_before_any_work(tmp_path, capsys, text):
+    out = tmp_path / "r"
+    with pytest.raises(SystemExit) as exit_:
+        main(["validate", "single_steer", "--out", str(out), "--jobs", text])
+    assert exit_.value.code == 2
+    assert "--jobs" in capsys.readouterr().err
+    assert not out.exists()
+
+
+def test_jobs_reach_the_runner_default_the_usable_cores(tmp_path, monkeypatch):
+    from wmr_mujoco.validation import members
+
+    seen = []
+
+    def fake(work, **kwargs):
+        seen.append(kwargs["jobs"])
+        raise KeyboardInterrupt  # stop before any work
+
+    monkeypatch.setattr(members, "run_families", fake)
+    out = str(tmp_path / "r")
+    assert main(["validate", "single_steer", "--out", out, "-q"]) == 130
+    assert main(["validate", "single_steer", "--out", out, "-q", "--jobs", "3"]) == 130
+    assert seen == [min(pool.usable_cores(), pool.MAX_JOBS), 3]
