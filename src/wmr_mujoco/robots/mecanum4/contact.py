@@ -162,6 +162,49 @@ def constraint_rows(geometry: RollerGeometry, positions: np.ndarray, signs: np.n
     return g / rim[:, None]
 
 
+#: Samples of :func:`mean_twist` evaluated together (bounds its memory: a wheel turning
+#: far slower than the others asks for many samples, taken this many at a time).
+CHUNK = 4096
+
+
+def contact_arrays(geometry: RollerGeometry, phase: np.ndarray, sign: np.ndarray
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`contact` at many phases at once: ``(Q, u)``, each ``phase.shape + (3,)``.
+
+    ``sign`` broadcasts against ``phase`` (one wheel's sign per column). The same
+    formulas as :func:`contact`, elementwise.
+    """
+    g = geometry
+    c = math.cos(g.roller_angle)
+    s = np.copysign(math.sin(g.roller_angle), sign) * np.ones_like(phase)
+    d = g.radius - g.half_width
+    uz = -c * np.sin(phase)
+    u = np.stack([c * np.cos(phase), s, uz], axis=-1)
+    if g.semi_axis is None:
+        return np.stack([np.zeros_like(phase), s * d * np.tan(phase) / c,
+                         np.full_like(phase, -g.radius)], axis=-1), u
+    b2, k = g.half_width ** 2, g.semi_axis ** 2 - g.half_width ** 2
+    norm = np.sqrt(b2 + k * uz ** 2)
+    lowest = np.stack([-d * np.sin(phase) - k * uz * u[..., 0] / norm,
+                       -k * uz * u[..., 1] / norm,
+                       -d * np.cos(phase) - (b2 + k * uz * uz) / norm], axis=-1)
+    return lowest, u
+
+
+def slip_rows_at(geometry: RollerGeometry, positions: np.ndarray, signs: np.ndarray,
+                 wheel_angles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`slip_rows` at many sets of wheel angles at once.
+
+    ``wheel_angles`` (k, n) gives ``G`` (k, n, 3) and ``D`` (k, n).
+    """
+    q, u = contact_arrays(geometry, roller_phase(geometry, wheel_angles), signs[None, :])
+    e = u[..., :2] / np.hypot(u[..., 0], u[..., 1])[..., None]
+    x = positions[None, :, 0] + q[..., 0]
+    y = positions[None, :, 1] + q[..., 1]
+    g = np.stack([e[..., 0], e[..., 1], x * e[..., 1] - y * e[..., 0]], axis=-1)
+    return g, -q[..., 2] * e[..., 0]
+
+
 def mean_twist(geometry: RollerGeometry, positions: np.ndarray, signs: np.ndarray,
                rates: np.ndarray, samples: int = 128) -> np.ndarray:
     """Mean of ``G(φ(t))⁺ D(φ(t)) θ̇`` with ``θ_i = θ̇_i t`` from the rest phase 0.
@@ -172,6 +215,10 @@ def mean_twist(geometry: RollerGeometry, positions: np.ndarray, signs: np.ndarra
     the limit when every turning wheel's rate is a whole multiple of the slowest one's
     (true of ``mecanum4``'s runs: equal rates, or 1 : 3 for its translate+rotate).
 
+    The samples are evaluated together, :data:`CHUNK` at a time (:func:`slip_rows_at`;
+    each sample's least squares by the pseudo-inverse of its 4×3 ``G``): the sampled
+    twists of :func:`slip_rows` and ``lstsq`` one by one, to round-off.
+
     Raises:
         ValueError: no wheel turns, or ``samples`` below 8.
     """
@@ -181,10 +228,13 @@ def mean_twist(geometry: RollerGeometry, positions: np.ndarray, signs: np.ndarra
     turning = np.abs(w[np.abs(w) > 1e-12])
     if turning.size == 0:
         raise ValueError(f"rates = {w}: no wheel turns")
+    pos = as_array("positions", positions, (w.size, 2))
+    sg = as_array("signs", signs, (w.size,))
     period = geometry.pitch / float(np.min(turning))
     count = int(samples * math.ceil(float(np.max(turning) / np.min(turning))))
-    twists = []
-    for t in (np.arange(count) + 0.5) * period / count:
-        g, rim = slip_rows(geometry, positions, signs, w * t)
-        twists.append(np.linalg.lstsq(g, rim * w, rcond=None)[0])
-    return np.mean(twists, axis=0)
+    total = np.zeros(3)
+    for start in range(0, count, CHUNK):
+        t = (np.arange(start, min(count, start + CHUNK)) + 0.5) * period / count
+        g, rim = slip_rows_at(geometry, pos, sg, w[None, :] * t[:, None])
+        total += np.einsum("kij,kj->i", np.linalg.pinv(g), rim * w[None, :])
+    return total / count
