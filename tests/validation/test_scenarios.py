@@ -107,3 +107,25 @@ def test_free_run_films_one_uncontrolled_run_from_its_start_state():
 def test_bad_times_are_refused(field, value):
     with pytest.raises(ValueError, match=f"disc/a: {field} = "):
         Scenario("disc", "a", (const(1.0),), **{field: value})
+
+
+@pytest.mark.parametrize(("robot", "name"), [("omni3", "square with rotation"),
+                                             ("diffdrive", "figure eight"),
+                                             ("disc", "torque")])
+def test_inputs_on_the_grid_are_input_at_bit_for_bit(robot, name):
+    """The schedule's inputs at once are the floats of ``input_at`` one time at a time.
+
+    Exact equality: the same signal calls at the same times, the draw's factors and the
+    lead-in envelope multiplied in the same order (members with drawn lead-ins and
+    scales, and the nominal run).
+    """
+    import numpy as np
+
+    from wmr_mujoco.robots import get_spec
+
+    s = get_spec(robot).scenario(name)
+    dt, n = 0.002, 700
+    for m in [s, *s.members(0, 4)]:
+        want = np.array([m.input_at(k * dt) for k in range(n)])
+        np.testing.assert_array_equal(m.inputs_on(n, dt), want)
+    assert robot != "disc" or all(m.draw["lead-in"] > 0 for m in s.members(0, 4))

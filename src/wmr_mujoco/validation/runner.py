@@ -180,14 +180,13 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     """
     x = np.asarray(x0, float)
     step = getattr(adapter, "exact_step", None)  # where the adapter has one
-    inputs, controls, states = [], [], [x]
-    for k in range(nstep):
-        u = s.input_at(k * dt)
-        inputs.append(u)
+    inputs = s.inputs_on(nstep, dt)  # u(k Δt), the floats of s.input_at(k Δt)
+    controls, states = [], [x]
+    for u in inputs:
         controls.append(adapter.controls(u, x))
         x = step(x, u, dt) if step is not None else rk4_step(adapter.rhs, x, u, dt)
         states.append(x)
-    return np.asarray(inputs), np.asarray(controls), np.asarray(states)
+    return inputs, np.asarray(controls), np.asarray(states)
 
 
 def check_runnable(spec: RobotSpec, s: Scenario) -> None:
@@ -256,8 +255,9 @@ def prepare(spec: RobotSpec, s: Scenario, params: RobotParams | None = None,
     if phase:
         add_wheel_phase(model, data, adapter.wheel_joints, phase)
     dt = model.opt.timestep
-    for _ in range(round(s.settle / dt)):
-        mujoco.mj_step(model, data)
+    nsettle = round(s.settle / dt)
+    if nsettle:
+        mujoco.mj_step(model, data, nsettle)  # the same steps as one by one
     check_healthy(model, data)
     nstep = round(s.duration / dt)
     inputs, controls, analytic = schedule(s, adapter, adapter.sim_state(model, data), dt, nstep)

@@ -27,7 +27,13 @@ from wmr_mujoco.choices import parse_choice
 from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Metric, Series
 from wmr_mujoco.validation.signals import Signal
-from wmr_mujoco.validation.variations import DURATION, envelope, is_generic, scale_factors
+from wmr_mujoco.validation.variations import (
+    DURATION,
+    LEAD_IN,
+    envelope,
+    is_generic,
+    scale_factors,
+)
 
 if TYPE_CHECKING:
     import mujoco
@@ -227,3 +233,22 @@ class Scenario:
         if not self.draw:
             return u
         return envelope(self.draw, t) * scale_factors(self.draw, len(u)) * u
+
+    def inputs_on(self, nstep: int, dt: float) -> np.ndarray:
+        """(nstep, m) rows :meth:`input_at` ``(k dt)``, ``k = 0 .. nstep − 1``: the same floats.
+
+        The signals are evaluated at each time as there; the draw's factors once, and
+        the lead-in envelope ``min(1, max(0, t / T))`` elementwise, multiplied in the
+        same order.
+        """
+        times = [k * dt for k in range(nstep)]
+        u = np.array([[s(t) for s in self.inputs] for t in times], float)
+        u = u.reshape(nstep, len(self.inputs))
+        if not self.draw:
+            return u
+        ramp = self.draw.get(LEAD_IN)
+        if ramp is None or ramp <= 0.0:
+            env = np.ones(nstep)
+        else:
+            env = np.minimum(1.0, np.maximum(0.0, np.asarray(times) / ramp))
+        return env[:, None] * scale_factors(self.draw, len(self.inputs))[None, :] * u
