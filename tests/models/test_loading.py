@@ -52,3 +52,44 @@ def test_scene_has_floor_and_light():
         model = load(robot)
         assert model.geom("floor").type == mujoco.mjtGeom.mjGEOM_PLANE
         assert model.nlight >= 1
+
+
+def test_a_kept_scene_is_handed_out_as_a_fresh_copy():
+    """The cache gives the model a compile gives, and no caller sees another's changes."""
+    import copy
+
+    from wmr_mujoco.models import loading
+
+    loading.clear_cache()
+    first = load("disc")  # compiled now
+    pristine = copy.copy(first)
+    first.body_mass[:] = 99.0  # a caller modifying its model
+    first.opt.timestep = 0.5
+    again = load("disc")  # from the cache
+    assert again is not first
+    assert model_differences(again, pristine) == []
+    built = load("disc", ROBOTS["disc"].params_type())
+    built.geom_friction[:] = 0.0
+    assert model_differences(load("disc", ROBOTS["disc"].params_type()), pristine) == []
+    loading.clear_cache()
+    assert model_differences(load("disc"), pristine) == []
+
+
+def test_a_changed_scene_file_is_compiled_again(tmp_path, monkeypatch):
+    import os
+    import shutil
+
+    from wmr_mujoco.models import loading
+
+    folder = tmp_path / "disc"
+    shutil.copytree(ROBOTS["disc"].scene_path.parent, folder)
+    monkeypatch.setattr(wmr_mujoco.validation.spec, "MODELS_DIR", tmp_path)
+    before = load("disc").opt.timestep
+    scene = folder / ROBOTS["disc"].robot_file
+    text = scene.read_text()
+    assert f'timestep="{before:g}"' in text
+    scene.write_text(text.replace(f'timestep="{before:g}"', 'timestep="0.0005"'))
+    stat = scene.stat()
+    os.utime(scene, ns=(stat.st_atime_ns, stat.st_mtime_ns + 10**9))  # a later edit
+    assert load("disc").opt.timestep == 0.0005
+    loading.clear_cache()

@@ -4,11 +4,19 @@ These functions receive the robot's description (a
 :class:`~wmr_mujoco.validation.spec.RobotSpec`, or anything with the fields of
 :class:`SceneSource`), never a name: looking a name up in the registry is the
 application's job (:func:`wmr_mujoco.load`).
+
+Compiling a scene costs tens of milliseconds; :func:`load` keeps the last
+:data:`CACHE_SIZE` compiled scenes (by scene file and its modification times, or by
+builder and parameters) and hands out a copy (``mj_copyModel``, a few milliseconds, the
+same model array for array), so that the validation's many runs of one robot compile it
+once and every caller may still modify the model it gets.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import copy
+from collections import OrderedDict
+from collections.abc import Callable, Hashable
 from pathlib import Path
 from typing import Any, Protocol
 
@@ -81,7 +89,10 @@ def load(spec: SceneSource, params: RobotParams | None = None) -> mujoco.MjModel
         FileNotFoundError: the scene file is missing (the message names the path).
     """
     if params is not None or not spec.has_files:
-        return mujoco.MjModel.from_xml_string(common.to_xml(build_scene(spec, params)))
+        key: Hashable = ("built", spec.name, spec.build, spec.scene_extras, spec.params_type,
+                         params)
+        return _cached(key, lambda: mujoco.MjModel.from_xml_string(
+            common.to_xml(build_scene(spec, params))))
     path = spec.scene_path
     for needed in (path, spec.robot_path):
         if not needed.is_file():
@@ -89,4 +100,35 @@ def load(spec: SceneSource, params: RobotParams | None = None) -> mujoco.MjModel
                 f"model file for {spec.name!r} not found: {needed} "
                 f"(regenerate with `make models`)"
             )
-    return mujoco.MjModel.from_xml_path(str(path))
+    key = ("file", str(path.resolve()), path.stat().st_mtime_ns,
+           str(spec.robot_path.resolve()), spec.robot_path.stat().st_mtime_ns)
+    return _cached(key, lambda: mujoco.MjModel.from_xml_path(str(path)))
+
+
+#: Compiled scenes kept by :func:`load` (the most recently used).
+CACHE_SIZE = 32
+_COMPILED: OrderedDict[Hashable, mujoco.MjModel] = OrderedDict()
+
+
+def _cached(key: Hashable, compile_: Callable[[], mujoco.MjModel]) -> mujoco.MjModel:
+    """A copy of the scene compiled for ``key``, compiled now if not kept.
+
+    An unhashable key (parameters holding a list) is compiled every time.
+    """
+    try:
+        model = _COMPILED.get(key)
+    except TypeError:
+        return compile_()
+    if model is None:
+        model = compile_()
+        _COMPILED[key] = model
+        while len(_COMPILED) > CACHE_SIZE:
+            _COMPILED.popitem(last=False)
+    else:
+        _COMPILED.move_to_end(key)
+    return copy.copy(model)
+
+
+def clear_cache() -> None:
+    """Forget the compiled scenes (the next :func:`load` of each compiles it)."""
+    _COMPILED.clear()
