@@ -159,11 +159,15 @@ def restore_members(record: Mapping[str, object] | None, result: ScenarioResult
 
 
 def slowest(results: Sequence[ScenarioResult], n: int = 5) -> str:
-    """``total X s; slowest: robot/scenario (N draws) Y s, ...``: the run's wall time."""
+    """``K families, X s summed; slowest: robot/scenario (N draws) Y s, ...``.
+
+    Each family's wall time (``ScenarioResult.seconds``, also in the JSON report), summed
+    over the families: the run's wall time in one process, more than it with ``--jobs``.
+    """
     timed = [r for r in results if r.seconds is not None]
     top = sorted(timed, key=lambda r: -(r.seconds or 0.0))[:n]
     total = sum(r.seconds or 0.0 for r in timed)
-    return (f"{len(timed)} families in {total:.1f} s; slowest: " + ", ".join(
+    return (f"{len(timed)} families, {total:.1f} s summed over them; slowest: " + ", ".join(
         f"{r.scenario.key} ({len(member_rows(r))} draws) {r.seconds:.1f} s" for r in top))
 
 
