@@ -120,6 +120,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     check_report_folder(args.out)
     work = validation_jobs(args.robots or None, args.scenario or None)
     progress_bar = bar(len(work), "wmr validate", unit="scenario")
+    jobs = jobs_of(args)
 
     def progress(msg: str) -> None:
         if msg.startswith("["):  # "[i/n] robot/scenario": one scenario measured
@@ -131,13 +132,13 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 
     try:
         results = run_families(work, progress=progress, seed=args.seed, draws=draws_of(args),
-                               jobs=jobs_of(args), hints=time_hints(args.out))
+                               jobs=jobs, hints=time_hints(args.out))
     finally:
         progress_bar.close()
     print(text_table(results, judged_only=not args.all_metrics))
     print(f"\nover each family (seed {args.seed}):\n{spread_text(results)}\n"
           f"{slowest(results)}")
-    path = write_report(results, args.out, robots=ROBOTS)
+    path = write_report(results, args.out, robots=ROBOTS, jobs=jobs)
     failed = [r.scenario.key for r in results if not r.passed]
     print(f"\n{summary_line(results)}; report: {path}")
     if failed:

@@ -107,3 +107,29 @@ def test_jobs_reach_the_runner_default_the_usable_cores(tmp_path, monkeypatch):
     assert main(["validate", "single_steer", "--out", out, "-q"]) == 130
     assert main(["validate", "single_steer", "--out", out, "-q", "--jobs", "3"]) == 130
     assert seen == [min(pool.usable_cores(), pool.MAX_JOBS), 3]
+
+
+def test_run_calls_keep_the_order():
+    calls = [(divmod, (n, 3)) for n in range(7)]
+    assert pool.run_calls(calls, 2) == [divmod(n, 3) for n in range(7)]
+    assert pool.run_calls(calls, 1) == [divmod(n, 3) for n in range(7)]
+
+
+@needs_fork
+def test_a_report_drawn_in_two_processes_is_the_same(tmp_path):
+    """The report's text and its plots' files do not depend on the processes drawing them."""
+    from wmr_mujoco.robots import ROBOTS
+    from wmr_mujoco.validation.report import write_report
+
+    results = run_families(validation_jobs(["single_steer"]), draws=2, jobs=1)
+    for r in results:
+        r.seconds = 1.0  # the one figure that differs between runs
+    one, two = tmp_path / "one", tmp_path / "two"
+    write_report(results, one, robots=ROBOTS, jobs=1)
+    write_report(results, two, robots=ROBOTS, jobs=2)
+    files = sorted(p.relative_to(one) for p in one.rglob("*") if p.is_file())
+    assert files == sorted(p.relative_to(two) for p in two.rglob("*") if p.is_file())
+    assert any(f.suffix == ".png" for f in files)
+    for f in files:
+        if f.suffix != ".png":
+            assert (one / f).read_text() == (two / f).read_text(), f

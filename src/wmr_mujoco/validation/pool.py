@@ -141,6 +141,34 @@ def _run_one(i: int) -> tuple[int, Detached, list[str]]:
     return i, detach(result), notes
 
 
+def _call(i: int) -> object:
+    """Call ``i`` of the shared calls."""
+    fn, args = _SHARED["calls"][i]  # type: ignore[index]
+    return fn(*args)
+
+
+def run_calls(calls: Sequence[tuple[Callable[..., object], tuple[object, ...]]],
+              jobs: int = 1) -> list[object]:
+    """``[fn(*args) for fn, args in calls]``, in ``jobs`` forked processes if > 1.
+
+    For independent work whose results pickle (the report's plots, each written by its
+    call): the same results in the same order as in this process.
+    """
+    check_jobs(jobs)
+    if jobs == 1 or len(calls) < 2 or not can_fork():
+        return [fn(*args) for fn, args in calls]
+    _SHARED.update(calls=list(calls))
+    pool = multiprocessing.get_context("fork").Pool(min(jobs, len(calls)), _init_worker)
+    try:
+        out = pool.map(_call, range(len(calls)), chunksize=1)
+        pool.close()
+    finally:
+        pool.terminate()
+        pool.join()
+        _SHARED.clear()
+    return out
+
+
 def run_pooled(work: Sequence[Job], jobs: int, seed: int, draws: int | None,
                progress: Callable[[str], None] | None = None,
                on_result: Callable[[ScenarioResult], None] | None = None,

@@ -24,6 +24,7 @@ from wmr_mujoco.validation.family_report import (
 )
 from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace
 from wmr_mujoco.validation.plots import plot_trace
+from wmr_mujoco.validation.pool import run_calls
 from wmr_mujoco.validation.runner import ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
 from wmr_mujoco.validation.spec import RobotSpec
@@ -330,7 +331,7 @@ def _remove_stale_plots(folder: Path, robots: set[str], results: Sequence[Scenar
 
 
 def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, *,
-                 robots: Robots) -> Path:
+                 robots: Robots, jobs: int = 1) -> Path:
     """Merge this run into ``folder``'s report; write the Markdown, JSON and PNG plots.
 
     ``validation.md``, ``validation.json`` and ``summary.md`` cover this run's scenarios
@@ -338,7 +339,9 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, 
     every registered scenario is there (``complete``), which ``make readme`` requires.
     Each scenario of this run gets a fresh plot; plots of the covered robots' scenarios
     that are no longer reported are removed, nobody else's. ``robots`` are the
-    registered robots (which scenarios a complete report has, and their order).
+    registered robots (which scenarios a complete report has, and their order);
+    ``jobs`` > 1 draws the plots in that many worker processes
+    (:func:`~wmr_mujoco.validation.pool.run_calls`; the same files).
 
     Returns:
         Path of the Markdown report.
@@ -362,22 +365,27 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, 
         lines += ["## Open targets", "", "Required, not yet met by any model: shown with "
                   "their figures, counted, not judged.", "", open_table(merged), ""]
     lines += ["## Families", "", families_markdown(merged), ""]
+    # The fresh plots first, drawn in ``jobs`` processes (each written atomically).
+    by_robot = {robot: [r for r in merged if r.scenario.robot == robot] for robot in robots}
+    spread_plots = {robot: (mine, f"{robot}: each family's members against their targets",
+                            spread_path(folder, robot)) for robot, mine in by_robot.items()
+                    if any(r.scenario.key in fresh for r in mine)}
+    scenario_plots = {r.scenario.key: (r, plot_path(folder, r.scenario)) for r in merged
+                      if r.scenario.key in fresh}
+    for png in [a[-1] for a in (*spread_plots.values(), *scenario_plots.values())]:
+        png.parent.mkdir(parents=True, exist_ok=True)
+    drawn = run_calls([(plot_spreads, a) for a in spread_plots.values()]
+                      + [(plot_scenario, a) for a in scenario_plots.values()], jobs)
+    drawn_scenario = dict(zip(scenario_plots, drawn[len(spread_plots):], strict=True))
     for robot in robots:
-        mine = [r for r in merged if r.scenario.robot == robot]
         png = spread_path(folder, robot)
-        if any(r.scenario.key in fresh for r in mine):
-            png.parent.mkdir(parents=True, exist_ok=True)
-            plot_spreads(mine, f"{robot}: each family's members against their targets", png)
         if png.is_file():
             lines += [f"![{robot} spread]({png.relative_to(folder).as_posix()})", ""]
     lines += ["## How the metrics are judged",
               "", DEFINITIONS, "", "## Every metric", "",
               markdown_table(merged), "", "## Plots", ""]
     for r in merged:
-        png = plot_path(folder, r.scenario)
-        if r.scenario.key in fresh:
-            png.parent.mkdir(parents=True, exist_ok=True)
-            png = plot_scenario(r, png)
+        png = drawn_scenario.get(r.scenario.key, plot_path(folder, r.scenario))
         if png is not None and png.is_file():
             rel = png.relative_to(folder).as_posix()
             lines += [f"### {r.scenario.key}", "", f"![{r.scenario.key}]({rel})", ""]
