@@ -14,9 +14,9 @@ generic variations of :mod:`wmr_mujoco.validation.variations` are applied throug
 ``Scenario.input_at`` and ``Scenario.member``, the wheel phase before the settle in
 :func:`prepare`); :func:`run_all` runs scenarios once each, and
 :mod:`wmr_mujoco.validation.members` runs every member of their families and judges the
-worst. Batching scenarios into one multi-threaded rollout and a process pool were
-measured against it and gave nothing on the machines this runs on
-(``docs/architecture.md``); a family's members share one model and are batched there.
+worst: a family's members share one model and are simulated in one threaded rollout
+there, and ``wmr validate --jobs N`` runs the families in N processes
+(:mod:`wmr_mujoco.validation.pool`).
 
 Metrics are in :mod:`wmr_mujoco.validation.metrics` (pose tracking: worst, RMS and final
 errors over the whole run; lateral slip) and in each robot's module (dynamic judges,
