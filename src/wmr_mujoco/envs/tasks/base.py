@@ -3,7 +3,8 @@
 A task samples an episode (goal, path or speed), reads a robot's :class:`RobotState`
 (``wmr_mujoco.drive``), and returns its part of the observation, its reward terms one by
 one, and whether the episode succeeded or failed. The reward is the sum of the terms.
-Lengths scale with the robot (``scale``, m, from its :class:`~wmr_mujoco.envs.profiles.Profile`).
+Lengths scale with the robot (``scale``, m, from its registry entry's
+:class:`~wmr_mujoco.robots.learning.Learning`).
 """
 
 from __future__ import annotations
