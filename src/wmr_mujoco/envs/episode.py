@@ -25,6 +25,7 @@ import numpy as np
 from wmr_mujoco.drive import make
 from wmr_mujoco.envs.profiles import Profile, profile, robot_name
 from wmr_mujoco.envs.randomization import Band, Bands, Randomizer
+from wmr_mujoco.envs.stepping import Snapshot, Stepper
 from wmr_mujoco.envs.tasks import Field, Task, task_class
 
 MODES = ("command", "wheels")
@@ -115,7 +116,10 @@ class Episode:
             Field("last_action", self.n_action, "1"))
         self.size = sum(f.size for f in self.fields)
         self.dt = self.robot.control_period
-        self.state: Any = None
+        #: The recording-free physics loop on the robot's model and data.
+        self.stepper = Stepper(self.robot)
+        self.state: Snapshot | None = None
+        self._shape = (self.n_action,)
         self.last_action = [0.0] * self.n_action
         self.factors: dict[str, np.ndarray] = {}
 
@@ -124,11 +128,9 @@ class Episode:
         if self.randomizer is not None:
             self.factors = self.randomizer.apply(rng, self.robot.data)
         start = self.task.sample(rng)
-        self.state = self.robot.reset(pose=start, seed=int(rng.integers(2**31)))
-        self.task.start(self.robot, rng)
-        if self.robot.data is not None and hasattr(self.robot, "reader"):
-            # The task may have set the robot in motion: read the state again.
-            self.state = self.robot.reader.read(self.robot.data, 0.0, float(start[2]))
+        self.robot.reset(pose=start, seed=int(rng.integers(2**31)))
+        self.task.start(self.robot, rng)  # it may set the robot in motion: read it after
+        self.state = self.stepper.start(float(start[2]))
         self.last_action = [0.0] * self.n_action
         return self.observe()
 
@@ -153,12 +155,26 @@ class Episode:
         prev = self.state
         if prev is None:
             raise RuntimeError("call reset() before step()")
-        a = check_action(action, self.n_action)
+        # The usual action, a float array of the right shape, is checked, clipped and
+        # scaled in one pass over Python floats; anything else (or a NaN, which fails
+        # both bounds) goes through check_action, which raises or clips.
+        if type(action) is np.ndarray and action.shape == self._shape and \
+                action.dtype.kind == "f":
+            values = action.tolist()
+        else:
+            values = check_action(action, self.n_action)
+        a, command = [], []
+        for v, (c, h, lo, hi) in zip(values, self._scale, strict=True):
+            if not -1.0 <= v <= 1.0:
+                v = check_action(np.array(values), self.n_action)[len(a)]
+            a.append(v)
+            u = c + h * v
+            command.append(lo if u < lo else hi if u > hi else u)
         task = self.task
-        self.state = state = self.robot.step(self.command(a))
+        self.state = state = self.stepper.step(command)
         self.last_action = a
         terms, success, failure = task.evaluate(prev, state, a, self.dt)
-        time = state.time.item()
+        time = state.time
         truncated = not (success or failure) and time >= task.time_limit - 1e-9
         if truncated:
             success = task.succeeded_at_time_limit(state)
@@ -170,8 +186,8 @@ class Episode:
     def observe(self) -> np.ndarray:
         """The observation vector (float32; module docstring)."""
         s = self.state
-        return np.array(self.task.observe(s) + s.twist.tolist() + s.wheel_rates.tolist()
-                        + self.last_action, np.float32)
+        return np.array([*self.task.observe(s), *s.uvr, *s.wheel_rates_list,
+                         *self.last_action], np.float32)
 
     def describe(self) -> str:
         """The observation's blocks with their units, one per line."""

@@ -56,6 +56,18 @@ def wrap(angle: float) -> float:
     return float(wrap_angle(angle))
 
 
+def pose_of(state: Any) -> tuple[float, float, float]:
+    """``(x, y, ψ)`` of a state, floats: an environment's snapshot's own, else its pose's."""
+    xyh = getattr(state, "xyh", None)
+    return xyh if xyh is not None else tuple(state.pose.tolist()[:3])
+
+
+def speed_of(state: Any) -> float:
+    """Forward speed ``u`` of a state, m/s (a snapshot's float, else its twist's)."""
+    uvr = getattr(state, "uvr", None)
+    return uvr[0] if uvr is not None else float(state.twist[0])
+
+
 def to_body(pose: np.ndarray, xy: np.ndarray) -> np.ndarray:
     """World points ``xy`` (…, 2) in the body frame of ``pose = (x, y, ψ)``: ``Rᵀ(ψ)(p − p₀)``."""
     x, y, psi = (float(v) for v in pose[:3])

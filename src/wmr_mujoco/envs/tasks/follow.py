@@ -27,7 +27,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from wmr_mujoco.control.paths import Path, extend, random_path
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, wrap
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, pose_of, wrap
 from wmr_mujoco.envs.tasks.goal import BONUS
 
 #: Look-ahead distances of the observation, in units of the robot's length scale.
@@ -84,9 +84,10 @@ class FollowPath(Task):
         last = self._proj
         if last is not None and last[0] is state:
             return last[1]
-        xy = state.pose[:2]
-        q = self.path.closest(xy) if last is None else self.path.track(xy, last[1].s)
-        rx, ry = (xy - q.position).tolist()
+        x, y, _ = pose_of(state)
+        q = self.path.closest((x, y)) if last is None else self.path.track((x, y), last[1].s)
+        qx, qy = q.position.tolist()
+        rx, ry = x - qx, y - qy
         side = math.cos(q.heading) * ry - math.sin(q.heading) * rx
         proj = Projection(q.s, math.copysign(math.hypot(rx, ry), side), q.heading)
         self._proj = (state, proj)
@@ -95,7 +96,7 @@ class FollowPath(Task):
     def observe(self, state: Any) -> list[float]:
         """``(path_ahead, cross_track, sin e_ψ, cos e_ψ, remaining)``."""
         p = self.project(state)
-        x, y, psi = state.pose.tolist()
+        x, y, psi = pose_of(state)
         c, s = math.cos(psi), math.sin(psi)
         ahead = []
         for px, py in self.path.positions(p.s + self._ahead).tolist():

@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, wrap
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, pose_of, wrap
 
 BONUS = 10.0
 
@@ -84,7 +84,7 @@ class GoToGoal(Task):
             return cache[1]
         if cache[2] is state:
             return cache[3]
-        x, y, psi = state.pose.tolist()
+        x, y, psi = pose_of(state)
         gx, gy, gpsi = self._goal
         dx, dy = gx - x, gy - y
         c, s = math.cos(psi), math.sin(psi)
