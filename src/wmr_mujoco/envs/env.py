@@ -90,6 +90,8 @@ class WmrEnv(gym.Env):
                                                 np.float32)
         self._renderer = None
         self._viewer = None
+        if render_mode != "human":  # nothing to do around a step: one call less per step
+            self.step = self.episode.step  # type: ignore[method-assign]
 
     @property
     def robot(self) -> Any:

@@ -61,6 +61,24 @@ def check_action(action: Any, n: int) -> list[float]:
     return np.clip(a, -1.0, 1.0).tolist()
 
 
+def box_scale(low: np.ndarray, high: np.ndarray) -> tuple[list[float], list[float]]:
+    """``(c, h)`` per channel: ``c + h a`` lies in ``[low, high]`` for every ``a`` in [-1, 1].
+
+    ``c = (high + low) / 2``, ``h = (high − low) / 2``, with ``h`` shrunk by an ulp where
+    rounding would put ``c ± h`` outside the box: floating-point multiplication and
+    addition are monotonic, so the two ends bound every action in between and a command
+    needs no clipping.
+    """
+    cs, hs = [], []
+    for lo, hi in zip(low.tolist(), high.tolist(), strict=True):
+        c, h = (hi + lo) / 2, (hi - lo) / 2
+        while h > 0 and (c + h > hi or c - h < lo):
+            h = math.nextafter(h, 0.0)
+        cs.append(c)
+        hs.append(h)
+    return cs, hs
+
+
 class Episode:
     """A robot, a task, and the bookkeeping of one episode (module docstring).
 
@@ -103,9 +121,8 @@ class Episode:
         space = self.robot.command_space
         self.center = (space.high + space.low) / 2
         self.half = (space.high - space.low) / 2
-        #: ``(c, h, low, high)`` of each channel as floats, for :meth:`command`.
-        self._scale = list(zip(self.center.tolist(), self.half.tolist(), space.low.tolist(),
-                               space.high.tolist(), strict=True))
+        #: ``c`` and ``h`` of each channel as floats (:func:`box_scale`).
+        self._c, self._h = box_scale(space.low, space.high)
         self.bands = prof.bands if randomize is True else (randomize or None)
         self.randomizer = (Randomizer(self.robot.model, self.bands, self.robot.wheel_names)
                            if self.bands is not None else None)
@@ -136,8 +153,7 @@ class Episode:
 
     def command(self, action: Any) -> list[float]:
         """The robot command ``c + h a`` of a checked normalised action (kept in the box)."""
-        return [min(hi, max(lo, c + h * a))
-                for (c, h, lo, hi), a in zip(self._scale, action, strict=True)]
+        return [c + h * a for c, h, a in zip(self._c, self._h, action, strict=True)]
 
     def action(self, command: np.ndarray) -> np.ndarray:
         """The normalised action of a robot command (the inverse of :meth:`command`)."""
@@ -155,23 +171,22 @@ class Episode:
         prev = self.state
         if prev is None:
             raise RuntimeError("call reset() before step()")
-        # The usual action, a float array of the right shape, is checked, clipped and
-        # scaled in one pass over Python floats; anything else (or a NaN, which fails
-        # both bounds) goes through check_action, which raises or clips.
+        # The usual action, a float array of the right shape inside [-1, 1], is checked on
+        # Python floats; anything else (a NaN fails the bounds) goes through check_action,
+        # which raises or clips.
         if type(action) is np.ndarray and action.shape == self._shape and \
                 action.dtype.kind == "f":
-            values = action.tolist()
+            a = action.tolist()
+            for v in a:
+                if not -1.0 <= v <= 1.0:
+                    a = check_action(action, self.n_action)
+                    break
         else:
-            values = check_action(action, self.n_action)
-        a, command = [], []
-        for v, (c, h, lo, hi) in zip(values, self._scale, strict=True):
-            if not -1.0 <= v <= 1.0:
-                v = check_action(np.array(values), self.n_action)[len(a)]
-            a.append(v)
-            u = c + h * v
-            command.append(lo if u < lo else hi if u > hi else u)
+            a = check_action(action, self.n_action)
         task = self.task
-        self.state = state = self.stepper.step(command)
+        # a has n_action entries (checked above).
+        self.state = state = self.stepper.step([c + h * v for c, h, v in
+                                                zip(self._c, self._h, a, strict=False)])
         self.last_action = a
         terms, success, failure = task.evaluate(prev, state, a, self.dt)
         time = state.time
@@ -186,8 +201,11 @@ class Episode:
     def observe(self) -> np.ndarray:
         """The observation vector (float32; module docstring)."""
         s = self.state
-        return np.array([*self.task.observe(s), *s.uvr, *s.wheel_rates_list,
-                         *self.last_action], np.float32)
+        obs = self.task.observe(s)  # a new list: extended in place
+        obs += s.uvr
+        obs += s.wheel_rates_list
+        obs += self.last_action
+        return np.array(obs, np.float32)
 
     def describe(self) -> str:
         """The observation's blocks with their units, one per line."""

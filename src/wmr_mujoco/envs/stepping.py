@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, NamedTuple
 
 import mujoco
 import numpy as np
@@ -34,22 +34,22 @@ from wmr_mujoco.loop.readout import NO_EXTRAS
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 
 
-class Snapshot:
+class Snapshot(NamedTuple):
     """The robot's state after a reset or a step, as floats (module docstring).
 
     ``pose``, ``twist`` and ``wheel_rates`` give the arrays of a
     :class:`~wmr_mujoco.loop.state.RobotState`; ``steer_angles`` and ``wheel_contacts`` are
-    read from the robot's ``data`` and so only while the snapshot is the latest one.
+    read from the robot's ``data`` and so only while the snapshot is the latest one. (A
+    tuple: made in one C call per step.)
     """
 
-    __slots__ = ("_serial", "_stepper", "extra", "time", "uvr", "wheel_rates_list", "xyh")
-
-    def __init__(self, stepper: Stepper, time: float, xyh: tuple[float, float, float],
-                 uvr: tuple[float, float, float], wheel_rates: list[float],
-                 extra: Mapping[str, float]) -> None:
-        self._stepper, self._serial = stepper, stepper.serial
-        self.time, self.xyh, self.uvr = time, xyh, uvr
-        self.wheel_rates_list, self.extra = wheel_rates, extra
+    time: float
+    xyh: tuple[float, float, float]
+    uvr: tuple[float, float, float]
+    wheel_rates_list: list[float]
+    extra: Mapping[str, float]
+    serial: int
+    stepper: Stepper
 
     @property
     def pose(self) -> np.ndarray:
@@ -67,10 +67,10 @@ class Snapshot:
         return np.array(self.wheel_rates_list)
 
     def _live(self) -> Any:
-        if self._serial != self._stepper.serial:
+        if self.serial != self.stepper.serial:
             raise RuntimeError("this snapshot is no longer the robot's state: read "
                                "steer_angles and wheel_contacts before the next step")
-        return self._stepper.robot.reader
+        return self.stepper.reader
 
     @property
     def steer_angles(self) -> np.ndarray:
@@ -82,6 +82,9 @@ class Snapshot:
     def wheel_contacts(self) -> np.ndarray:
         """Whether each wheel touches anything (the latest snapshot only)."""
         return self._live().contacts()
+
+
+_new = tuple.__new__
 
 
 class Stepper:
@@ -152,6 +155,6 @@ class Stepper:
         _, _, r, u, v, _ = vel.tolist()
         extra = (dict(self.extras(self.model, self.data)) if self.extras is not None
                  else NO_EXTRAS)
-        self.serial += 1
-        return Snapshot(self, self.data.time - self._t0, (x, y, psi), (u, v, r),
-                        self._qvel[self._rows].tolist(), extra)
+        self.serial = serial = self.serial + 1
+        return _new(Snapshot, (self.data.time - self._t0, (x, y, psi), (u, v, r),
+                               self._qvel[self._rows].tolist(), extra, serial, self))
