@@ -49,6 +49,9 @@ class Projection(NamedTuple):
     heading: float
 
 
+_new = tuple.__new__  # a Projection in one C call
+
+
 class FollowPath(Task):
     """Follow a random smooth path (module docstring)."""
 
@@ -122,8 +125,8 @@ class FollowPath(Task):
         s, h = self._s, self._heading
         heading = h[i] + t * (h[i + 1] - h[i])
         side = math.cos(heading) * ry - math.sin(heading) * rx
-        proj = Projection(s[i] + t * (s[i + 1] - s[i]), math.copysign(math.hypot(rx, ry), side),
-                          heading)
+        proj = _new(Projection, (s[i] + t * (s[i + 1] - s[i]),
+                                 math.copysign(math.hypot(rx, ry), side), heading))
         self._proj = (state, proj, i)
         return proj
 
@@ -152,13 +155,20 @@ class FollowPath(Task):
     def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
                      ) -> dict[str, float]:
         """Progress, cross-track, effort, success and failure terms (docstring)."""
+        return self.evaluate(prev, state, action, dt)[0]
+
+    def evaluate(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                 ) -> tuple[dict[str, float], bool, bool]:
+        """The reward terms and the outcome, from one projection of each state."""
         s0 = self.project(prev).s
         p = self.project(state)
-        success, failure = self.outcome(state)
-        return {"progress": (p.s - s0) / self.scale,
-                "cross_track": -dt * (p.cross_track / self.options["max_deviation"]) ** 2,
-                "effort": effort(action),
-                "success": BONUS if success else 0.0, "failure": -BONUS if failure else 0.0}
+        dev = self.options["max_deviation"]
+        failure = abs(p.cross_track) > dev
+        success = p.s >= self.end and not failure
+        return ({"progress": (p.s - s0) / self.scale,
+                 "cross_track": -dt * (p.cross_track / dev) ** 2, "effort": effort(action),
+                 "success": BONUS if success else 0.0, "failure": -BONUS if failure else 0.0},
+                success, failure)
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """Success at the path's end; failure beyond ``max_deviation``."""
@@ -172,30 +182,30 @@ def _inverse(x: float) -> float:
     return 1.0 / x if x else 0.0
 
 
+def _foot(segment: tuple[float, ...], px: float, py: float) -> tuple[float, float]:
+    """``(squared distance, t)`` of the foot ``a + t d`` of ``(px, py)`` on a segment."""
+    ax, ay, dx, dy, inv = segment
+    t = ((px - ax) * dx + (py - ay) * dy) * inv
+    t = 0.0 if t < 0.0 else 1.0 if t > 1.0 else t
+    ex, ey = ax + t * dx - px, ay + t * dy - py
+    return ex * ex + ey * ey, t
+
+
 def _walk(segments: list[tuple[float, ...]], px: float, py: float, i: int) -> tuple[int, float]:
     """``(segment, t)`` of the nearest point to ``(px, py)``, walked to from segment ``i``.
 
     The foot on segment ``k`` is ``a + t d`` with ``t = clip((p − a)·d / |d|², 0, 1)``; the
     walk goes forward while the next segment's foot is nearer, else backward likewise.
     """
-    def foot(k: int) -> tuple[float, float]:
-        ax, ay, dx, dy, inv = segments[k]
-        t = ((px - ax) * dx + (py - ay) * dy) * inv
-        t = 0.0 if t < 0.0 else 1.0 if t > 1.0 else t
-        ex, ey = ax + t * dx - px, ay + t * dy - py
-        return ex * ex + ey * ey, t
-
-    best, t = foot(i)
+    best, t = _foot(segments[i], px, py)
     last = len(segments) - 1
-    moved = False
-    while i < last:
-        d, u = foot(i + 1)
-        if d >= best:
+    for step in (1, -1):
+        moved = False
+        while 0 <= i + step <= last:
+            d, u = _foot(segments[i + step], px, py)
+            if d >= best:
+                break
+            i, best, t, moved = i + step, d, u, True
+        if moved:
             break
-        i, best, t, moved = i + 1, d, u, True
-    while not moved and i > 0:
-        d, u = foot(i - 1)
-        if d >= best:
-            break
-        i, best, t = i - 1, d, u
     return i, t
