@@ -46,6 +46,23 @@ def wheel_collider_names(robot: mjcf.RootElement) -> list[str]:
     return names
 
 
+def caster_collider_names(robot: mjcf.RootElement) -> list[str]:
+    """Names of the ball-caster colliders of a built robot.
+
+    Every named ``collision``-class geom of a body jointed to its parent by one ball joint
+    (:func:`~wmr_mujoco.models.builders.caster.add_ball_caster`).
+    """
+    names = []
+    for geom in robot.find_all("geom"):
+        cls = getattr(geom.dclass, "dclass", geom.dclass)
+        if geom.name is None or cls != "collision":
+            continue
+        joints = geom.parent.get_children("joint")
+        if len(joints) == 1 and joints[0].type == "ball":
+            names.append(geom.name)
+    return names
+
+
 def wheel_floor_pairs(build: Callable[[Any], mjcf.RootElement]
                       ) -> Callable[[mjcf.RootElement, Any], None]:
     """The ``scene_extras`` of a robot built by ``build`` whose wheels take the remedy.
@@ -64,8 +81,12 @@ def wheel_floor_pairs(build: Callable[[Any], mjcf.RootElement]
         if d == 0.0:
             return
         kwargs = sliding_pair_kwargs(sim, d, steps=WHEEL_PAIR_STEPS)
-        for name in wheel_collider_names(build(params)):
+        robot = build(params)
+        for name in wheel_collider_names(robot):
             scene.contact.add("pair", geom1="floor", geom2=name, **kwargs)
+        for name in caster_collider_names(robot):
+            condim = robot.find("geom", name).condim or kwargs["condim"]
+            scene.contact.add("pair", geom1="floor", geom2=name, **{**kwargs, "condim": condim})
         scene.option.impratio = sliding_impratio(d)
 
     return extras
