@@ -50,7 +50,7 @@ class Row:
     warp: str
 
 
-def _variants(robot: str) -> dict[str, mujoco.MjModel]:
+def variants(robot: str) -> dict[str, mujoco.MjModel]:
     """The default model and the one without caster pairs (empty: no caster pair)."""
     from wmr_mujoco.lookup import build_scene
     from wmr_mujoco.models.builders.common import to_xml
@@ -74,9 +74,12 @@ def _variants(robot: str) -> dict[str, mujoco.MjModel]:
             "contact bits": mujoco.MjModel.from_xml_string(to_xml(scene))}
 
 
-def measure(robot: str, setting: str, model: mujoco.MjModel) -> Row:
-    """Settle ``model`` at rest, read the caster's contact and Newton's Hessian, run Warp."""
-    warp = _warp_run(robot, model)
+def measure(robot: str, setting: str, model: mujoco.MjModel, warp: bool = True) -> Row:
+    """Settle ``model`` at rest, read the caster's contact and Newton's Hessian, run Warp.
+
+    ``warp`` False: no Warp run (its column reads ``"not run"``).
+    """
+    outcome = warp_run(robot, model) if warp else "not run"
     model.opt.jacobian = mujoco.mjtJacobian.mjJAC_DENSE
     data = mujoco.MjData(model)
     for _ in range(round(SETTLE / model.opt.timestep)):
@@ -105,10 +108,10 @@ def measure(robot: str, setting: str, model: mujoco.MjModel) -> Row:
         else:
             wheel_f.extend(friction)
     return Row(robot, setting, model.opt.impratio * max(caster_d),
-               max(caster_f) / max(wheel_f), float(np.linalg.cond(h)), warp)
+               max(caster_f) / max(wheel_f), float(np.linalg.cond(h)), outcome)
 
 
-def _warp_run(robot: str, model: mujoco.MjModel) -> str:
+def warp_run(robot: str, model: mujoco.MjModel) -> str:
     """``"runs"`` or the divergence: the first kinematic body-frame scenario on Warp."""
     from wmr_mujoco.batch.warp_backend import WarpBackend
     from wmr_mujoco.robots import get_spec
@@ -126,7 +129,7 @@ def _warp_run(robot: str, model: mujoco.MjModel) -> str:
     try:
         WarpBackend().run([prep])
     except SimulationDivergedError as err:
-        return f"{scenario.name}: diverged, {err}"
+        return f"{scenario.name}: diverged, {str(err).split(';')[0]}"
     return f"{scenario.name}: runs {DURATION:g} s"
 
 
@@ -135,7 +138,7 @@ def rows(robots: Sequence[str] | None = None) -> list[Row]:
     from wmr_mujoco.robots import ROBOTS
 
     return [measure(robot, setting, model) for robot in (robots or ROBOTS)
-            for setting, model in _variants(robot).items()]
+            for setting, model in variants(robot).items()]
 
 
 def table(found: Sequence[Row]) -> str:
