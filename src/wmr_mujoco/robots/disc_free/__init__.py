@@ -94,14 +94,16 @@ def _sweep_clip(model: mujoco.MjModel) -> list[FreeRun]:
 
 #: The leaning start's requirements are open over its family: the slower draws (below the
 #: nominal speed, toward the upright disc's stability limit) miss all three, the energy
-#: drift too, so the physics itself loses energy there (the families table shows the
-#: spread against the speed).
+#: drift too. The errors follow the contact's effective time constant ``max(t_c, 2 Δt)``
+#: (MuJoCo's refsafe; 8 ms at the defaults), not the timestep: they are the soft
+#: contact's (``python -m wmr_mujoco.bench.disc_leaning``, table in models/disc/README.md).
 LEANING_OPEN = dict.fromkeys(
     ("worst contact path error, first 5 s", "worst lean error, first 5 s",
      "worst energy drift"),
-    "the family's slower draws miss it (the errors grow as the speed falls; the energy "
-    "drift too, so not only the comparison: not yet explained; spread in the families "
-    "table)")
+    "the family's slower draws miss it: the errors follow the soft contact's effective "
+    "time constant max(t_c, 2 Δt), not the timestep; the stiffer contact that meets it "
+    "costs the timestep in models/disc/README.md's leaning-family table "
+    "(python -m wmr_mujoco.bench.disc_leaning)")
 
 SCENARIOS = (
     Scenario(NAME, "incline", duration=1.0, kind=ScenarioKind.MEASUREMENT,
