@@ -88,7 +88,8 @@ class Scripted:
         elif self.kind != "balance":
             wheelbase = float(params.wheelbase) if self.kind == "car" else None
             self.law = PurePursuit(self.speed, self.lookahead, wheelbase, self.steer_limit)
-        self.half_wheelbase = float(getattr(params, "half_wheelbase", 0.0))
+        #: The steered wheels' distance from the centre, m (the double steer's ``h``).
+        self.half_wheelbase = float(params.half_wheelbase) if self.kind == "double" else 0.0
 
     def reset(self) -> None:
         """Plan the episode: the path to follow, or the balancing law at the target speed."""
