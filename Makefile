@@ -50,14 +50,15 @@ renders: $(STAMP)
 	$(BIN)/wmr render --all --out renders
 
 # The design and fidelity-versus-cost studies in the model READMEs: omni3's roller design
-# and peer table, the Whipple bicycle's eigenvalues, the free disc's settings,
-# mecanum4's roller design; omni3's coasting energy budget and dynamics tables in
-# docs/omni-dynamics.md.
+# and peer table, the Whipple bicycle's eigenvalues, the free disc's settings and its
+# leaning-start family against the contact, mecanum4's roller design; omni3's coasting
+# energy budget and dynamics tables in docs/omni-dynamics.md.
 study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.omni_study
 	$(BIN)/python -m wmr_mujoco.bench.omni_energy_study
 	$(BIN)/python -m wmr_mujoco.bench.whipple_study
 	$(BIN)/python -m wmr_mujoco.bench.disc_study
+	$(BIN)/python -m wmr_mujoco.bench.disc_leaning
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_study
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_phase
 

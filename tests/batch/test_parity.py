@@ -12,9 +12,7 @@ import pytest
 
 from wmr_mujoco.batch import parity as parity_mod
 from wmr_mujoco.batch.parity import SHARE, draws, parity
-from wmr_mujoco.bench.batch_parity import collision_class
 from wmr_mujoco.robots import get_spec
-from wmr_mujoco.sim.stepping import SimulationDivergedError
 
 pytestmark = pytest.mark.extra  # MuJoCo Warp (the gpu extra)
 
@@ -24,13 +22,6 @@ QUICK = ("diffdrive", "omni3")
 SLOW = ("disc", "bicycle", "tricycle", "single_steer", "double_steer", "mecanum4",
         "omni3_reduced")
 
-#: Robots whose default floor pairs MuJoCo Warp (float32, on the CPU) does not run: they
-#: diverge within 0.5 s (the pairs' impratio with the ball caster's own contact). Their
-#: engine parity is tested at the collision-class contact (bench.batch_parity reports the
-#: divergence at the default as a failed row); the divergence itself is issue 27's open
-#: point, not hidden: test_warp_reports_the_divergence_of_the_caster_robots.
-WARP_DIVERGES = ("diffdrive", "single_steer", "double_steer")
-
 _results: dict[str, parity_mod.Parity] = {}
 
 
@@ -38,8 +29,7 @@ _results: dict[str, parity_mod.Parity] = {}
 def measured():
     def get(robot: str) -> parity_mod.Parity:
         if robot not in _results:
-            params = collision_class(robot) if robot in WARP_DIVERGES else None
-            _results[robot] = parity(robot, members=3, duration=1.0, seed=7, params=params)
+            _results[robot] = parity(robot, members=3, duration=1.0, seed=7)
         return _results[robot]
     yield get
     for p in _results.values():  # the measured parity, shown with -s
@@ -80,8 +70,3 @@ def test_draws_are_seeded_scaled_and_shifted():
     with pytest.raises(ValueError, match="no kinematic body-frame scenarios"):
         draws("whipple", 1, 0)
 
-
-def test_warp_reports_the_divergence_of_the_caster_robots():
-    """At the default floor pairs these robots diverge on Warp: reported, never returned."""
-    with pytest.raises(SimulationDivergedError, match="warp"):
-        parity("diffdrive", members=3, duration=1.0, seed=7)

@@ -37,12 +37,9 @@ def test_two_shards_on_one_cpu_equal_one_shard():
     members with different inputs and frictions make a mix-up visible."""
     from dataclasses import replace
 
-    from wmr_mujoco.bench.batch_parity import collision_class
+    from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
 
-    # diffdrive at the collision-class contact: Warp diverges on its default floor pairs
-    # (tests/batch/test_parity.py, WARP_DIVERGES); sharding is what this test is about.
-    base = collision_class("diffdrive")
-
+    base = DiffDriveParams()
     params = [replace(base, sim=replace(base.sim, friction=mu)) for mu in (0.3, 1.0, 0.6)]
     inputs = [[0.5, 0.3], [0.2, -0.4], [0.4, 1.0]]
     one = wmr.simulate_batch("diffdrive", inputs, 0.2, params, backend="warp", devices=["cpu"])

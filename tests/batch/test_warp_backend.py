@@ -1,4 +1,4 @@
-"""The warp backend's refusals, before any stepping."""
+"""The warp backend's refusals, before any stepping, and its report of a divergence."""
 
 from dataclasses import replace
 
@@ -32,3 +32,21 @@ def test_bad_devices():
         WarpBackend(devices="cpu")
     with pytest.raises(ValueError, match=r"probe_steps = -1; give an integer >= 0"):
         WarpBackend(probe_steps=-1)
+
+
+def test_a_divergence_is_reported_naming_float32_and_rollout():
+    """The ball caster on contact bits under the floor pairs' impratio (the model before
+    its pair, bench.caster_conditioning): MuJoCo Warp's float32 Newton step goes
+    non-finite within the first second of driving straight (C MuJoCo runs it). Reported,
+    never returned, with the reason and the backend that runs it."""
+    from wmr_mujoco.bench.caster_conditioning import variants
+    from wmr_mujoco.robots import get_spec
+    from wmr_mujoco.sim.stepping import SimulationDivergedError
+    from wmr_mujoco.validation.runner import prepare
+
+    spec = get_spec("diffdrive")
+    straight = next(s for s in spec.scenarios if s.name == "straight")
+    prep = prepare(spec, straight, None, model=variants("diffdrive")["contact bits"])
+    prep.controls = prep.controls[:500]
+    with pytest.raises(SimulationDivergedError, match=r"non-finite .*float32.*'rollout'"):
+        WarpBackend().run([prep])

@@ -2,14 +2,13 @@
 
 import builtins
 
-from wmr_mujoco.bench import env_section, env_success, env_throughput
+from wmr_mujoco.bench import env_section, env_success
 
 
 def test_section_has_both_tables(monkeypatch):
     import wmr_mujoco.envs as wenvs
 
     monkeypatch.setattr(wenvs, "ENV_IDS", ("wmr/Disc-GoToGoal-v0",))
-    monkeypatch.setattr(env_throughput, "default_ids", lambda: ["wmr/Disc-GoToGoal-v0"])
     monkeypatch.setattr(env_success, "success_rate", lambda i, n, s: {
         "successes": n, "episodes": n, "failed": [], "seconds": 0.1})
     results, text = env_section.env_section(quick=True)

@@ -15,12 +15,13 @@ def test_shipped_setting_is_the_models_default_and_comes_first():
 
 
 def test_stiff_parameters_change_only_the_contact_and_the_step():
-    p = st.stiff(0.002, 0.001)
-    assert (p.sim.contact_timeconst, p.sim.timestep) == (0.002, 0.001)
+    p = st.stiff(0.003, 0.001)
+    assert (p.sim.contact_timeconst, p.sim.timestep) == (0.003, 0.001)
     assert p.wheel_radius == st.OmniParams().wheel_radius
 
 
-@pytest.mark.parametrize("timeconst, step", [(0.002, 0.0015), (0.0, 0.001),
+# (0.0025, 0.001): 2.5 steps, under the roller-floor pairs' least 3 (WHEEL_PAIR_STEPS).
+@pytest.mark.parametrize("timeconst, step", [(0.002, 0.0015), (0.0025, 0.001), (0.0, 0.001),
                                              (math.nan, 0.001), (0.002, -1.0)])
 def test_stiff_bad_input(timeconst, step):
     with pytest.raises(ValueError, match="step"):

@@ -113,3 +113,40 @@ def test_stay_upright_terms():
     assert t["alive"] == 0.01 and t["lean"] == 0.0 and t["speed"] == 0.0
     assert task.outcome(fallen) == (False, True)
     assert task.succeeded_at_time_limit(up)
+
+
+def test_follow_path_projection_walk_equals_the_path_search():
+    # The task's float walk must find the nearest point that Path.closest finds (a
+    # projection onto the same polyline): a robot wandering up to 0.3 m off the path and
+    # moving 2 cm per step. Equal to 1e-9 m (rounding of the two formulas only).
+    task = FollowPath(scale=1.0, max_curvature=1.5)
+    rng = np.random.default_rng(4)
+    task.sample(rng)
+    path = task.path
+    for s in np.arange(0.0, task.end + 0.5, 0.02):
+        p = path.at(s)
+        off = 0.3 * math.sin(3.0 * s)  # sideways, both sides
+        xy = p.position + off * np.array([-math.sin(p.heading), math.cos(p.heading)])
+        got = task.project(state(*xy, p.heading))
+        want = path.closest(xy)
+        assert got.s == pytest.approx(want.s, abs=1e-9)
+        assert abs(got.cross_track) == pytest.approx(np.hypot(*(xy - want.position)), abs=1e-9)
+        assert math.copysign(1.0, got.cross_track) == math.copysign(1.0, off) or abs(off) < 1e-9
+
+
+def test_follow_path_points_ahead_are_the_path_positions():
+    # The look-ahead points interpolated on floats equal Path.positions (numpy's interp),
+    # in the body frame, including beyond the far end (clipped to it).
+    task = FollowPath(scale=1.0, max_curvature=1.0)
+    task.sample(np.random.default_rng(2))
+    path = task.path
+    for s in (0.0, 1.3, task.end - 0.1, path.length - 0.2):
+        p = path.at(s)
+        st = state(*p.position, p.heading + 0.2)
+        obs = task.observe(st)
+        s_star = task.project(st).s
+        world = path.positions(s_star + np.array([0.25, 0.5, 0.75, 1.0, 1.5]))
+        c, sn = math.cos(p.heading + 0.2), math.sin(p.heading + 0.2)
+        d = world - p.position
+        body = np.column_stack([c * d[:, 0] + sn * d[:, 1], c * d[:, 1] - sn * d[:, 0]])
+        np.testing.assert_allclose(obs[:10], body.ravel(), atol=1e-9)

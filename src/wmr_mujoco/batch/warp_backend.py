@@ -41,6 +41,12 @@ CHUNK = 250
 OVERFLOW_BITS = ("NEFC", "NJMAX_NNZ", "BROADPHASE", "NARROWPHASE", "CCD", "HFIELD",
                  "CONTACT_MATCH", "NVMAX", "EPA_HORIZON", "TACTILE")
 
+#: Appended to a divergence: what differs from C MuJoCo and where to read about it.
+FLOAT32_HINT = ("MuJoCo Warp steps in float32, where a model C MuJoCo runs in float64 can "
+                "still diverge (e.g. friction rows far stiffer than the bodies they act on "
+                "make Newton's Hessian too ill-conditioned: docs/batch.md, 'Float32 and the "
+                "ball casters'); backend='rollout' runs it in float64")
+
 
 class WarpBackend(Backend):
     """MuJoCo Warp, members sharded over devices.
@@ -249,7 +255,7 @@ class _ShardRun:
             if not finite.all():
                 raise SimulationDivergedError(
                     f"member {self.first + int(np.argmin(finite))} of the batch: non-finite "
-                    f"{f} by step {k1} (backend 'warp')")
+                    f"{f} by step {k1} (backend 'warp'); {FLOAT32_HINT}")
 
     def states(self) -> list[np.ndarray]:
         """Each member's full-physics states."""

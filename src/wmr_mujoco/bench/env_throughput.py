@@ -1,19 +1,20 @@
 """Environment steps per second, one process, against a bare ``mj_step`` loop.
 
-``python -m wmr_mujoco.bench.env_throughput [--seconds S] [--repeats N] [--vector N] [ID ...]``
-prints, for each Gymnasium environment (default: one GoToGoal per drivable robot, and the
-Whipple bicycle's StayUpright), the steps/s of
+``python -m wmr_mujoco.bench.env_throughput [--seconds S] [--repeats N] [--vector N] [--all]
+[ID ...]`` prints, for each Gymnasium environment (default: one GoToGoal per drivable robot,
+and the Whipple bicycle's StayUpright; ``--all``: every id), the steps/s of
 
-* ``env``: ``env.step`` of ``gymnasium.make(id)`` (whatever wrappers it registers);
+* ``env``: ``env.step`` of ``gymnasium.make(id)`` (whatever wrappers it registers), which
+  steps the physics through the environments' recording-free loop
+  (:mod:`wmr_mujoco.envs.stepping`);
 * ``vector``: ``gymnasium.make_vec`` of ``--vector`` copies (``"sync"``: stepped one after
   the other in this process), counting every copy's steps;
-* ``drive``: the stepping API alone, ``robot.step(command)`` (:mod:`wmr_mujoco.drive`, the
-  same commands, no task), which the environment calls once per step;
+* ``drive``: the stepping API, ``robot.step(command)`` (:mod:`wmr_mujoco.drive`, the same
+  commands, no task; it records the history an environment does not need);
 * ``bare``: ``data.ctrl[:] = u; mujoco.mj_step(model, data, frame_skip)`` on the same
   model, replaying the controls that the stepping API wrote,
 
-and the ratios to the bare loop: the gap between ``env`` and ``drive`` is the
-environment's own cost (task, observation, reward), the rest the stepping API's.
+and the ratios to the bare loop.
 
 All four replay one recorded episode of the scripted controller
 (:mod:`wmr_mujoco.envs.scripted`, the same seed every time): the actions as float32 (as a
@@ -207,11 +208,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Print the table; exit 1 if a ratio is under the 70 % goal, 2 on bad arguments."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("ids", nargs="*", help="environment ids (default: one per robot)")
+    parser.add_argument("--all", action="store_true", help="every environment id")
     parser.add_argument("--seconds", type=float, default=1.0)
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--vector", type=int, default=4, help="copies in the vector env")
     args = parser.parse_args(argv)
-    ids = check_ids(parser, args.ids) or default_ids()
+    ids = check_ids(parser, args.ids) or (list(wenvs.ENV_IDS) if args.all else default_ids())
     if not 0.05 <= args.seconds <= 30 or not 1 <= args.repeats <= 20 or \
             not 1 <= args.vector <= 64:
         parser.error(f"--seconds {args.seconds} (valid: 0.05 to 30), --repeats "

@@ -3,8 +3,10 @@
 ``python -m wmr_mujoco.bench.omni_energy_study`` (``make study``, a few minutes):
 
 1. the coasting energy budget (:func:`coast_energy_budget`) of four coasts: the default
-   contacts, the softer contacts shipped before them (:data:`SOFT`), stiffer contacts
-   (:data:`STIFF`, nearer the rigid limit), and a pure translation at the default;
+   contacts, softer and stiffer ones (the roller-floor pairs' time constants of
+   :data:`~wmr_mujoco.bench.omni_stiffness.SOFTER` and
+   :data:`~wmr_mujoco.bench.omni_stiffness.STIFFER`, nearer the rigid limit), and a pure
+   translation at the default;
 2. omni3's dynamic scenarios (step commands, torque inputs, coasting, slip onset)
    through the one runner (:func:`~wmr_mujoco.validation.runner.run_all`), every row;
 3. the torque runs and the coast at finer simulation steps
@@ -31,27 +33,29 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
+from wmr_mujoco.bench import omni_stiffness
 from wmr_mujoco.docs_sync.markers import publish, study_parser
+from wmr_mujoco.models.builders.wheel_pairs import WHEEL_PAIR_STEPS
 from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import coast_start, contact_wheels
 from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.metrics import Metric
 
 DOC = Path(__file__).resolve().parents[3] / "docs" / "omni-dynamics.md"
-#: Roller contacts' ``solref`` time constants of the budget's other coasts, s: the soft
-#: setting shipped before the default, and a stiffer one (each with the step half of it).
-SOFT = 0.008
-STIFF = 0.001
 
 
-def _stiffen(model: mujoco.MjModel, timeconst: float) -> None:
-    """Roller contacts with solref time constant ``timeconst``, the step half of it."""
+def contact_params(timeconst: float) -> OmniParams:
+    """omni3 with roller-floor pairs of ``solref`` time constant ``timeconst``.
+
+    The step is :data:`~wmr_mujoco.models.builders.wheel_pairs.WHEEL_PAIR_STEPS` times
+    shorter (the pairs' least time constant; the defaults' ratio).
+
+    Raises:
+        ValueError: a time constant outside (0, 0.1] s.
+    """
     if not (math.isfinite(timeconst) and 0 < timeconst <= 0.1):
         raise ValueError(f"contact_timeconst = {timeconst!r}; valid range is (0, 0.1] s")
-    rollers = [g for g in range(model.ngeom)
-               if model.geom_conaffinity[g] and model.geom_bodyid[g] != 0]
-    model.geom_solref[rollers, 0] = timeconst
-    model.opt.timestep = timeconst / 2.0
+    return omni_stiffness.stiff(timeconst, timeconst / WHEEL_PAIR_STEPS)
 
 
 def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
@@ -59,18 +63,20 @@ def coast_energy_budget(twist: tuple[float, float, float] = (0.3, 0.0, 1.0),
                         contact_timeconst: float | None = None) -> list[Metric]:
     """Where a coast's kinetic energy goes, measured in the physics, step by step.
 
+    ``contact_timeconst`` (None: the defaults): the roller-floor pairs' time constant, s
+    (:func:`contact_params`).
+
     Raises:
         ValueError: non-finite twist, bad durations or contact time constant.
     """
     if not (math.isfinite(duration) and 0 < duration <= 30):
         raise ValueError(f"duration = {duration!r} s; valid range is (0, 30] s")
+    params = None if contact_timeconst is None else contact_params(contact_timeconst)
 
     def setup(model: mujoco.MjModel) -> None:
-        if contact_timeconst is not None:
-            _stiffen(model, contact_timeconst)
         model.opt.enableflags |= mujoco.mjtEnableBit.mjENBL_ENERGY
 
-    model, data = coast_start(twist, drive_time, setup)
+    model, data = coast_start(twist, drive_time, setup, params)
     dt = model.opt.timestep
     energy0 = float(data.energy[0] + data.energy[1])
     work = {"single normal": 0.0, "single tangential": 0.0, "overlap normal": 0.0,
@@ -114,7 +120,7 @@ def budget_table(budgets: dict[str, list[Metric]]) -> str:
 
 def main(argv: list[str] | None = None) -> None:  # pragma: no cover - a few minutes
     """Run the budgets and omni3's dynamic scenarios; print and paste the tables."""
-    from wmr_mujoco.bench import omni_overlap, omni_stiffness, omni_timestep
+    from wmr_mujoco.bench import omni_overlap, omni_timestep
     from wmr_mujoco.robots import get_spec
     from wmr_mujoco.validation.report import markdown_table
     from wmr_mujoco.validation.runner import run_all
@@ -122,11 +128,12 @@ def main(argv: list[str] | None = None) -> None:  # pragma: no cover - a few min
 
     args = study_parser(__doc__.splitlines()[0]).parse_args(argv)
     default = f"default contacts (solref {1000 * OmniParams().sim.contact_timeconst:g} ms)"
+    soft, stiff = omni_stiffness.SOFTER[0], omni_stiffness.STIFFER[0]
     budgets = {f"(0.3, 0, 1), {default}": coast_energy_budget(),
-               f"(0.3, 0, 1), solref {1000 * SOFT:g} ms": coast_energy_budget(
-                   contact_timeconst=SOFT),
-               f"(0.3, 0, 1), solref {1000 * STIFF:g} ms": coast_energy_budget(
-                   contact_timeconst=STIFF, duration=2.0),
+               f"(0.3, 0, 1), solref {1000 * soft:g} ms": coast_energy_budget(
+                   contact_timeconst=soft),
+               f"(0.3, 0, 1), solref {1000 * stiff:g} ms": coast_energy_budget(
+                   contact_timeconst=stiff, duration=2.0),
                f"(0.3, 0, 0), {default}": coast_energy_budget((0.3, 0.0, 0.0))}
     spec = get_spec("omni3")
     work = [(spec, s) for s in spec.scenarios if s.kind is ScenarioKind.MEASUREMENT]

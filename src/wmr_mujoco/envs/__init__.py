@@ -1,8 +1,8 @@
 """Gymnasium environments of the wheeled robots, registered as ``wmr/<Robot>-<Task>-v0``.
 
 Importing this package registers one environment per drivable robot (a robot with
-actuators, :mod:`wmr_mujoco.drive`) and task of its profile
-(:mod:`wmr_mujoco.envs.profiles`)::
+actuators, :mod:`wmr_mujoco.drive`) and task that its registry entry offers
+(``RobotSpec.learning``, read by :mod:`wmr_mujoco.envs.profiles`)::
 
     import gymnasium as gym
     import wmr_mujoco.envs

@@ -1,7 +1,10 @@
 """Gymnasium environments of the wheeled robots (``wmr/<Robot>-<Task>-v0``).
 
 Every step holds the robot's natural command (:mod:`wmr_mujoco.drive`) for one control
-period (``frame_skip`` MuJoCo timesteps, ``dt = frame_skip · timestep``). Observation and
+period (``frame_skip`` MuJoCo timesteps, ``dt = frame_skip · timestep``), through the
+environments' own recording-free loop (:mod:`wmr_mujoco.envs.stepping`: the stepping API's
+physics, bit for bit, without its history): ``env.unwrapped.episode.state`` is the state
+after the last step, while ``env.unwrapped.robot.state`` stays at the last reset. Observation and
 action: :mod:`wmr_mujoco.envs.episode` and the task modules
 (:mod:`wmr_mujoco.envs.tasks`); ``env.unwrapped.describe()`` lists the observation's
 blocks with units.
@@ -90,6 +93,8 @@ class WmrEnv(gym.Env):
                                                 np.float32)
         self._renderer = None
         self._viewer = None
+        if render_mode != "human":  # nothing to do around a step: one call less per step
+            self.step = self.episode.step  # type: ignore[method-assign]
 
     @property
     def robot(self) -> Any:

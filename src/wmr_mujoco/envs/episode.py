@@ -25,6 +25,7 @@ import numpy as np
 from wmr_mujoco.drive import make
 from wmr_mujoco.envs.profiles import Profile, profile, robot_name
 from wmr_mujoco.envs.randomization import Band, Bands, Randomizer
+from wmr_mujoco.envs.stepping import Snapshot, Stepper
 from wmr_mujoco.envs.tasks import Field, Task, task_class
 
 MODES = ("command", "wheels")
@@ -58,6 +59,24 @@ def check_action(action: Any, n: int) -> list[float]:
         raise ValueError(f"action {a.tolist()} is not finite; expected {n} finite numbers "
                          "in [-1, 1]")
     return np.clip(a, -1.0, 1.0).tolist()
+
+
+def box_scale(low: np.ndarray, high: np.ndarray) -> tuple[list[float], list[float]]:
+    """``(c, h)`` per channel: ``c + h a`` lies in ``[low, high]`` for every ``a`` in [-1, 1].
+
+    ``c = (high + low) / 2``, ``h = (high − low) / 2``, with ``h`` shrunk by an ulp where
+    rounding would put ``c ± h`` outside the box: floating-point multiplication and
+    addition are monotonic, so the two ends bound every action in between and a command
+    needs no clipping.
+    """
+    cs, hs = [], []
+    for lo, hi in zip(low.tolist(), high.tolist(), strict=True):
+        c, h = (hi + lo) / 2, (hi - lo) / 2
+        while h > 0 and (c + h > hi or c - h < lo):
+            h = math.nextafter(h, 0.0)
+        cs.append(c)
+        hs.append(h)
+    return cs, hs
 
 
 class Episode:
@@ -102,9 +121,8 @@ class Episode:
         space = self.robot.command_space
         self.center = (space.high + space.low) / 2
         self.half = (space.high - space.low) / 2
-        #: ``(c, h, low, high)`` of each channel as floats, for :meth:`command`.
-        self._scale = list(zip(self.center.tolist(), self.half.tolist(), space.low.tolist(),
-                               space.high.tolist(), strict=True))
+        #: ``c`` and ``h`` of each channel as floats (:func:`box_scale`).
+        self._c, self._h = box_scale(space.low, space.high)
         self.bands = prof.bands if randomize is True else (randomize or None)
         self.randomizer = (Randomizer(self.robot.model, self.bands, self.robot.wheel_names)
                            if self.bands is not None else None)
@@ -115,7 +133,10 @@ class Episode:
             Field("last_action", self.n_action, "1"))
         self.size = sum(f.size for f in self.fields)
         self.dt = self.robot.control_period
-        self.state: Any = None
+        #: The recording-free physics loop on the robot's model and data.
+        self.stepper = Stepper(self.robot)
+        self.state: Snapshot | None = None
+        self._shape = (self.n_action,)
         self.last_action = [0.0] * self.n_action
         self.factors: dict[str, np.ndarray] = {}
 
@@ -124,18 +145,15 @@ class Episode:
         if self.randomizer is not None:
             self.factors = self.randomizer.apply(rng, self.robot.data)
         start = self.task.sample(rng)
-        self.state = self.robot.reset(pose=start, seed=int(rng.integers(2**31)))
-        self.task.start(self.robot, rng)
-        if self.robot.data is not None and hasattr(self.robot, "reader"):
-            # The task may have set the robot in motion: read the state again.
-            self.state = self.robot.reader.read(self.robot.data, 0.0, float(start[2]))
+        self.robot.reset(pose=start, seed=int(rng.integers(2**31)))
+        self.task.start(self.robot, rng)  # it may set the robot in motion: read it after
+        self.state = self.stepper.start(float(start[2]))
         self.last_action = [0.0] * self.n_action
         return self.observe()
 
     def command(self, action: Any) -> list[float]:
         """The robot command ``c + h a`` of a checked normalised action (kept in the box)."""
-        return [min(hi, max(lo, c + h * a))
-                for (c, h, lo, hi), a in zip(self._scale, action, strict=True)]
+        return [c + h * a for c, h, a in zip(self._c, self._h, action, strict=True)]
 
     def action(self, command: np.ndarray) -> np.ndarray:
         """The normalised action of a robot command (the inverse of :meth:`command`)."""
@@ -153,12 +171,25 @@ class Episode:
         prev = self.state
         if prev is None:
             raise RuntimeError("call reset() before step()")
-        a = check_action(action, self.n_action)
+        # The usual action, a float array of the right shape inside [-1, 1], is checked on
+        # Python floats; anything else (a NaN fails the bounds) goes through check_action,
+        # which raises or clips.
+        if type(action) is np.ndarray and action.shape == self._shape and \
+                action.dtype.kind == "f":
+            a = action.tolist()
+            for v in a:
+                if not -1.0 <= v <= 1.0:
+                    a = check_action(action, self.n_action)
+                    break
+        else:
+            a = check_action(action, self.n_action)
         task = self.task
-        self.state = state = self.robot.step(self.command(a))
+        # a has n_action entries (checked above).
+        self.state = state = self.stepper.step([c + h * v for c, h, v in
+                                                zip(self._c, self._h, a, strict=False)])
         self.last_action = a
         terms, success, failure = task.evaluate(prev, state, a, self.dt)
-        time = state.time.item()
+        time = state.time
         truncated = not (success or failure) and time >= task.time_limit - 1e-9
         if truncated:
             success = task.succeeded_at_time_limit(state)
@@ -170,8 +201,11 @@ class Episode:
     def observe(self) -> np.ndarray:
         """The observation vector (float32; module docstring)."""
         s = self.state
-        return np.array(self.task.observe(s) + s.twist.tolist() + s.wheel_rates.tolist()
-                        + self.last_action, np.float32)
+        obs = self.task.observe(s)  # a new list: extended in place
+        obs += s.uvr
+        obs += s.wheel_rates_list
+        obs += self.last_action
+        return np.array(obs, np.float32)
 
     def describe(self) -> str:
         """The observation's blocks with their units, one per line."""

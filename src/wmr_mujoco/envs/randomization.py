@@ -14,61 +14,21 @@ reset, from the environment's seeded generator, starting from the nominal model 
 * ``servo_gain``: each actuator's gain and affine bias (``kv`` of a velocity servo,
   ``kp, kv`` of a steering servo, the torque constant of a motor), one factor per actuator.
 
-The bands must lie inside :data:`PHYSICAL` (otherwise ``ValueError``): beyond them the
-model leaves what it describes (a coefficient of friction of rubber on a floor
-between about 0.1 and 3 times the nominal 1.0; masses within a factor of 2; wheel
-radii within ±10 %, worn or over-inflated tyres; servo gains within a factor of 5).
+The bands (:class:`~wmr_mujoco.robots.learning.Bands`, declared in each robot's registry
+entry) must lie inside :data:`~wmr_mujoco.robots.learning.PHYSICAL` (otherwise
+``ValueError``).
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, fields
+from collections.abc import Sequence
 
 import mujoco
 import numpy as np
 
-Band = tuple[float, float]
+from wmr_mujoco.robots.learning import PHYSICAL, Band, Bands
 
-#: The physical range of each factor (module docstring).
-PHYSICAL: Mapping[str, Band] = {"friction": (0.1, 3.0), "mass": (0.5, 2.0),
-                                "wheel_radius": (0.9, 1.1), "servo_gain": (0.2, 5.0)}
-
-
-@dataclass(frozen=True)
-class Bands:
-    """Factor bands of one robot (None: that quantity is not randomised).
-
-    Raises:
-        ValueError: a band that is not ``lo <= hi`` inside its :data:`PHYSICAL` range.
-    """
-
-    friction: Band | None = (0.7, 1.3)
-    mass: Band | None = (0.85, 1.15)
-    wheel_radius: Band | None = (0.98, 1.02)
-    servo_gain: Band | None = (0.8, 1.2)
-
-    def __post_init__(self) -> None:
-        for f in fields(self):
-            band = getattr(self, f.name)
-            if band is None:
-                continue
-            lo, hi = PHYSICAL[f.name]
-            ok = (isinstance(band, (tuple, list)) and len(band) == 2
-                  and all(isinstance(b, (int, float)) and math.isfinite(b) for b in band))
-            if not (ok and lo <= band[0] <= band[1] <= hi):
-                raise ValueError(f"randomisation band {f.name}={band!r}: need (lo, hi) with "
-                                 f"{lo} <= lo <= hi <= {hi} (the physical range of the "
-                                 f"{f.name} factor)")
-
-    def replace(self, **changes: Band | None) -> Bands:
-        """A copy with some bands changed (checked like the constructor)."""
-        unknown = sorted(set(changes) - {f.name for f in fields(self)})
-        if unknown:
-            raise ValueError(f"unknown randomisation band(s) {unknown}; valid: "
-                             f"{', '.join(f.name for f in fields(self))}")
-        return Bands(**{**{f.name: getattr(self, f.name) for f in fields(self)}, **changes})
+__all__ = ["PHYSICAL", "Band", "Bands", "Randomizer", "wheel_geoms"]
 
 
 def wheel_geoms(model: mujoco.MjModel, wheels: Sequence[str]) -> list[tuple[int, np.ndarray]]:

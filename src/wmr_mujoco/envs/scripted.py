@@ -1,28 +1,31 @@
 """Scripted controllers in the robots' natural commands: proof that each task is solvable.
 
-The controller is chosen by the command space's channel names (never by robot name):
+The control laws are the loop layer's (:mod:`wmr_mujoco.loop.control`), chosen by the
+command space's channel names (never by robot name), at cruise speed ``V = ½ L`` (``L``
+the robot's task scale, at most half its speed limit) and look-ahead ``L_d = 0.35 L``:
 
-* ``(u, v, r)`` holonomic: move toward a look-ahead point at speed ``V``,
-  ``(u, v) = V p_L / |p_L|`` (body frame), and turn toward the path's heading,
-  ``r = k_ψ e_ψ``. GoToGoal: straight at the goal, ``(u, v) = k_p p_g`` (capped at ``V``).
-* ``(v, omega)`` unicycle: pure pursuit (Coulter 1992) of a look-ahead point ``p_L`` at
-  distance ``L_d``: ``κ = 2 y_L / |p_L|²``, ``v = V``, ``ω = V κ``.
-* ``(v, steer)`` car-like (parameters with a ``wheelbase`` ℓ): the same ``κ`` through the
-  bicycle's kinematics, ``φ = atan(ℓ κ)``.
+* ``(u, v, r)`` holonomic: :class:`~wmr_mujoco.loop.control.holonomic.HolonomicPose`
+  (gains ``k_p``, ``k_ψ``, translation capped at ``V``) toward the goal pose (GoToGoal),
+  or toward the look-ahead point of the path with the path's heading at the nearest
+  point (FollowPath: ``k_p L_d > V``, so it moves at ``V`` toward that point).
+* ``(v, omega)`` unicycle: pure pursuit
+  (:class:`~wmr_mujoco.loop.control.pure_pursuit.PurePursuit`), ``κ = 2 sin α / L_d``,
+  ``v = V``, ``ω = V κ``.
+* ``(v, steer)`` car-like (parameters with a ``wheelbase`` ℓ): the same pure pursuit
+  writing ``δ = atan(ℓ κ)`` (clipped to the steering range).
+* ``(v, front_steer, rear_steer)``: pure pursuit's ``κ`` for two steered wheels at ``±h``
+  along the body turned symmetrically about the centre, ``δ_f = −δ_r = atan(h κ)``: the
+  centre then moves along the body axis on curvature κ.
 * ``(v, steer)`` with one centred steered wheel (no wheelbase; the yaw is free, a
-  Chaplygin sleigh): steer the wheel at the look-ahead point, ``β = atan2(y_L, x_L)``
-  (clipped to the steering range), ``v = V``; a point behind (``|β| > π/2``) is reached
-  rolling backwards, ``β → β + π``, ``v = −V``. GoToGoal: ``p_L`` is the goal and
-  ``V → min(V, k_p d)``.
-* ``(v, front_steer, rear_steer)``: two steered wheels at ``±h`` along the body, turned
-  symmetrically about the centre, ``δ_f = −δ_r = atan(h κ)``: the centre then moves
-  along the body axis on curvature κ.
-* ``(rear_torque, steer_torque)`` of the Whipple bicycle: the control package's LQR
-  steer-into-the-lean law with its rear-wheel speed hold
-  (:class:`~wmr_mujoco.control.whipple_lean.WhippleLean`), designed at the task's speed.
+  Chaplygin sleigh): steer the wheel at pure pursuit's look-ahead point ``p_L``,
+  ``β = atan2(y_L, x_L)`` (clipped to the steering range), ``v = V``; a point behind
+  (``|β| > π/2``) is reached rolling backwards, ``β → β + π``, ``v = −V``. GoToGoal: ``p_L``
+  is the goal and ``V → min(V, k_p d)``.
+* A command map with a balancing law (``CommandMap.balance``, the Whipple bicycle's LQR
+  steer-into-the-lean law with its speed hold): that law, designed at the task's speed.
 
 GoToGoal (non-holonomic) follows a cubic Hermite path from the start pose to the goal pose
-(:func:`~wmr_mujoco.control.paths.hermite_path`), so the goal is reached with its heading.
+(:func:`~wmr_mujoco.loop.control.paths.hermite_path`), so the goal is reached with its heading.
 """
 
 from __future__ import annotations
@@ -32,11 +35,12 @@ from typing import Any
 
 import numpy as np
 
-from wmr_mujoco.control.paths import Path, extend, hermite_path
-from wmr_mujoco.control.whipple_lean import WhippleLean
 from wmr_mujoco.envs.episode import Episode
-from wmr_mujoco.envs.tasks import FollowPath, GoToGoal, StayUpright
+from wmr_mujoco.envs.tasks import FollowPath, GoToGoal
 from wmr_mujoco.envs.tasks.base import to_body, wrap
+from wmr_mujoco.loop.control.holonomic import HolonomicPose
+from wmr_mujoco.loop.control.paths import Path, extend, hermite_path
+from wmr_mujoco.loop.control.pure_pursuit import PurePursuit
 
 #: Cruise speed in robot lengths per second (``V = SPEED · L``, at most half the limit).
 SPEED = 0.5
@@ -44,6 +48,9 @@ SPEED = 0.5
 LOOKAHEAD = 0.35
 #: Heading gain of the holonomic controller, 1/s; position gain, 1/s.
 K_HEADING, K_POSITION = 2.0, 1.5
+#: The command kinds by channel names (``"car"`` needs a wheelbase, else ``"wheel"``).
+KINDS = {("u", "v", "r"): "holonomic", ("v", "omega"): "unicycle", ("v", "steer"): "car",
+         ("v", "front_steer", "rear_steer"): "double"}
 
 
 class Scripted:
@@ -55,87 +62,86 @@ class Scripted:
 
     def __init__(self, episode: Episode) -> None:
         self.ep = episode
-        names = tuple(episode.robot.command_space.names)
-        params = (episode.robot.spec.params_type() if episode.robot.spec.params_type
-                  else None)
-        self.kind = {("u", "v", "r"): "holonomic", ("v", "omega"): "unicycle",
-                     ("v", "steer"): "carlike" if hasattr(params, "wheelbase") else "wheel",
-                     ("v", "front_steer", "rear_steer"): "double"}.get(names)
-        if isinstance(episode.task, StayUpright):
+        robot = episode.robot
+        names = tuple(robot.command_space.names)
+        params = robot.spec.params_type() if robot.spec.params_type else None
+        self.kind = KINDS.get(names)
+        if self.kind == "car" and not hasattr(params, "wheelbase"):
+            self.kind = "wheel"
+        if robot.mode == "command" and robot.spec.command.balance is not None:
             self.kind = "balance"
         if self.kind is None:
             raise ValueError(f"no scripted controller for the command {names}; scripted "
-                             "commands: (u, v, r), (v, omega), (v, steer), and the Whipple "
-                             "bicycle's torques")
-        high = episode.robot.command_space.high
-        self.speed = min(SPEED * episode.profile.scale, 0.5 * float(high[0]))
-        self.lookahead = LOOKAHEAD * episode.profile.scale
+                             "commands: (u, v, r), (v, omega), (v, steer), (v, front_steer, "
+                             "rear_steer), and a command map's balancing law")
+        high = robot.command_space.high
+        scale = episode.profile.scale
+        self.speed = min(SPEED * scale, 0.5 * float(high[0]))
+        self.lookahead = LOOKAHEAD * scale
+        self.steer_limit = float(high[1]) if len(high) > 1 else math.pi
         self.path: Path | None = None
         #: Arc length of the last nearest point on the path (the search's hint), m.
-        self.s: float | None = None
-        if self.kind == "carlike":
-            self.wheelbase = float(params.wheelbase)
-        if self.kind == "double":
-            self.wheelbase = float(params.half_wheelbase)
-        self.steer_limit = float(high[1]) if len(high) > 1 else math.pi
-        self.balance: WhippleLean | None = None
+        self.s = 0.0
+        self.law: Any = None
+        if self.kind == "holonomic":
+            self.law = HolonomicPose(K_POSITION, K_HEADING, self.speed, float(high[2]))
+        elif self.kind != "balance":
+            wheelbase = float(params.wheelbase) if self.kind == "car" else None
+            self.law = PurePursuit(self.speed, self.lookahead, wheelbase, self.steer_limit)
+        #: The steered wheels' distance from the centre, m (the double steer's ``h``).
+        self.half_wheelbase = float(params.half_wheelbase) if self.kind == "double" else 0.0
 
     def reset(self) -> None:
-        """Plan the episode: the path to follow, or the balance gains at the target speed."""
-        task, state = self.ep.task, self.ep.state
-        self.s = None
+        """Plan the episode: the path to follow, or the balancing law at the target speed."""
+        task, robot = self.ep.task, self.ep.robot
+        if self.kind == "balance":
+            self.law = robot.spec.command.balance.law(task.speed, robot.params)
+            return
+        self.law.reset()
+        self.s = 0.0
         if isinstance(task, FollowPath):
             self.path = task.path
         elif isinstance(task, GoToGoal):
-            self.path = extend(hermite_path(np.asarray(state.pose, float), task.goal),
+            self.path = extend(hermite_path(np.asarray(self.ep.state.pose, float), task.goal),
                                2.0 * self.ep.profile.scale)
-        else:
-            self.balance = WhippleLean(speed=task.speed)
 
     def command(self, state: Any) -> np.ndarray:
         """The natural command for ``state``."""
-        if self.kind == "balance":
-            return self._balance(state)
-        if self.kind == "holonomic" and isinstance(self.ep.task, GoToGoal):
-            return self._holonomic_goal(state)
-        pose = np.asarray(state.pose, float)
-        near = (self.path.closest(pose[:2]) if self.s is None
-                else self.path.track(pose[:2], self.s))
-        self.s = near.s
-        target = to_body(pose, self.path.positions(near.s + self.lookahead))
-        if self.kind == "holonomic":
-            e = wrap(near.heading - pose[2])
-            return np.array([*(self.speed * target / max(np.linalg.norm(target), 1e-6)),
-                             K_HEADING * e])
-        kappa = 2.0 * target[1] / max(float(target @ target), 1e-6)
-        if self.kind == "unicycle":
-            return np.array([self.speed, self.speed * kappa])
-        if self.kind == "wheel":
-            speed = self.speed
-            if isinstance(self.ep.task, GoToGoal):  # its goal is a position: head for it
-                target = to_body(pose, self.ep.task.goal[:2])
-                speed = min(speed, K_POSITION * float(np.hypot(*target)))
-            beta, v = math.atan2(target[1], target[0]), speed
-            if abs(beta) > math.pi / 2:  # the point is behind: roll the wheel backwards
-                beta, v = wrap(beta + math.pi), -v
-            return np.array([v, min(self.steer_limit, max(-self.steer_limit, beta))])
-        delta = math.atan(self.wheelbase * kappa)
-        if self.kind == "double":
+        kind, task, t = self.kind, self.ep.task, float(state.time)
+        if kind == "balance":
+            return self.law(state, None, t)
+        if kind == "holonomic":
+            if isinstance(task, GoToGoal):
+                return self.law(state, task.goal, t)
+            near, ahead = self._ahead(state)
+            return self.law(state, np.array([*ahead.position, near.heading]), t)
+        if kind == "unicycle" or kind == "car":
+            return self.law(state, self.path, t)
+        if kind == "double":
+            delta = math.atan(self.half_wheelbase * self.law.curvature(state, self.path))
             return np.array([self.speed, delta, -delta])
-        return np.array([self.speed, delta])
+        return self._wheel(state)
 
-    def _holonomic_goal(self, state: Any) -> np.ndarray:
+    def _ahead(self, state: Any) -> tuple[Any, Any]:
+        """The path's nearest point and pure pursuit's look-ahead point (Coulter's)."""
+        xy = np.asarray(state.pose, float)[:2]
+        near = self.path.closest(xy, self.s)
+        self.s = near.s
+        return near, self.path.lookahead(xy, self.lookahead, near.s)
+
+    def _wheel(self, state: Any) -> np.ndarray:
+        """The centred steered wheel (module docstring)."""
         pose = np.asarray(state.pose, float)
-        goal = self.ep.task.goal
-        p = to_body(pose, goal[:2])
-        v = K_POSITION * p
-        n = float(np.linalg.norm(v))
-        if n > self.speed:
-            v *= self.speed / n
-        return np.array([*v, K_HEADING * wrap(goal[2] - pose[2])])
-
-    def _balance(self, state: Any) -> np.ndarray:
-        return self.balance(state, None, float(state.time))
+        speed = self.speed
+        if isinstance(self.ep.task, GoToGoal):  # its goal is a position: head for it
+            target = to_body(pose, self.ep.task.goal[:2])
+            speed = min(speed, K_POSITION * float(np.hypot(*target)))
+        else:
+            target = to_body(pose, self._ahead(state)[1].position)
+        beta, v = math.atan2(target[1], target[0]), speed
+        if abs(beta) > math.pi / 2:  # the point is behind: roll the wheel backwards
+            beta, v = wrap(beta + math.pi), -v
+        return np.array([v, min(self.steer_limit, max(-self.steer_limit, beta))])
 
     def action(self, state: Any) -> np.ndarray:
         """The normalised action of :meth:`command`, clipped to ``[-1, 1]``."""

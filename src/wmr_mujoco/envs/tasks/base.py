@@ -3,7 +3,8 @@
 A task samples an episode (goal, path or speed), reads a robot's :class:`RobotState`
 (``wmr_mujoco.drive``), and returns its part of the observation, its reward terms one by
 one, and whether the episode succeeded or failed. The reward is the sum of the terms.
-Lengths scale with the robot (``scale``, m, from its :class:`~wmr_mujoco.envs.profiles.Profile`).
+Lengths scale with the robot (``scale``, m, from its registry entry's
+:class:`~wmr_mujoco.robots.learning.Learning`).
 """
 
 from __future__ import annotations
@@ -53,6 +54,18 @@ def effort(action: Sequence[float]) -> float:
 def wrap(angle: float) -> float:
     """Angle wrapped to ``(-π, π]``, rad (:func:`wmr_mujoco.analytic.planar.wrap_angle`)."""
     return float(wrap_angle(angle))
+
+
+def pose_of(state: Any) -> tuple[float, float, float]:
+    """``(x, y, ψ)`` of a state, floats: an environment's snapshot's own, else its pose's."""
+    xyh = getattr(state, "xyh", None)
+    return xyh if xyh is not None else tuple(state.pose.tolist()[:3])
+
+
+def speed_of(state: Any) -> float:
+    """Forward speed ``u`` of a state, m/s (a snapshot's float, else its twist's)."""
+    uvr = getattr(state, "uvr", None)
+    return uvr[0] if uvr is not None else float(state.twist[0])
 
 
 def to_body(pose: np.ndarray, xy: np.ndarray) -> np.ndarray:

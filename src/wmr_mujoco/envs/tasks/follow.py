@@ -20,6 +20,7 @@ Success: ``s*`` reaches the end. Failure: ``|e| > max_deviation``.
 
 from __future__ import annotations
 
+import bisect
 import math
 from collections.abc import Sequence
 from typing import Any, NamedTuple
@@ -27,7 +28,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from wmr_mujoco.control.paths import Path, extend, random_path
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, wrap
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, pose_of
 from wmr_mujoco.envs.tasks.goal import BONUS
 
 #: Look-ahead distances of the observation, in units of the robot's length scale.
@@ -48,6 +49,9 @@ class Projection(NamedTuple):
     heading: float
 
 
+_new = tuple.__new__  # a Projection in one C call
+
+
 class FollowPath(Task):
     """Follow a random smooth path (module docstring)."""
 
@@ -62,11 +66,31 @@ class FollowPath(Task):
             "max_curvature": max_curvature}, lengths=("path_length",))
         self.options = o
         self.time_limit = o["time_limit"]
-        self.path: Path | None = None
         #: Arc length of the path proper (the path runs on straight beyond it), m.
         self.end = o["path_length"]
-        self._ahead = AHEAD * scale
-        self._proj: tuple[Any, Projection] | None = None
+        self._ahead = (AHEAD * scale).tolist()
+        self.path = None
+
+    @property
+    def path(self) -> Path | None:
+        """The episode's path (its samples are kept as floats for the per-step search)."""
+        return self._path
+
+    @path.setter
+    def path(self, path: Path | None) -> None:
+        self._path = path
+        #: ``(state, projection, segment)`` of the last state projected.
+        self._proj: tuple[Any, Projection, int] | None = None
+        if path is None:
+            return
+        self._s = path.s.tolist()
+        self._x, self._y = path.xy[:, 0].tolist(), path.xy[:, 1].tolist()
+        self._heading = path.heading.tolist()
+        #: Per segment ``(a_x, a_y, d_x, d_y, 1/|d|²)``: its start and its vector (a
+        #: segment of no length: 0, its foot is its start).
+        self._segments = [(ax, ay, bx - ax, by - ay, _inverse((bx - ax) ** 2 + (by - ay) ** 2))
+                          for ax, ay, bx, by in zip(self._x, self._y, self._x[1:],
+                                                    self._y[1:], strict=False)]
 
     def sample(self, rng: np.random.Generator) -> np.ndarray:
         """A new path and a start pose beside its start (docstring)."""
@@ -74,48 +98,114 @@ class FollowPath(Task):
         heading = rng.uniform(-math.pi, math.pi)
         self.path = extend(random_path(rng, np.array([0.0, 0.0, heading]), o["path_length"],
                                        o["max_curvature"]), 2.0 * self.scale)
-        self._proj = None
         off = rng.uniform(-0.1, 0.1) * self.scale
         return np.array([-off * math.sin(heading), off * math.cos(heading),
                          heading + rng.uniform(-0.2, 0.2)])
 
     def project(self, state: Any) -> Projection:
-        """The nearest path point to the robot (searched near the last one; once a state)."""
+        """The nearest path point to the robot (once a state).
+
+        The first state of an episode searches the whole path
+        (:meth:`~wmr_mujoco.loop.control.paths.Path.closest`); each later one walks the
+        segments from the last one's while the distance shrinks (the robot moves a small
+        fraction of a segment's neighbourhood in a step), on floats.
+        """
         last = self._proj
         if last is not None and last[0] is state:
             return last[1]
-        xy = state.pose[:2]
-        q = self.path.closest(xy) if last is None else self.path.track(xy, last[1].s)
-        rx, ry = (xy - q.position).tolist()
-        side = math.cos(q.heading) * ry - math.sin(q.heading) * rx
-        proj = Projection(q.s, math.copysign(math.hypot(rx, ry), side), q.heading)
-        self._proj = (state, proj)
+        x, y, _ = pose_of(state)
+        if last is None:
+            s0 = self._path.closest((x, y)).s
+            i = max(0, min(bisect.bisect_right(self._s, s0) - 1, len(self._segments) - 1))
+        else:
+            i = last[2]
+        i, t = _walk(self._segments, x, y, i)
+        ax, ay, dx, dy, _ = self._segments[i]
+        rx, ry = x - ax - t * dx, y - ay - t * dy
+        s, h = self._s, self._heading
+        heading = h[i] + t * (h[i + 1] - h[i])
+        side = math.cos(heading) * ry - math.sin(heading) * rx
+        proj = _new(Projection, (s[i] + t * (s[i + 1] - s[i]),
+                                 math.copysign(math.hypot(rx, ry), side), heading))
+        self._proj = (state, proj, i)
         return proj
 
     def observe(self, state: Any) -> list[float]:
-        """``(path_ahead, cross_track, sin e_ψ, cos e_ψ, remaining)``."""
+        """``(path_ahead, cross_track, sin e_ψ, cos e_ψ, remaining)``.
+
+        The points ahead are interpolated linearly in arc length between the path's
+        samples (clipped at its far end), in one pass over floats.
+        """
         p = self.project(state)
-        x, y, psi = state.pose.tolist()
-        c, s = math.cos(psi), math.sin(psi)
-        ahead = []
-        for px, py in self.path.positions(p.s + self._ahead).tolist():
-            ahead += (c * (px - x) + s * (py - y), c * (py - y) - s * (px - x))
-        e = wrap(p.heading - psi)
-        return [*ahead, p.cross_track, math.sin(e), math.cos(e), self.end - p.s]
+        x, y, psi = pose_of(state)
+        c, sn = math.cos(psi), math.sin(psi)
+        sl, xl, yl = self._s, self._x, self._y
+        n, end, k, out = len(sl) - 2, sl[-1], self._proj[2], []
+        for d in self._ahead:
+            q = p.s + d
+            q = end if q > end else q
+            k = min(bisect.bisect_right(sl, q, k) - 1, n)
+            t = (q - sl[k]) * _inverse(sl[k + 1] - sl[k])
+            dx, dy = xl[k] + t * (xl[k + 1] - xl[k]) - x, yl[k] + t * (yl[k + 1] - yl[k]) - y
+            out += (c * dx + sn * dy, c * dy - sn * dx)
+        e = math.remainder(p.heading - psi, math.tau)  # wrap() on floats
+        out += (p.cross_track, math.sin(e), math.cos(e), self.end - p.s)
+        return out
 
     def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
                      ) -> dict[str, float]:
         """Progress, cross-track, effort, success and failure terms (docstring)."""
+        return self.evaluate(prev, state, action, dt)[0]
+
+    def evaluate(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                 ) -> tuple[dict[str, float], bool, bool]:
+        """The reward terms and the outcome, from one projection of each state."""
         s0 = self.project(prev).s
         p = self.project(state)
-        success, failure = self.outcome(state)
-        return {"progress": (p.s - s0) / self.scale,
-                "cross_track": -dt * (p.cross_track / self.options["max_deviation"]) ** 2,
-                "effort": effort(action),
-                "success": BONUS if success else 0.0, "failure": -BONUS if failure else 0.0}
+        dev = self.options["max_deviation"]
+        failure = abs(p.cross_track) > dev
+        success = p.s >= self.end and not failure
+        return ({"progress": (p.s - s0) / self.scale,
+                 "cross_track": -dt * (p.cross_track / dev) ** 2, "effort": effort(action),
+                 "success": BONUS if success else 0.0, "failure": -BONUS if failure else 0.0},
+                success, failure)
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """Success at the path's end; failure beyond ``max_deviation``."""
         p = self.project(state)
         failure = abs(p.cross_track) > self.options["max_deviation"]
         return p.s >= self.end and not failure, failure
+
+
+def _inverse(x: float) -> float:
+    """``1 / x``, 0 for ``x = 0``."""
+    return 1.0 / x if x else 0.0
+
+
+def _foot(segment: tuple[float, ...], px: float, py: float) -> tuple[float, float]:
+    """``(squared distance, t)`` of the foot ``a + t d`` of ``(px, py)`` on a segment."""
+    ax, ay, dx, dy, inv = segment
+    t = ((px - ax) * dx + (py - ay) * dy) * inv
+    t = 0.0 if t < 0.0 else 1.0 if t > 1.0 else t
+    ex, ey = ax + t * dx - px, ay + t * dy - py
+    return ex * ex + ey * ey, t
+
+
+def _walk(segments: list[tuple[float, ...]], px: float, py: float, i: int) -> tuple[int, float]:
+    """``(segment, t)`` of the nearest point to ``(px, py)``, walked to from segment ``i``.
+
+    The foot on segment ``k`` is ``a + t d`` with ``t = clip((p − a)·d / |d|², 0, 1)``; the
+    walk goes forward while the next segment's foot is nearer, else backward likewise.
+    """
+    best, t = _foot(segments[i], px, py)
+    last = len(segments) - 1
+    for step in (1, -1):
+        moved = False
+        while 0 <= i + step <= last:
+            d, u = _foot(segments[i + step], px, py)
+            if d >= best:
+                break
+            i, best, t, moved = i + step, d, u, True
+        if moved:
+            break
+    return i, t

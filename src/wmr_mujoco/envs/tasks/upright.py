@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort
+from wmr_mujoco.envs.tasks.base import Field, Task, check_options, effort, speed_of
 from wmr_mujoco.envs.tasks.goal import BONUS
 from wmr_mujoco.robots.whipple import analytic
 from wmr_mujoco.robots.whipple.params import WhippleParams
@@ -78,14 +78,14 @@ class StayUpright(Task):
         """``(φ, φ̇, δ, δ̇, u − v*, v*)``."""
         x = state.extra
         return [x["lean"], x["lean_rate"], x["steer"], x["steer_rate"],
-                float(state.twist[0]) - self.speed, self.speed]
+                speed_of(state) - self.speed, self.speed]
 
     def reward_terms(self, prev: Any, state: Any, action: Sequence[float], dt: float
                      ) -> dict[str, float]:
         """Alive, lean, speed, effort and failure terms (docstring)."""
         fall = self.options["fall_lean"]
         lean = state.extra["lean"]
-        rel = (float(state.twist[0]) - self.speed) / self.speed
+        rel = (speed_of(state) - self.speed) / self.speed
         return {"alive": dt, "lean": -dt * (lean / fall) ** 2, "speed": -dt * rel * rel,
                 "effort": effort(action), "failure": -BONUS if abs(lean) > fall else 0.0}
 
@@ -97,4 +97,4 @@ class StayUpright(Task):
         """Up, and within the speed tolerance."""
         o = self.options
         return (abs(state.extra["lean"]) <= o["fall_lean"] and
-                abs(float(state.twist[0]) - self.speed) <= o["speed_tolerance"] * self.speed)
+                abs(speed_of(state) - self.speed) <= o["speed_tolerance"] * self.speed)

@@ -5,6 +5,18 @@ A wheel whose contact slides is pushed off the floor by its friction rows
 sliding_pair_kwargs`, ``docs/rolling-disc.md`` § 8) needs an explicit ``<pair>`` per wheel
 collider, since a geom has no ``solreffriction``. :func:`wheel_floor_pairs` makes the
 ``scene_extras`` that adds them for a robot from its builder alone.
+
+The remedy sets the model's one ``impratio`` to ``SLIDING_GRIP / d``
+(:func:`~wmr_mujoco.models.builders.common.sliding_impratio`), so every collider that
+touches the floor gets a pair with the same impedance ``d``, the ball casters included.
+A friction row's regulariser is its normal row's ``(1 − d)/d`` over ``impratio``, so its
+stiffness ``D_f`` scales as ``impratio · d/(1 − d)``: a caster left at the collision
+class's ``d ≈ 0.95`` had ``impratio · d ≈ 9500`` (the wheels: 10), friction rows about
+10⁴ times stiffer than the wheels'. C MuJoCo (float64) runs that, but Newton's Hessian
+``M + Jᵀ D J`` then holds an almost free direction (the ball's spin about the vertical,
+inertia ``(2/5) m r²``) beside diagonal entries ``D_f r²`` some 10⁷ times larger, near
+float32's resolution: MuJoCo Warp's float32 Cholesky lost the last pivot within 0.1 s of
+driving, NaN (``python -m wmr_mujoco.bench.batch_parity`` measures it, ``docs/batch.md``).
 """
 
 from __future__ import annotations
@@ -30,8 +42,7 @@ def wheel_collider_names(robot: mjcf.RootElement) -> list[str]:
 
     Every named ``collision``-class geom of a body jointed to its parent by hinges only
     (a wheel, what :class:`~wmr_mujoco.sim.floor_contact.WheelMap` reads; not a ball
-    caster, whose own ``condim`` the caster-drag measurement sets, nor the chassis on its
-    free joint).
+    caster, :func:`caster_collider_names`, nor the chassis on its free joint).
     """
     names = []
     for geom in robot.find_all("geom"):
@@ -46,14 +57,33 @@ def wheel_collider_names(robot: mjcf.RootElement) -> list[str]:
     return names
 
 
+def caster_collider_names(robot: mjcf.RootElement) -> list[str]:
+    """Names of the ball-caster colliders of a built robot.
+
+    Every named ``collision``-class geom of a body jointed to its parent by one ball joint
+    (:func:`~wmr_mujoco.models.builders.caster.add_ball_caster`).
+    """
+    names = []
+    for geom in robot.find_all("geom"):
+        cls = getattr(geom.dclass, "dclass", geom.dclass)
+        if geom.name is None or cls != "collision":
+            continue
+        joints = geom.parent.get_children("joint")
+        if len(joints) == 1 and joints[0].type == "ball":
+            names.append(geom.name)
+    return names
+
+
 def wheel_floor_pairs(build: Callable[[Any], mjcf.RootElement]
                       ) -> Callable[[mjcf.RootElement, Any], None]:
     """The ``scene_extras`` of a robot built by ``build`` whose wheels take the remedy.
 
     The returned ``extras(scene, params)`` reads ``params.sim`` (:class:`SimParams`).
     With ``sim.floor_impedance`` > 0 it adds to the scene an explicit pair of every
-    wheel collider (:func:`wheel_collider_names` of ``build(params)``) with the
-    ``floor``, with :func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs` at
+    wheel collider (:func:`wheel_collider_names` of ``build(params)``) and every ball
+    caster collider (:func:`caster_collider_names`, with the caster geom's own ``condim``:
+    6 with rolling friction) with the ``floor``, with
+    :func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs` at
     :data:`WHEEL_PAIR_STEPS` (MuJoCo makes no contact-bit contact for a geom pair a
     ``<pair>`` names), and sets the model's ``impratio`` to
     :func:`~wmr_mujoco.models.builders.common.sliding_impratio`. With 0 it adds nothing.
@@ -64,8 +94,12 @@ def wheel_floor_pairs(build: Callable[[Any], mjcf.RootElement]
         if d == 0.0:
             return
         kwargs = sliding_pair_kwargs(sim, d, steps=WHEEL_PAIR_STEPS)
-        for name in wheel_collider_names(build(params)):
+        robot = build(params)
+        for name in wheel_collider_names(robot):
             scene.contact.add("pair", geom1="floor", geom2=name, **kwargs)
+        for name in caster_collider_names(robot):
+            condim = robot.find("geom", name).condim or kwargs["condim"]
+            scene.contact.add("pair", geom1="floor", geom2=name, **{**kwargs, "condim": condim})
         scene.option.impratio = sliding_impratio(d)
 
     return extras

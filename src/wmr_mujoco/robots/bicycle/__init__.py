@@ -19,6 +19,7 @@ from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.bicycle import builder
 from wmr_mujoco.robots.bicycle.params import BicycleParams
+from wmr_mujoco.robots.learning import NO_RADIUS_BANDS, Learning
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
@@ -93,4 +94,7 @@ SPEC = RobotSpec(
     picture=Picture(joint_angles={"steer": 0.35}), clips=(Clip(duration=5.0),),
     command=COMMAND,
     scene_extras=wheel_floor_pairs(builder.build),
+    # Planar model: its joints hold the frame level (no pitch), so wheels of different
+    # radii would lift one of them off the floor: no radius band.
+    learning=Learning("Bicycle", scale=3.0, max_curvature=0.5, bands=NO_RADIUS_BANDS),
 )

@@ -26,6 +26,7 @@ from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.diffdrive import analytic as diffdrive
 from wmr_mujoco.robots.diffdrive import builder, caster_drag
 from wmr_mujoco.robots.diffdrive.params import DiffDriveParams
+from wmr_mujoco.robots.learning import Learning
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation import variations as var
@@ -136,4 +137,5 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="figure eight",
     bench_scenario="figure eight", render_scenario="figure eight", command=COMMAND,
     scene_extras=wheel_floor_pairs(builder.build),
+    learning=Learning("DiffDrive", scale=1.0, max_curvature=1.5),
 )

@@ -24,6 +24,7 @@ from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.disc import builder, sliding
 from wmr_mujoco.robots.disc.params import DiscParams
 from wmr_mujoco.robots.disc.wheel import mounted_wheel
+from wmr_mujoco.robots.learning import Learning
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
@@ -199,4 +200,5 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="constant steering",
     render_scenario="sinusoidal steering", picture=Picture(joint_angles={"steer": 0.35}),
     clips=(Clip(duration=5.0),), scene_extras=builder.floor_pair, command=COMMAND,
+    learning=Learning("Disc"),
 )

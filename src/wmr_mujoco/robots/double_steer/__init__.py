@@ -21,6 +21,7 @@ from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.double_steer import builder
 from wmr_mujoco.robots.double_steer.params import DoubleSteerParams
+from wmr_mujoco.robots.learning import Learning
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.robots.steered import analytic as steered
 from wmr_mujoco.validation import floor_family
@@ -118,4 +119,5 @@ SPEC = RobotSpec(
     picture=Picture(joint_angles={"front_steer": 0.35, "rear_steer": -0.35}),
     command=COMMAND,
     scene_extras=wheel_floor_pairs(builder.build), open_targets=FLOOR_OPEN,
+    learning=Learning("DoubleSteer"),
 )

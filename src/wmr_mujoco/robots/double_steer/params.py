@@ -5,17 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
-from wmr_mujoco.models.params.fields import _check_positive_fields, _check_range
-from wmr_mujoco.models.params.parts import PAIRS_SET_IMPRATIO, DriveParams, SimParams, WheelParams
-from wmr_mujoco.models.params.wheeled import (
-    _CASTER,
-    _DRIVE,
-    _WHEEL,
-    MAX_REACH,
-    BallCasterParams,
-    _check_caster_fits,
-    _check_chassis_size,
-)
+from wmr_mujoco.models.params.parts import DriveParams, SimParams, WheelParams
+from wmr_mujoco.models.params.wheeled import _CASTER, _DRIVE, _WHEEL, MAX_REACH, BallCasterParams
+from wmr_mujoco.robots.steered import params as steered
 
 
 @dataclass(frozen=True)
@@ -47,8 +39,7 @@ class DoubleSteerParams:
     """
 
     #: Fields its model does not use: ``wmr info`` leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = (*PAIRS_SET_IMPRATIO,)
-
+    UNUSED: ClassVar[tuple[str, ...]] = steered.UNUSED
 
     wheel: WheelParams = _WHEEL
     half_wheelbase: float = 0.2
@@ -62,12 +53,10 @@ class DoubleSteerParams:
     sim: SimParams = SimParams(timestep=0.00125, floor_impedance=0.001)
 
     def __post_init__(self) -> None:
-        _check_positive_fields(self)
-        _check_range(self, "half_wheelbase", self.wheel.radius + 0.01, MAX_REACH)
-        _check_range(self, "caster_y", self.wheel.radius + self.caster.radius, MAX_REACH)
-        _check_range(self, "chassis_com_y", 0.05 * self.caster_y, 0.9 * self.caster_y)
-        _check_caster_fits(self, self.wheel, self.caster)
-        _check_chassis_size(self)
+        steered.check(self, (
+            ("half_wheelbase", self.wheel.radius + 0.01, MAX_REACH),
+            ("caster_y", self.wheel.radius + self.caster.radius, MAX_REACH),
+            ("chassis_com_y", 0.05 * self.caster_y, 0.9 * self.caster_y)))
 
     @property
     def total_mass(self) -> float:

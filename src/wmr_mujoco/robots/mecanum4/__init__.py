@@ -17,6 +17,7 @@ import mujoco
 
 from wmr_mujoco.models.params import params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.learning import NO_RADIUS_BANDS, Learning
 from wmr_mujoco.robots.mecanum4 import builder, dynamics, kinematics, ripple
 from wmr_mujoco.robots.mecanum4.grouped import Group
 from wmr_mujoco.robots.mecanum4.params import MecanumParams
@@ -198,4 +199,5 @@ SPEC = RobotSpec(
     scene_extras=builder.floor_pairs, command=COMMAND,
     # Its translations at SPEED in any direction, its turns at up to YAW_RATE.
     command_range=(SPEED, SPEED, YAW_RATE),
+    learning=Learning("Mecanum4", scale=1.0, max_curvature=1.5, bands=NO_RADIUS_BANDS),
 )

@@ -24,6 +24,7 @@ from wmr_mujoco.analytic.planar import twist_step
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.learning import NO_RADIUS_BANDS, Learning
 from wmr_mujoco.robots.omni3 import builder, coasting, dynamics, families, peer, traction
 from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.runs import CENTRE_BODY, WHEELS
@@ -230,4 +231,5 @@ SPEC = RobotSpec(
     clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
     peer=peer.peer_comparison, command=COMMAND,
     scene_extras=builder.floor_pairs, prepare=families.prepare, open_targets=STEP_OPEN,
+    learning=Learning("Omni3", scale=0.5, max_curvature=3.0, bands=NO_RADIUS_BANDS),
 )

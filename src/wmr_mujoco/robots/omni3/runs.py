@@ -168,13 +168,14 @@ def settled(mode: ActuationMode, params: OmniParams | None = None,
 
 
 def coast_start(twist: Sequence[float], drive_time: float,
-                setup: Callable[[mujoco.MjModel], None] | None = None
-                ) -> tuple[mujoco.MjModel, mujoco.MjData]:
+                setup: Callable[[mujoco.MjModel], None] | None = None,
+                params: OmniParams | None = None) -> tuple[mujoco.MjModel, mujoco.MjData]:
     """omni3 settled, driven at ``twist`` for ``drive_time`` s, then its motors off.
 
     The drive is the rate servo on ``H ν · min(1, t / 0.5 s)``; at motor-off the robot is
-    switched to torque mode with zero torque, so what follows is a coast. ``setup``
-    changes the settled model before the drive (e.g. stiffer contacts).
+    switched to torque mode with zero torque, so what follows is a coast. ``params``
+    (None: the defaults) builds the model; ``setup`` changes the settled model before
+    the drive (e.g. an enable flag).
 
     Raises:
         ValueError: a twist that is not 3 finite numbers, or a drive time outside
@@ -185,10 +186,10 @@ def coast_start(twist: Sequence[float], drive_time: float,
         raise ValueError(f"twist = {twist!r}; needs 3 finite numbers")
     if not (math.isfinite(drive_time) and 0 < drive_time <= 30):
         raise ValueError(f"drive_time = {drive_time!r} s; valid range is (0, 30] s")
-    model, data = settled(ActuationMode.RATE)
+    model, data = settled(ActuationMode.RATE, params)
     if setup is not None:
         setup(model)
-    hy = hybrid(None)
+    hy = hybrid(params)
     dt = model.opt.timestep
     H = ok.wheel_jacobian(ok.symmetric_layout(hy.radius, hy.distance))
     for k in range(round(drive_time / dt)):

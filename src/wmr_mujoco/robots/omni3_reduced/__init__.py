@@ -18,6 +18,7 @@ import dataclasses
 from collections.abc import Mapping
 
 from wmr_mujoco.robots import omni3
+from wmr_mujoco.robots.learning import NO_RADIUS_BANDS, Learning
 from wmr_mujoco.robots.omni3_reduced import builder
 from wmr_mujoco.robots.omni3_reduced.params import OmniReducedParams
 from wmr_mujoco.robots.spec import Clip, RobotSpec
@@ -74,4 +75,7 @@ SPEC = RobotSpec(
     bench_scenario="translate+rotate", render_scenario="square with rotation",
     clips=(Clip(),), command=omni3.COMMAND, scene_extras=builder.floor_pairs,
     open_targets=FLOOR_OPEN,
+    # omni3's size; its wheels touch the floor through one low-friction capsule each.
+    learning=Learning("Omni3Reduced", scale=0.5, max_curvature=3.0,
+                      bands=NO_RADIUS_BANDS),
 )

@@ -6,20 +6,19 @@ Switch (σ_i changes): plastic impact onto the new contact's constraints in the
     q̇⁺ = q̇⁻ − 𝕄⁻¹Aᵀ (A𝕄⁻¹Aᵀ)⁻¹ A q̇⁻,      ΔT = ½ (A q̇⁻)ᵀ (A𝕄⁻¹Aᵀ)⁻¹ (A q̇⁻) ≥ 0
 
 (derivations: ``docs/omni-dynamics.md``). :class:`HybridImpacts` is the part of
-:class:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid` that holds these maps; it reads the
-platform's fields and geometry (``mass``, ``inertia``, ``jacobian``, ``roller_rows``, ...).
+:class:`~wmr_mujoco.robots.roller_wheels.omni_hybrid.OmniHybrid` that holds these maps; what it
+reads of the platform (fields and geometry) is the protocol :class:`OmniPlatform`.
 """
 
 from __future__ import annotations
 
 import functools
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
-if TYPE_CHECKING:
-    from wmr_mujoco.robots.roller_wheels.roller_geometry import RollerGeometry
+from wmr_mujoco.robots.roller_wheels.roller_geometry import RollerGeometry
 
 
 def crossing_time(window: float, rate: float, accel: float) -> float:
@@ -44,20 +43,85 @@ def crossing_time(window: float, rate: float, accel: float) -> float:
     return 2.0 * window / den if den > 0.0 else math.inf
 
 
-class HybridImpacts:
-    """Impact maps of the hybrid model (mixed into ``OmniHybrid``, which has the fields)."""
+class OmniPlatform(Protocol):
+    """What the impact maps read of the platform they are mixed into (``OmniHybrid``)."""
 
-    mass: float
-    inertia: np.ndarray
-    wheel_axial: float
-    wheel_armature: float
-    roller_axial: float
-    radius: float
-    distance: float
-    rollers: RollerGeometry
-    gravity: float
-    penetration: float
-    contact_timeconst: float
+    @property
+    def mass(self) -> float:
+        """M, kg."""
+
+    @property
+    def inertia(self) -> np.ndarray:
+        """Composite 3×3 inertia about the centre, body frame, kg·m²."""
+
+    @property
+    def wheel_axial(self) -> float:
+        """I_ax: a wheel subtree's inertia about its axle (no armature), kg·m²."""
+
+    @property
+    def wheel_inertia(self) -> float:
+        """I_w = I_ax + armature, kg·m²."""
+
+    @property
+    def roller_axial(self) -> float:
+        """I_r: a roller's inertia about its own axis, kg·m²."""
+
+    @property
+    def rollers(self) -> RollerGeometry:
+        """Roller geometry (same for every wheel)."""
+
+    @property
+    def gravity(self) -> float:
+        """g, m/s²."""
+
+    @property
+    def penetration(self) -> float:
+        """δ, static penetration of a loaded contact, m."""
+
+    @property
+    def friction(self) -> float:
+        """μ of the roller–floor contact."""
+
+    @property
+    def contact_timeconst(self) -> float:
+        """t_c of the soft contact, s (0: Coulomb)."""
+
+    @property
+    def radial(self) -> np.ndarray:
+        """ê_i (3, 3) rows, body frame."""
+
+    @property
+    def drive_dirs(self) -> np.ndarray:
+        """t_i = ẑ × ê_i (3, 3) rows."""
+
+    def contact_point(self, i: int, roller: int, theta: float) -> np.ndarray:
+        """Contact point of wheel i's roller at wheel angle θ (body frame)."""
+
+    def jacobian(self, modes: tuple[int, ...]) -> np.ndarray:
+        """``H(σ)``: θ̇ = H ν."""
+
+    def roller_rows(self, modes: tuple[int, ...], thetas: np.ndarray
+                    ) -> tuple[np.ndarray, np.ndarray]:
+        """``k_i`` (β̇_i = k_iᵀ ν) and ``∂k_i/∂φ``."""
+
+    def planar_mass(self, modes: tuple[int, ...], thetas: np.ndarray) -> np.ndarray:
+        """``P + I_w HᵀH + I_r Σ k kᵀ``."""
+
+    def kinetic_energy(self, nu: np.ndarray, modes: tuple[int, ...],
+                       thetas: np.ndarray) -> float:
+        """``½ νᵀ (P + I_w HᵀH + I_r Σ k kᵀ) ν``."""
+
+
+# The mixin's methods read the host's members: type checkers see the protocol as its base;
+# at run time it has none (a protocol's properties would shadow the host's fields).
+if TYPE_CHECKING:
+    _Host = OmniPlatform
+else:
+    _Host = object
+
+
+class HybridImpacts(_Host):
+    """Impact maps of the hybrid model, mixed into a class that is an :class:`OmniPlatform`."""
 
     # --- impact ----------------------------------------------------------------------------
     @functools.cached_property
@@ -233,7 +297,7 @@ class HybridImpacts:
             return 0.0
         g = self.rollers
         phi = float(g.phases(float(thetas[wheel]))[modes[wheel]])
-        window = self.penetration / max(abs(g.contact_ahead(phi)), 1e-12)
+        window = self.penetration / max(abs(float(g.contact_ahead(phi))), 1e-12)
         e = abs(float(g.offsets[modes[wheel]]))
         load = self.mass * self.gravity / 3.0
         force = self.friction * load / 4.0

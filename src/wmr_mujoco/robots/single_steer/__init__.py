@@ -21,6 +21,7 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.wheel_pairs import wheel_floor_pairs
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.learning import Learning
 from wmr_mujoco.robots.single_steer import builder
 from wmr_mujoco.robots.single_steer.params import SingleSteerParams
 from wmr_mujoco.robots.spec import Picture, RobotSpec
@@ -106,4 +107,7 @@ SPEC = RobotSpec(
     render_scenario="slalom", picture=Picture(joint_angles={"drive_steer": 0.35}),
     command=COMMAND,
     scene_extras=wheel_floor_pairs(builder.build),
+    # Its yaw is free (a Chaplygin sleigh: the steered wheel's one constraint fixes
+    # neither heading nor yaw rate), so its goal is a position: any heading counts.
+    learning=Learning("SingleSteer", task_options={"GoToGoal": {"heading_tolerance": 4.0}}),
 )

@@ -5,17 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
-from wmr_mujoco.models.params.fields import _check_positive_fields, _check_range
-from wmr_mujoco.models.params.parts import PAIRS_SET_IMPRATIO, DriveParams, SimParams, WheelParams
-from wmr_mujoco.models.params.wheeled import (
-    _CASTER,
-    _DRIVE,
-    _WHEEL,
-    MAX_REACH,
-    BallCasterParams,
-    _check_caster_fits,
-    _check_chassis_size,
-)
+from wmr_mujoco.models.params.parts import DriveParams, SimParams, WheelParams
+from wmr_mujoco.models.params.wheeled import _CASTER, _DRIVE, _WHEEL, MAX_REACH, BallCasterParams
+from wmr_mujoco.robots.steered import params as steered
 
 
 @dataclass(frozen=True)
@@ -50,8 +42,7 @@ class SingleSteerParams:
     """
 
     #: Fields its model does not use: ``wmr info`` leaves them out.
-    UNUSED: ClassVar[tuple[str, ...]] = (*PAIRS_SET_IMPRATIO,)
-
+    UNUSED: ClassVar[tuple[str, ...]] = steered.UNUSED
 
     wheel: WheelParams = _WHEEL
     fork_mass: float = 0.3
@@ -65,12 +56,10 @@ class SingleSteerParams:
     sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
 
     def __post_init__(self) -> None:
-        _check_positive_fields(self)
-        _check_range(self, "caster_x", self.wheel.radius + self.caster.radius, MAX_REACH)
-        _check_range(self, "caster_y", self.caster.radius, MAX_REACH / 2.0)
-        _check_range(self, "chassis_com_x", 0.05 * self.caster_x, 0.95 * self.caster_x)
-        _check_caster_fits(self, self.wheel, self.caster)
-        _check_chassis_size(self)
+        steered.check(self, (
+            ("caster_x", self.wheel.radius + self.caster.radius, MAX_REACH),
+            ("caster_y", self.caster.radius, MAX_REACH / 2.0),
+            ("chassis_com_x", 0.05 * self.caster_x, 0.95 * self.caster_x)))
 
     @property
     def total_mass(self) -> float:

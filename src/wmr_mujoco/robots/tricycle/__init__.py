@@ -20,6 +20,7 @@ from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.wheel_pairs import wheel_floor_pairs
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
+from wmr_mujoco.robots.learning import Learning
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.robots.tricycle import analytic as tricycle
 from wmr_mujoco.robots.tricycle import builder
@@ -163,4 +164,5 @@ SPEC = RobotSpec(
     render_scenario="figure eight", picture=Picture(joint_angles={"steer": 0.35}),
     command=COMMAND,
     scene_extras=wheel_floor_pairs(builder.build),
+    learning=Learning("Tricycle"),
 )

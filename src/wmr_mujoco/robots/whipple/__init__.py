@@ -14,6 +14,7 @@ measurements in the physics:
 
 from __future__ import annotations
 
+from wmr_mujoco.robots.learning import Bands, Learning
 from wmr_mujoco.robots.spec import Clip, Picture, RobotSpec
 from wmr_mujoco.robots.whipple import builder, eigen, lean, stability
 from wmr_mujoco.robots.whipple.params import WhippleParams
@@ -77,4 +78,8 @@ SPEC = RobotSpec(
     picture=Picture(keyframe="upright", joint_angles={"steer": 0.3}),
     clips=(Clip(duration=8.0), Clip(push_name(3.0), "whipple_fall.gif", 3.0)),
     command=COMMAND,
+    # Knife-edge wheels (no radius band); a balance task at 100 Hz.
+    learning=Learning("Whipple", tasks=("StayUpright",), control_period=0.01,
+                      bands=Bands(friction=(0.7, 1.3), mass=(0.9, 1.1),
+                                  wheel_radius=None, servo_gain=(0.9, 1.1))),
 )
