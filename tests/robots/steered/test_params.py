@@ -25,7 +25,7 @@ class Layout:
     chassis_size: tuple[float, float, float] = (0.4, 0.3, 0.05)
 
     def __post_init__(self) -> None:
-        steered.check(self, (("reach", self.wheel.radius, 1.0),))
+        steered.check(self, lambda p: (("reach", p.wheel.radius, 1.0),))
 
 
 def test_valid_parameters_pass():
@@ -49,6 +49,13 @@ def test_each_check_names_the_bad_value(kwargs, message):
     with pytest.raises(ValueError) as err:
         Layout(**kwargs)
     assert message in str(err.value)
+
+
+def test_a_wheel_of_the_wrong_type_is_named_before_the_layout_reads_it():
+    """The layout's bounds read ``wheel.radius``: a wheel that is not a WheelParams is
+    named by the type check, not met as an AttributeError."""
+    with pytest.raises(ValueError, match="wheel"):
+        Layout(wheel=None)
 
 
 def test_checks_run_in_order_the_first_bad_value_named():

@@ -53,10 +53,10 @@ class DoubleSteerParams:
     sim: SimParams = SimParams(timestep=0.00125, floor_impedance=0.001)
 
     def __post_init__(self) -> None:
-        steered.check(self, (
-            ("half_wheelbase", self.wheel.radius + 0.01, MAX_REACH),
-            ("caster_y", self.wheel.radius + self.caster.radius, MAX_REACH),
-            ("chassis_com_y", 0.05 * self.caster_y, 0.9 * self.caster_y)))
+        steered.check(self, lambda p: (
+            ("half_wheelbase", p.wheel.radius + 0.01, MAX_REACH),
+            ("caster_y", p.wheel.radius + p.caster.radius, MAX_REACH),
+            ("chassis_com_y", 0.05 * p.caster_y, 0.9 * p.caster_y)))
 
     @property
     def total_mass(self) -> float:

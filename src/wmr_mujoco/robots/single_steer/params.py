@@ -56,10 +56,10 @@ class SingleSteerParams:
     sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
 
     def __post_init__(self) -> None:
-        steered.check(self, (
-            ("caster_x", self.wheel.radius + self.caster.radius, MAX_REACH),
-            ("caster_y", self.caster.radius, MAX_REACH / 2.0),
-            ("chassis_com_x", 0.05 * self.caster_x, 0.95 * self.caster_x)))
+        steered.check(self, lambda p: (
+            ("caster_x", p.wheel.radius + p.caster.radius, MAX_REACH),
+            ("caster_y", p.caster.radius, MAX_REACH / 2.0),
+            ("chassis_com_x", 0.05 * p.caster_x, 0.95 * p.caster_x)))
 
     @property
     def total_mass(self) -> float:

@@ -8,7 +8,7 @@ fields and values and states its layout's bounds, checked here.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from wmr_mujoco.models.params.fields import _check_positive_fields, _check_range
@@ -40,11 +40,13 @@ class SteeredParts(Protocol):
         """Plate edge lengths (x, y, z), m."""
 
 
-def check(params: SteeredParts, layout: Sequence[tuple[str, float, float]]) -> None:
+def check(params: SteeredParts,
+          layout: Callable[[SteeredParts], Sequence[tuple[str, float, float]]]) -> None:
     """Check a steered robot's parameters, the first bad value named.
 
     In order: every field's type and every number positive (masses have no upper bound);
-    each layout field ``(name, low, high)`` in ``(low, high]``; the caster radius below
+    each layout field ``(name, low, high)`` of ``layout(params)`` in ``(low, high]`` (a
+    function: its bounds read fields whose types are checked first); the caster radius below
     the wheel radius; each ``chassis_size`` edge in (0,
     :data:`~wmr_mujoco.models.params.wheeled.MAX_CHASSIS_EDGE`] m.
 
@@ -53,7 +55,7 @@ def check(params: SteeredParts, layout: Sequence[tuple[str, float, float]]) -> N
             names the field and the valid range.
     """
     _check_positive_fields(params)
-    for name, low, high in layout:
+    for name, low, high in layout(params):
         _check_range(params, name, low, high)
     _check_caster_fits(params, params.wheel, params.caster)
     _check_chassis_size(params)
