@@ -14,7 +14,7 @@ from __future__ import annotations
 import argparse
 
 from wmr_mujoco.validation.family import DEFAULT_SEED, MAX_DRAWS, check_draws, check_seed
-from wmr_mujoco.validation.pool import MAX_JOBS, check_jobs, usable_cores
+from wmr_mujoco.validation.jobs import MAX_JOBS, check_jobs, usable_cores
 
 #: Draws per family of ``wmr validate --quick``.
 QUICK_DRAWS = 3

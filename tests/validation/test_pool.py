@@ -7,9 +7,10 @@ import pytest
 
 from wmr_mujoco.cli import main
 from wmr_mujoco.lookup import validation_jobs
-from wmr_mujoco.validation import pool
+from wmr_mujoco.validation import jobs, pool
+from wmr_mujoco.validation.jobs import check_jobs
 from wmr_mujoco.validation.members import run_families
-from wmr_mujoco.validation.pool import attach, check_jobs, detach, hand_out_order
+from wmr_mujoco.validation.pool import attach, detach, hand_out_order
 
 needs_fork = pytest.mark.skipif(not pool.can_fork(), reason="no 'fork' start method here")
 
@@ -75,7 +76,7 @@ def test_time_hints_read_an_earlier_report(tmp_path):
     assert pool.time_hints(tmp_path) == {}
 
 
-@pytest.mark.parametrize("bad", [0, -1, True, 1.5, "2", pool.MAX_JOBS + 1])
+@pytest.mark.parametrize("bad", [0, -1, True, 1.5, "2", jobs.MAX_JOBS + 1])
 def test_a_bad_job_count_is_refused(bad):
     with pytest.raises(ValueError, match="jobs"):
         check_jobs(bad)
@@ -83,7 +84,7 @@ def test_a_bad_job_count_is_refused(bad):
         run_families(validation_jobs(["single_steer"]), jobs=bad)
 
 
-@pytest.mark.parametrize("text", ["0", "-2", "x", str(pool.MAX_JOBS + 1)])
+@pytest.mark.parametrize("text", ["0", "-2", "x", str(jobs.MAX_JOBS + 1)])
 def test_a_bad_jobs_option_is_exit_2_before_any_work(tmp_path, capsys, text):
     out = tmp_path / "r"
     with pytest.raises(SystemExit) as exit_:
@@ -106,7 +107,7 @@ def test_jobs_reach_the_runner_default_the_usable_cores(tmp_path, monkeypatch):
     out = str(tmp_path / "r")
     assert main(["validate", "single_steer", "--out", out, "-q"]) == 130
     assert main(["validate", "single_steer", "--out", out, "-q", "--jobs", "3"]) == 130
-    assert seen == [min(pool.usable_cores(), pool.MAX_JOBS), 3]
+    assert seen == [min(jobs.usable_cores(), jobs.MAX_JOBS), 3]
 
 
 def test_run_calls_keep_the_order():

@@ -28,39 +28,17 @@ from __future__ import annotations
 
 import json
 import multiprocessing
-import os
 import signal
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from wmr_mujoco.validation.jobs import check_jobs
 from wmr_mujoco.validation.metrics import Trace
 from wmr_mujoco.validation.runner import Job, ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
 from wmr_mujoco.validation.targets import Row
-
-#: Most worker processes ``--jobs`` may ask for (a typed number may not exhaust memory).
-MAX_JOBS = 64
-
-
-def usable_cores() -> int:
-    """Cores this process may run on (``os.sched_getaffinity``; ``os.cpu_count`` elsewhere)."""
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except (AttributeError, OSError):
-        return max(1, os.cpu_count() or 1)
-
-
-def check_jobs(jobs: object) -> int:
-    """``jobs`` as an int, if it is an integer in ``1..MAX_JOBS``.
-
-    Raises:
-        ValueError: anything else (a bool, a float, zero, a negative number).
-    """
-    if isinstance(jobs, bool) or not isinstance(jobs, int) or not 1 <= jobs <= MAX_JOBS:
-        raise ValueError(f"jobs = {jobs!r}; must be an integer in 1..{MAX_JOBS}")
-    return jobs
 
 
 def can_fork() -> bool:
