@@ -23,6 +23,7 @@ import argparse
 import os
 import signal
 import sys
+import time
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -130,14 +131,17 @@ def _cmd_validate(args: argparse.Namespace) -> int:
                 return
         progress_bar.write(msg, file=sys.stderr)
 
+    start = time.perf_counter()
     try:
         results = run_families(work, progress=progress, seed=args.seed, draws=draws_of(args),
                                jobs=jobs, hints=time_hints(args.out))
     finally:
         progress_bar.close()
+    wall = time.perf_counter() - start
     print(text_table(results, judged_only=not args.all_metrics))
     print(f"\nover each family (seed {args.seed}):\n{spread_text(results)}\n"
-          f"{slowest(results)}")
+          f"{slowest(results)}; the families took {wall:.1f} s of wall time in {jobs} "
+          f"process{'es' if jobs > 1 else ''}")
     path = write_report(results, args.out, robots=ROBOTS, jobs=jobs)
     failed = [r.scenario.key for r in results if not r.passed]
     print(f"\n{summary_line(results)}; report: {path}")
