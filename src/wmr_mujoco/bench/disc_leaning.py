@@ -21,16 +21,11 @@ last rows need (``evals/s``: model evaluations per simulated second, RK4 four a 
 from __future__ import annotations
 
 import argparse
-from dataclasses import dataclass, replace
 
-import mujoco
-
+from wmr_mujoco.bench.disc_study import Setting
 from wmr_mujoco.docs_sync.markers import replace_between
-from wmr_mujoco.lookup import build_scene
-from wmr_mujoco.models.builders import common
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import disc_free
-from wmr_mujoco.robots.disc.params import FreeDiscParams
 from wmr_mujoco.robots.disc_free import measurements as ms
 
 MARKER = "disc leaning family"
@@ -44,46 +39,31 @@ COLUMNS = (
 )
 
 
-@dataclass(frozen=True)
-class Setting:
-    """A timestep and contact time constant of the free disc (RK4).
+def rk4_setting(timestep: float, contact_timeconst: float) -> Setting:
+    """The free disc under RK4 at ``timestep`` with ``contact_timeconst``, else the defaults.
 
-    Attributes:
-        timestep: Δt, s.
-        contact_timeconst: ``solref[0]``, s (MuJoCo uses ``max(t_c, 2 Δt)``).
+    A :class:`~wmr_mujoco.bench.disc_study.Setting` (the fidelity study's), labelled with
+    the time constant MuJoCo simulates.
     """
+    label = (f"Δt {1e3 * timestep:g} ms, t_c {1e3 * contact_timeconst:g} ms (effective "
+             f"{1e3 * effective_timeconst(timestep, contact_timeconst):g} ms)")
+    return Setting(label, "RK4", timestep, contact_timeconst=contact_timeconst)
 
-    timestep: float
-    contact_timeconst: float
 
-    @property
-    def effective_timeconst(self) -> float:
-        """``max(t_c, 2 Δt)``: the time constant MuJoCo simulates (``refsafe``)."""
-        return max(self.contact_timeconst, 2.0 * self.timestep)
-
-    @property
-    def label(self) -> str:
-        """``Δt …, t_c …`` in ms."""
-        return (f"Δt {1e3 * self.timestep:g} ms, t_c {1e3 * self.contact_timeconst:g} ms"
-                f" (effective {1e3 * self.effective_timeconst:g} ms)")
-
-    def model(self) -> mujoco.MjModel:
-        """The free disc under this setting, every other field at its default."""
-        p = FreeDiscParams()
-        p = replace(p, free_timestep=self.timestep,
-                    sim=replace(p.sim, contact_timeconst=self.contact_timeconst))
-        return mujoco.MjModel.from_xml_string(common.to_xml(build_scene("disc_free", p)))
+def effective_timeconst(timestep: float, contact_timeconst: float) -> float:
+    """``max(t_c, 2 Δt)``: the time constant MuJoCo simulates (``refsafe``)."""
+    return max(contact_timeconst, 2.0 * timestep)
 
 
 #: The default first (its 4 ms contact is clamped to 8 ms), then the same effective
 #: contact at a smaller timestep, then ever stiffer contacts at ``t_c = 2 Δt``.
 SETTINGS = (
-    Setting(0.004, 0.004),
-    Setting(0.002, 0.008),
-    Setting(0.002, 0.004),
-    Setting(0.001, 0.004),
-    Setting(0.001, 0.002),
-    Setting(0.0005, 0.001),
+    rk4_setting(0.004, 0.004),
+    rk4_setting(0.002, 0.008),
+    rk4_setting(0.002, 0.004),
+    rk4_setting(0.001, 0.004),
+    rk4_setting(0.001, 0.002),
+    rk4_setting(0.0005, 0.001),
 )
 
 
@@ -110,7 +90,7 @@ def evaluate(setting: Setting, draws: list[dict[str, float]]) -> dict[str, float
         for head, name, _ in COLUMNS:
             if values[name] > worst[head]:
                 worst[head], slowest[head] = values[name], draw["speed"]
-    return {**worst, "speed": slowest["lean"], "evals": 4.0 / setting.timestep,
+    return {**worst, "speed": slowest["lean"], "evals": setting.evaluations_per_second,
             **{f"{head} target": targets[name] for head, name, _ in COLUMNS}}
 
 
