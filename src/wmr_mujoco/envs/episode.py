@@ -168,8 +168,7 @@ class Episode:
             RuntimeError: no reset yet.
             SimulationDivergedError: the physics diverged.
         """
-        prev = self.state
-        if prev is None:
+        if self.state is None:
             raise RuntimeError("call reset() before step()")
         # The usual action, a float array of the right shape inside [-1, 1], is checked on
         # Python floats; anything else (a NaN fails the bounds) goes through check_action,
@@ -183,8 +182,14 @@ class Episode:
                     break
         else:
             a = check_action(action, self.n_action)
-        task = self.task
-        # a has n_action entries (checked above).
+        return self.advance(a)
+
+    def advance(self, a: list[float]) -> tuple[np.ndarray, float, bool, bool, dict]:
+        """:meth:`step` of a checked action: ``n_action`` floats in ``[-1, 1]``.
+
+        (The vector environment checks a whole batch before it steps any world.)
+        """
+        prev, task = self.state, self.task
         self.state = state = self.stepper.step([c + h * v for c, h, v in
                                                 zip(self._c, self._h, a, strict=False)])
         self.last_action = a

@@ -1,0 +1,246 @@
+"""The native vector environment: ``gymnasium.make_vec(id, n)`` steps n worlds in one loop.
+
+Each environment id registers :class:`WmrVectorEnv` as its ``vector_entry_point``, so that
+``gymnasium.make_vec(id, num_envs=n)`` (the default ``vectorization_mode``) returns it;
+``"sync"`` and ``"async"`` still wrap n single environments. The n worlds are n
+:class:`~wmr_mujoco.envs.env.WmrEnv`, each with its own model and data (so that each draws
+its own domain randomisation), stepped one after the other by the single environment's
+own step (:meth:`~wmr_mujoco.envs.episode.Episode.advance`): world ``i`` gives bit for bit
+the observations, rewards and flags of a single environment reset with its seed. What
+this class saves is the generic wrapper's work around each world's step: the whole batch
+of actions is checked once, and the infos are gathered into arrays once per step.
+
+Semantics are Gymnasium 1.x's (:class:`gymnasium.vector.SyncVectorEnv`, whose results this
+class reproduces, infos included):
+
+* ``reset(seed=s)``: world ``i`` is reset with seed ``s + i`` (a list: one seed per world);
+  ``options={"reset_mask": mask}`` resets only the masked worlds (``AutoresetMode.DISABLED``).
+* ``autoreset_mode`` (a keyword of ``make_vec``): ``NEXT_STEP`` (the default: the step after
+  an episode ends resets that world, ignoring its action, and returns its first
+  observation with reward 0 and both flags false), ``SAME_STEP`` (the ending step resets
+  at once; its last observation and info are in ``info["final_obs"]``,
+  ``info["final_info"]``) or ``DISABLED`` (the caller resets ended worlds with a mask).
+* ``info``: each key of the worlds' infos as an array over the worlds, beside a mask
+  ``"_key"`` of the worlds that gave it (nested for ``reward_terms``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import gymnasium as gym
+import numpy as np
+from gymnasium.vector import AutoresetMode
+from gymnasium.vector.utils import batch_space
+
+from wmr_mujoco.envs.env import WmrEnv
+
+#: Most worlds in one vector environment (each holds its own compiled model).
+MAX_ENVS = 4096
+
+
+def check_actions(actions: Any, shape: tuple[int, int]) -> list[list[float]]:
+    """A batch of actions as one list of floats per world, each clipped to ``[-1, 1]``.
+
+    Raises:
+        ValueError: not numeric, not of ``shape``, or not finite (before any world steps).
+    """
+    if type(actions) is np.ndarray and actions.shape == shape and actions.dtype.kind == "f":
+        rows = actions.tolist()
+        for row in rows:  # the usual case: checked on Python floats
+            for v in row:
+                if not -1.0 <= v <= 1.0:
+                    break
+            else:
+                continue
+            break
+        else:
+            return rows
+    try:
+        a = np.asarray(actions)
+        if a.dtype.kind not in "biuf":
+            raise TypeError
+        a = a.astype(float)
+    except (TypeError, ValueError):
+        raise ValueError(f"actions {actions!r} are not numeric (real); expected an array of "
+                         f"shape {shape} in [-1, 1]") from None
+    if a.shape != shape:
+        raise ValueError(f"actions have shape {a.shape}; expected {shape} (worlds, action "
+                         "channels) in [-1, 1]")
+    bad = np.flatnonzero(~np.isfinite(a).all(axis=1))
+    if bad.size:
+        raise ValueError(f"actions of world(s) {bad.tolist()} are not finite: "
+                         f"{a[bad].tolist()}; expected finite numbers in [-1, 1]")
+    return np.clip(a, -1.0, 1.0).tolist()
+
+
+def _seeds(seed: int | list[int | None] | None, n: int) -> list[int | None]:
+    """One seed per world: None each, ``seed + i``, or the list given (module docstring)."""
+    if seed is None:
+        return [None] * n
+    if isinstance(seed, (int, np.integer)) and not isinstance(seed, bool):
+        return [int(seed) + i for i in range(n)]
+    seeds = list(seed)
+    if len(seeds) != n:
+        raise ValueError(f"{len(seeds)} seeds for {n} worlds; give one seed per world, an "
+                         "int (world i gets seed + i) or None")
+    return seeds
+
+
+class WmrVectorEnv(gym.vector.VectorEnv):
+    """n worlds of one robot and task (module docstring).
+
+    Args:
+        robot: registry name of a drivable robot.
+        task: the task's name.
+        num_envs: number of worlds, 1 to :data:`MAX_ENVS`.
+        autoreset_mode: an :class:`~gymnasium.vector.AutoresetMode` or its value.
+        **options: the single environment's options (:class:`WmrEnv`).
+
+    Raises:
+        ValueError: a bad ``num_envs`` or ``autoreset_mode`` (before any world is built),
+            or a bad option (:class:`WmrEnv`).
+    """
+
+    def __init__(self, robot: str, task: str, num_envs: int = 1,
+                 autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP,
+                 **options: Any) -> None:
+        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or \
+                not 1 <= num_envs <= MAX_ENVS:
+            raise ValueError(f"num_envs={num_envs!r}; valid: an integer in [1, {MAX_ENVS}]")
+        try:
+            mode = AutoresetMode(autoreset_mode)
+        except ValueError:
+            raise ValueError(f"autoreset_mode={autoreset_mode!r}; valid: "
+                             f"{', '.join(m.value for m in AutoresetMode)}") from None
+        self.envs = [WmrEnv(robot, task, **options) for _ in range(int(num_envs))]
+        self.episodes = [e.episode for e in self.envs]
+        self.num_envs = n = int(num_envs)
+        self.autoreset_mode = mode
+        first = self.envs[0]
+        self.render_mode = first.render_mode
+        self.metadata = {**first.metadata, "autoreset_mode": mode}
+        self.single_action_space = first.action_space
+        self.single_observation_space = first.observation_space
+        self.action_space = batch_space(self.single_action_space, n)
+        self.observation_space = batch_space(self.single_observation_space, n)
+        self.dt = first.dt
+        self._shape = (n, first.episode.n_action)
+        self._obs = np.zeros((n, first.episode.size), np.float32)
+        self._rewards = np.zeros(n)
+        self._terminations = np.zeros(n, np.bool_)
+        self._truncations = np.zeros(n, np.bool_)
+        self._autoreset = np.zeros(n, np.bool_)
+        #: Whether every world has been reset once.
+        self._started = False
+
+    def reset(self, *, seed: int | list[int | None] | None = None,
+              options: Mapping[str, Any] | None = None) -> tuple[np.ndarray, dict]:
+        """Reset every world, or those of ``options["reset_mask"]`` (module docstring).
+
+        Raises:
+            ValueError: seeds not one per world, a bad mask, or other options.
+        """
+        n = self.num_envs
+        seeds = _seeds(seed, n)
+        options = dict(options or {})
+        mask = options.pop("reset_mask", None)
+        if options:
+            raise ValueError(f"reset() takes only the option 'reset_mask', got "
+                             f"{sorted(options)}")
+        if mask is None:
+            mask = np.ones(n, np.bool_)
+        elif not (isinstance(mask, np.ndarray) and mask.dtype == np.bool_ and
+                  mask.shape == (n,) and mask.any()):
+            raise ValueError(f"options['reset_mask']={mask!r}: need a numpy bool array of "
+                             f"shape ({n},) with at least one True")
+        infos: dict[str, Any] = {}
+        for i in np.flatnonzero(mask).tolist():
+            self._obs[i], info = self.envs[i].reset(seed=seeds[i])
+            infos = self._add_info(infos, info, i)
+        self._terminations[mask] = False
+        self._truncations[mask] = False
+        self._autoreset[mask] = False
+        self._started = all(e.state is not None for e in self.episodes)
+        return self._obs.copy(), infos
+
+    def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
+                                          dict]:
+        """One control period of every world (an ended world resets as the mode says).
+
+        Raises:
+            ValueError: bad actions (:func:`check_actions`), before any world steps.
+            RuntimeError: a world never reset, or (``DISABLED``) an ended world not reset.
+            SimulationDivergedError: a world's physics diverged.
+        """
+        rows = check_actions(actions, self._shape)
+        if not self._started:
+            raise RuntimeError("call reset() before step()")
+        mode, obs, rewards = self.autoreset_mode, self._obs, self._rewards
+        terms, truncs = self._terminations, self._truncations
+        if mode is AutoresetMode.DISABLED and self._autoreset.any():
+            raise RuntimeError(f"world(s) {np.flatnonzero(self._autoreset).tolist()} ended "
+                               "and were not reset (autoreset_mode DISABLED): call "
+                               "reset(options={'reset_mask': mask}) first")
+        stepped: list[dict] = []
+        resets: list[tuple[int, dict]] = []
+        finals: list[tuple[int, np.ndarray, dict]] = []
+        for i, (episode, a) in enumerate(zip(self.episodes, rows, strict=True)):
+            if mode is AutoresetMode.NEXT_STEP and self._autoreset[i]:
+                obs[i], info = self.envs[i].reset()
+                rewards[i], terms[i], truncs[i] = 0.0, False, False
+                resets.append((i, info))
+                continue
+            o, rewards[i], terms[i], truncs[i], info = episode.advance(a)
+            if mode is AutoresetMode.SAME_STEP and (terms[i] or truncs[i]):
+                finals.append((i, o, info))
+                o, info = self.envs[i].reset()
+                resets.append((i, info))
+            else:
+                stepped.append(info)
+            obs[i] = o
+        np.logical_or(terms, truncs, out=self._autoreset)
+        return (obs.copy(), rewards.copy(), terms.copy(), truncs.copy(),
+                self._infos(stepped, resets, finals))
+
+    def _infos(self, stepped: list[dict], resets: list[tuple[int, dict]],
+               finals: list[tuple[int, np.ndarray, dict]]) -> dict[str, Any]:
+        """The step's infos as :meth:`gymnasium.vector.VectorEnv._add_info` merges them."""
+        if resets or finals:  # an episode ended: the generic merge, world by world
+            infos: dict[str, Any] = {}
+            reset_of = dict(resets)
+            final_of = {i: (o, info) for i, o, info in finals}
+            it = iter(stepped)
+            for i in range(self.num_envs):
+                if i in final_of:
+                    o, info = final_of[i]
+                    infos = self._add_info(infos, {"final_obs": o, "final_info": info}, i)
+                infos = self._add_info(infos, reset_of[i] if i in reset_of else next(it), i)
+            return infos
+        # Every world stepped: each key an array over the worlds, its mask all True.
+        full = np.ones(self.num_envs, np.bool_)
+        first = stepped[0]
+        terms: dict[str, np.ndarray] = {}
+        for k in first["reward_terms"]:
+            terms[k] = np.array([s["reward_terms"][k] for s in stepped])
+            terms[f"_{k}"] = full.copy()
+        return {"reward_terms": terms, "_reward_terms": full.copy(),
+                "is_success": np.array([s["is_success"] for s in stepped]),
+                "_is_success": full.copy(),
+                "failed": np.array([s["failed"] for s in stepped]), "_failed": full.copy(),
+                "time": np.array([s["time"] for s in stepped]), "_time": full}
+
+    def render(self) -> tuple[Any, ...] | None:
+        """Each world's frame (``render_mode="rgb_array"``), None without a render mode."""
+        if self.render_mode is None:
+            gym.logger.warn("render() called without a render_mode; pass render_mode="
+                            "'rgb_array' to gymnasium.make_vec")
+            return None
+        return tuple(e.render() for e in self.envs)
+
+    def close_extras(self, **kwargs: Any) -> None:
+        """Close every world (renderers, viewers)."""
+        for e in self.envs:
+            e.close()
+
