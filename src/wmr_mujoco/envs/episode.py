@@ -187,12 +187,26 @@ class Episode:
     def advance(self, a: list[float]) -> tuple[np.ndarray, float, bool, bool, dict]:
         """:meth:`step` of a checked action: ``n_action`` floats in ``[-1, 1]``.
 
-        (The vector environment checks a whole batch before it steps any world.)
+        :meth:`push` then :meth:`pull` (the vector environment checks a whole batch before
+        it steps any world, and pushes every world before it pulls them).
+        """
+        self.push(a)
+        return self.pull()
+
+    def push(self, a: list[float]) -> None:
+        """The physics of :meth:`advance` (the command of ``a`` held for one period)."""
+        self.stepper.advance([c + h * v for c, h, v in zip(self._c, self._h, a, strict=False)])
+        self.last_action = a
+
+    def pull(self) -> tuple[np.ndarray, float, bool, bool, dict]:
+        """After :meth:`push`: the step's ``(observation, reward, terminated, truncated, info)``.
+
+        Raises:
+            SimulationDivergedError: the physics diverged.
         """
         prev, task = self.state, self.task
-        self.state = state = self.stepper.step([c + h * v for c, h, v in
-                                                zip(self._c, self._h, a, strict=False)])
-        self.last_action = a
+        self.state = state = self.stepper.finish()
+        a = self.last_action
         terms, success, failure = task.evaluate(prev, state, a, self.dt)
         time = state.time
         truncated = not (success or failure) and time >= task.time_limit - 1e-9

@@ -127,11 +127,14 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         self.observation_space = batch_space(self.single_observation_space, n)
         self.dt = first.dt
         self._shape = (n, first.episode.n_action)
-        self._obs = np.zeros((n, first.episode.size), np.float32)
-        self._rewards = np.zeros(n)
-        self._terminations = np.zeros(n, np.bool_)
-        self._truncations = np.zeros(n, np.bool_)
+        #: Each world's latest observation (a masked reset returns the others' too).
+        self._last: list[np.ndarray] = [np.zeros(first.episode.size, np.float32)] * n
+        #: The worlds whose episode ended in the last step, and whether there is one.
         self._autoreset = np.zeros(n, np.bool_)
+        self._ended = False
+        #: The mask of an info key that every world gave (read-only, shared).
+        self._full = np.ones(n, np.bool_)
+        self._full.flags.writeable = False
         #: Whether every world has been reset once.
         self._started = False
 
@@ -157,13 +160,12 @@ class WmrVectorEnv(gym.vector.VectorEnv):
                              f"shape ({n},) with at least one True")
         infos: dict[str, Any] = {}
         for i in np.flatnonzero(mask).tolist():
-            self._obs[i], info = self.envs[i].reset(seed=seeds[i])
+            self._last[i], info = self.envs[i].reset(seed=seeds[i])
             infos = self._add_info(infos, info, i)
-        self._terminations[mask] = False
-        self._truncations[mask] = False
-        self._autoreset[mask] = False
+        self._autoreset = np.where(mask, False, self._autoreset)
+        self._ended = bool(self._autoreset.any())
         self._started = all(e.state is not None for e in self.episodes)
-        return self._obs.copy(), infos
+        return np.array(self._last), infos
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
                                           dict]:
@@ -177,59 +179,80 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         rows = check_actions(actions, self._shape)
         if not self._started:
             raise RuntimeError("call reset() before step()")
-        mode, obs, rewards = self.autoreset_mode, self._obs, self._rewards
-        terms, truncs = self._terminations, self._truncations
-        if mode is AutoresetMode.DISABLED and self._autoreset.any():
-            raise RuntimeError(f"world(s) {np.flatnonzero(self._autoreset).tolist()} ended "
-                               "and were not reset (autoreset_mode DISABLED): call "
-                               "reset(options={'reset_mask': mask}) first")
-        stepped: list[dict] = []
-        resets: list[tuple[int, dict]] = []
-        finals: list[tuple[int, np.ndarray, dict]] = []
-        for i, (episode, a) in enumerate(zip(self.episodes, rows, strict=True)):
-            if mode is AutoresetMode.NEXT_STEP and self._autoreset[i]:
-                obs[i], info = self.envs[i].reset()
-                rewards[i], terms[i], truncs[i] = 0.0, False, False
-                resets.append((i, info))
-                continue
-            o, rewards[i], terms[i], truncs[i], info = episode.advance(a)
-            if mode is AutoresetMode.SAME_STEP and (terms[i] or truncs[i]):
-                finals.append((i, o, info))
-                o, info = self.envs[i].reset()
-                resets.append((i, info))
-            else:
-                stepped.append(info)
-            obs[i] = o
-        np.logical_or(terms, truncs, out=self._autoreset)
-        return (obs.copy(), rewards.copy(), terms.copy(), truncs.copy(),
-                self._infos(stepped, resets, finals))
+        mode = self.autoreset_mode
+        if self._ended:  # an episode ended in the last step
+            if mode is AutoresetMode.DISABLED:
+                raise RuntimeError(f"world(s) {np.flatnonzero(self._autoreset).tolist()} "
+                                   "ended and were not reset (autoreset_mode DISABLED): call "
+                                   "reset(options={'reset_mask': mask}) first")
+            if mode is AutoresetMode.NEXT_STEP:
+                return self._step_each(rows)
+        # The usual step: every world steps, its results gathered column by column (few
+        # numpy calls per batch: each costs as much as a world's step of Python).
+        episodes = self.episodes
+        for e, a in zip(episodes, rows, strict=True):  # every world's physics, then
+            e.push(a)  # every world's reading and task: that Python code then runs warm
+        steps = [e.pull() for e in episodes]
+        obs, rewards, terms, truncs, infos = zip(*steps, strict=True)
+        self._ended = ended = True in terms or True in truncs
+        self._last = list(obs)
+        terms, truncs = np.array(terms), np.array(truncs)
+        if ended:
+            self._autoreset = terms | truncs
+            if mode is AutoresetMode.SAME_STEP:
+                return self._finish_same_step(obs, rewards, terms, truncs, infos)
+        return np.array(obs), np.array(rewards), terms, truncs, self._gather(infos)
 
-    def _infos(self, stepped: list[dict], resets: list[tuple[int, dict]],
-               finals: list[tuple[int, np.ndarray, dict]]) -> dict[str, Any]:
-        """The step's infos as :meth:`gymnasium.vector.VectorEnv._add_info` merges them."""
-        if resets or finals:  # an episode ended: the generic merge, world by world
-            infos: dict[str, Any] = {}
-            reset_of = dict(resets)
-            final_of = {i: (o, info) for i, o, info in finals}
-            it = iter(stepped)
-            for i in range(self.num_envs):
-                if i in final_of:
-                    o, info = final_of[i]
-                    infos = self._add_info(infos, {"final_obs": o, "final_info": info}, i)
-                infos = self._add_info(infos, reset_of[i] if i in reset_of else next(it), i)
-            return infos
-        # Every world stepped: each key an array over the worlds, its mask all True.
-        full = np.ones(self.num_envs, np.bool_)
-        first = stepped[0]
-        terms: dict[str, np.ndarray] = {}
-        for k in first["reward_terms"]:
-            terms[k] = np.array([s["reward_terms"][k] for s in stepped])
-            terms[f"_{k}"] = full.copy()
-        return {"reward_terms": terms, "_reward_terms": full.copy(),
-                "is_success": np.array([s["is_success"] for s in stepped]),
-                "_is_success": full.copy(),
-                "failed": np.array([s["failed"] for s in stepped]), "_failed": full.copy(),
-                "time": np.array([s["time"] for s in stepped]), "_time": full}
+    def _finish_same_step(self, obs: tuple[np.ndarray, ...], rewards: tuple[float, ...],
+                          terms: np.ndarray, truncs: np.ndarray, infos: tuple[dict, ...]
+                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict]:
+        """``SAME_STEP``: reset the worlds that ended, their last step in the info."""
+        merged: dict[str, Any] = {}
+        out = np.array(obs)
+        for i, info in enumerate(infos):
+            if terms[i] or truncs[i]:
+                merged = self._add_info(merged, {"final_obs": obs[i], "final_info": info}, i)
+                out[i], info = self.envs[i].reset()
+            merged = self._add_info(merged, info, i)
+        self._last = [row.copy() for row in out]
+        self._ended = False
+        self._autoreset = np.zeros(self.num_envs, np.bool_)
+        return out, np.array(rewards), terms, truncs, merged
+
+    def _step_each(self, rows: list[list[float]]) -> tuple[np.ndarray, np.ndarray,
+                                                           np.ndarray, np.ndarray, dict]:
+        """``NEXT_STEP`` after an episode's end: world by world, the ended ones reset."""
+        n = self.num_envs
+        obs = np.zeros(self.observation_space.shape, np.float32)
+        rewards, terms, truncs = np.zeros(n), np.zeros(n, np.bool_), np.zeros(n, np.bool_)
+        merged: dict[str, Any] = {}
+        for i, (episode, a) in enumerate(zip(self.episodes, rows, strict=True)):
+            if self._autoreset[i]:
+                obs[i], info = self.envs[i].reset()
+            else:
+                obs[i], rewards[i], terms[i], truncs[i], info = episode.advance(a)
+            merged = self._add_info(merged, info, i)
+        self._last = [row.copy() for row in obs]
+        self._autoreset = terms | truncs
+        self._ended = bool(self._autoreset.any())
+        return obs, rewards, terms, truncs, merged
+
+    def _gather(self, infos: tuple[dict, ...]) -> dict[str, Any]:
+        """The infos of a step of every world, as ``_add_info`` would merge them.
+
+        Each key an array over the worlds (a column of one array per type); every mask is
+        the one all-True array :attr:`_full` (read-only: one array per step, not one per key).
+        """
+        first, full = infos[0]["reward_terms"], self._full
+        values = np.array([(*s["reward_terms"].values(), s["time"]) for s in infos])
+        flags = np.array([(s["is_success"], s["failed"]) for s in infos])
+        out: dict[str, Any] = {}
+        for j, k in enumerate(first):
+            out[k] = values[:, j]
+            out[f"_{k}"] = full
+        return {"reward_terms": out, "_reward_terms": full, "is_success": flags[:, 0],
+                "_is_success": full, "failed": flags[:, 1], "_failed": full,
+                "time": values[:, len(first)], "_time": full}
 
     def render(self) -> tuple[Any, ...] | None:
         """Each world's frame (``render_mode="rgb_array"``), None without a render mode."""
