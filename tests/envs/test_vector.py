@@ -134,12 +134,13 @@ def test_check_actions_clips_and_keeps_good_batches():
 
 
 @pytest.mark.parametrize(("kwargs", "match"), [
-    ({"num_envs": 0}, r"num_envs=0; valid: an integer in \[1, 4096\]"),
+    ({"num_envs": 0}, r"num_envs=0; valid: an integer in \[1, 256\]"),
     ({"num_envs": 2.5}, "num_envs=2.5"),
     ({"num_envs": 10**9}, "num_envs=1000000000"),  # refused before building any world
     ({"autoreset_mode": "sometimes"}, "autoreset_mode='sometimes'; valid: NextStep, "
                                        "SameStep, Disabled"),
     ({"colour": "red"}, r"unknown option\(s\) \['colour'\]"),
+    ({"render_mode": "human"}, "one viewer per world"),
 ])
 def test_bad_arguments_are_named(kwargs, match):
     with pytest.raises((ValueError, TypeError), match=match):

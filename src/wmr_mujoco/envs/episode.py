@@ -207,15 +207,18 @@ class Episode:
         prev, task = self.state, self.task
         self.state = state = self.stepper.finish()
         a = self.last_action
-        terms, success, failure = task.evaluate(prev, state, a, self.dt)
+        terms, success, failure, obs = task.evaluate_observe(prev, state, a, self.dt)
         time = state.time
         truncated = not (success or failure) and time >= task.time_limit - 1e-9
         if truncated:
             success = task.succeeded_at_time_limit(state)
         info = {"reward_terms": terms, "is_success": bool(success), "failed": bool(failure),
                 "time": time}
-        return (self.observe(), sum(terms.values()), not truncated and (success or failure),
-                truncated, info)
+        obs += state.uvr  # the task's block is a new list: extended in place (observe())
+        obs += state.wheel_rates_list
+        obs += a
+        return (np.array(obs, np.float32), sum(terms.values()),
+                not truncated and (success or failure), truncated, info)
 
     def observe(self) -> np.ndarray:
         """The observation vector (float32; module docstring)."""

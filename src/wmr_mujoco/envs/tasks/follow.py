@@ -142,7 +142,10 @@ class FollowPath(Task):
         The points ahead are interpolated linearly in arc length between the path's
         samples (clipped at its far end), in one pass over floats.
         """
-        p = self.project(state)
+        return self._observe(state, self.project(state))
+
+    def _observe(self, state: Any, p: Projection) -> list[float]:
+        """:meth:`observe` of the state's projection ``p``."""
         x, y, psi = pose_of(state)
         c, sn = math.cos(psi), math.sin(psi)
         sl, xl, yl, gx, gy, ids = self._s, self._x, self._y, self._gx, self._gy, self._ids
@@ -179,6 +182,12 @@ class FollowPath(Task):
                  "cross_track": -dt * (p.cross_track / dev) ** 2, "effort": effort(action),
                  "success": BONUS if success else 0.0, "failure": -BONUS if failure else 0.0},
                 success, failure)
+
+    def evaluate_observe(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                         ) -> tuple[dict[str, float], bool, bool, list[float]]:
+        """:meth:`evaluate` and :meth:`observe`, from one projection of each state."""
+        terms, success, failure = self.evaluate(prev, state, action, dt)
+        return terms, success, failure, self._observe(state, self._proj[1])
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """Success at the path's end; failure beyond ``max_deviation``."""
