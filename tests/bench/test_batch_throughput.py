@@ -30,9 +30,8 @@ def test_table_has_a_row_per_robot_and_backend():
 
 
 def test_docs_hold_the_markers():
-    from wmr_mujoco.docs_sync.markers import has_markers
-
     from wmr_mujoco.bench import batch_parity
+    from wmr_mujoco.docs_sync.markers import has_markers
 
     for marker in (bt.MARKER, bt.GPU_MARKER, batch_parity.MARKER, batch_parity.GPU_MARKER):
         assert has_markers(bt.DOC, marker)
