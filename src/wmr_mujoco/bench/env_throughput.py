@@ -96,6 +96,31 @@ def record(env: gym.Env, seed: int = SEED) -> Recording:
             return Recording(actions, commands, np.array(controls))
 
 
+def replayer(step: Callable[[int], bool], restart: Callable[[], None], n: int
+             ) -> Callable[[int], float]:
+    """A timed loop: ``run(steps)`` calls ``step(k)`` along an ``n``-step episode.
+
+    At the episode's end (or when ``step`` says it ended) it calls ``restart`` and starts
+    again at ``k = 0``; ``run`` returns the seconds of those restarts (left out of the
+    rate). Each loop keeps its place between runs.
+    """
+    state = {"k": 0}
+
+    def run(steps: int) -> float:
+        k, excluded = state["k"], 0.0
+        for _ in range(steps):
+            done = step(k)
+            k += 1
+            if done or k == n:
+                t0 = CLOCK()
+                restart()
+                excluded += CLOCK() - t0
+                k = 0
+        state["k"] = k
+        return excluded
+    return run
+
+
 def loops(env_id: str, vector: int
           ) -> tuple[dict[str, Callable[[int], float]], int, Callable[[], None]]:
     """The five timed loops of one environment (docstring), its frame skip and reset."""
@@ -108,21 +133,7 @@ def loops(env_id: str, vector: int
 
     def replay(step: Callable[[int], bool], restart: Callable[[], None]
                ) -> Callable[[int], float]:
-        state = {"k": 0}
-
-        def run(steps: int) -> float:
-            k, excluded = state["k"], 0.0
-            for _ in range(steps):
-                done = step(k)
-                k += 1
-                if done or k == n:
-                    t0 = CLOCK()
-                    restart()
-                    excluded += CLOCK() - t0
-                    k = 0
-            state["k"] = k
-            return excluded
-        return run
+        return replayer(step, restart, n)
 
     def env_step(k: int) -> bool:
         _, _, term, trunc, _ = env.step(rec.actions[k])
