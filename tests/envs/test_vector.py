@@ -129,8 +129,8 @@ def test_bad_actions_are_refused_before_any_world_steps(actions, match):
 
 
 def test_check_actions_clips_and_keeps_good_batches():
-    assert check_actions(np.array([[0.5, -2.0]], np.float32), (1, 2)) == [[0.5, -1.0]]
-    assert check_actions([[1, 0]], (1, 2)) == [[1.0, 0.0]]  # ints and lists are numbers
+    assert check_actions(np.array([[0.5, -2.0]], np.float32), (1, 2)).tolist() == [[0.5, -1.0]]
+    assert check_actions([[1, 0]], (1, 2)).tolist() == [[1.0, 0.0]]  # ints and lists are numbers
 
 
 @pytest.mark.parametrize(("kwargs", "match"), [

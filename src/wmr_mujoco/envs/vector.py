@@ -42,6 +42,8 @@ from gymnasium.vector import AutoresetMode
 from gymnasium.vector.utils import batch_space
 
 from wmr_mujoco.envs.env import WmrEnv
+from wmr_mujoco.envs.tasks.arrays import ARRAYS
+from wmr_mujoco.envs.worlds import Worlds
 
 #: Most worlds in one vector environment: each holds its own compiled model and data
 #: (measured: about 1.6 MB for the disc, 6 MB for the mecanum platform), so 256 worlds stay
@@ -49,39 +51,31 @@ from wmr_mujoco.envs.env import WmrEnv
 MAX_ENVS = 256
 
 
-def check_actions(actions: Any, shape: tuple[int, int]) -> list[list[float]]:
-    """A batch of actions as one list of floats per world, each clipped to ``[-1, 1]``.
+def check_actions(actions: Any, shape: tuple[int, int]) -> np.ndarray:
+    """A batch of actions as a float array of ``shape``, each entry clipped to ``[-1, 1]``.
 
     Raises:
         ValueError: not numeric, not of ``shape``, or not finite (before any world steps).
     """
     if type(actions) is np.ndarray and actions.shape == shape and actions.dtype.kind == "f":
-        rows = actions.tolist()
-        for row in rows:  # the usual case: checked on Python floats
-            for v in row:
-                if not -1.0 <= v <= 1.0:
-                    break
-            else:
-                continue
-            break
-        else:
-            return rows
-    try:
-        a = np.asarray(actions)
-        if a.dtype.kind not in "biuf":
-            raise TypeError
-        a = a.astype(float)
-    except (TypeError, ValueError):
-        raise ValueError(f"actions {actions!r} are not numeric (real); expected an array of "
-                         f"shape {shape} in [-1, 1]") from None
-    if a.shape != shape:
-        raise ValueError(f"actions have shape {a.shape}; expected {shape} (worlds, action "
-                         "channels) in [-1, 1]")
-    bad = np.flatnonzero(~np.isfinite(a).all(axis=1))
-    if bad.size:
+        a = actions.astype(float)
+    else:
+        try:
+            a = np.asarray(actions)
+            if a.dtype.kind not in "biuf":
+                raise TypeError
+            a = a.astype(float)
+        except (TypeError, ValueError):
+            raise ValueError(f"actions {actions!r} are not numeric (real); expected an array "
+                             f"of shape {shape} in [-1, 1]") from None
+        if a.shape != shape:
+            raise ValueError(f"actions have shape {a.shape}; expected {shape} (worlds, action "
+                             "channels) in [-1, 1]")
+    if not np.isfinite(a).all():
+        bad = np.flatnonzero(~np.isfinite(a).all(axis=1))
         raise ValueError(f"actions of world(s) {bad.tolist()} are not finite: "
                          f"{a[bad].tolist()}; expected finite numbers in [-1, 1]")
-    return np.clip(a, -1.0, 1.0).tolist()
+    return np.clip(a, -1.0, 1.0, out=a)
 
 
 def _seeds(seed: int | list[int | None] | None, n: int) -> list[int | None]:
@@ -139,8 +133,11 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         self.observation_space = batch_space(self.single_observation_space, n)
         self.dt = first.dt
         self._shape = (n, first.episode.n_action)
-        #: Each world's latest observation (a masked reset returns the others' too).
-        self._last: list[np.ndarray] = [np.zeros(first.episode.size, np.float32)] * n
+        #: Every world's latest observation (a masked reset returns the others' too).
+        self._obs = np.zeros((n, first.episode.size), np.float32)
+        #: The worlds' physics and reading, and their task, on arrays (the batched path).
+        self.worlds = Worlds(self.episodes)
+        self.tasks = ARRAYS[task](tuple(e.task for e in self.episodes))
         #: The worlds whose episode ended in the last step, and whether there is one.
         self._autoreset = np.zeros(n, np.bool_)
         self._ended = False
@@ -172,12 +169,19 @@ class WmrVectorEnv(gym.vector.VectorEnv):
                              f"shape ({n},) with at least one True")
         infos: dict[str, Any] = {}
         for i in np.flatnonzero(mask).tolist():
-            self._last[i], info = self.envs[i].reset(seed=seeds[i])
-            infos = self._add_info(infos, info, i)
+            infos = self._add_info(infos, self._reset_world(i, seeds[i]), i)
         self._autoreset = np.where(mask, False, self._autoreset)
         self._ended = bool(self._autoreset.any())
         self._started = all(e.state is not None for e in self.episodes)
-        return np.array(self._last), infos
+        return self._obs.copy(), infos
+
+    def _reset_world(self, i: int, seed: int | None = None) -> dict:
+        """Reset world ``i`` (its single environment's reset) and load it into the arrays."""
+        self._obs[i], info = self.envs[i].reset(seed=seed)
+        episode = self.episodes[i]
+        self.worlds.load(i)
+        self.tasks.load(i, episode.state)
+        return info
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
                                           dict]:
@@ -188,83 +192,108 @@ class WmrVectorEnv(gym.vector.VectorEnv):
             RuntimeError: a world never reset, or (``DISABLED``) an ended world not reset.
             SimulationDivergedError: a world's physics diverged.
         """
-        rows = check_actions(actions, self._shape)
+        a = check_actions(actions, self._shape)
         if not self._started:
             raise RuntimeError("call reset() before step()")
         mode = self.autoreset_mode
+        resets: list[tuple[int, dict]] = []
+        active = None
         if self._ended:  # an episode ended in the last step
             if mode is AutoresetMode.DISABLED:
                 raise RuntimeError(f"world(s) {np.flatnonzero(self._autoreset).tolist()} "
                                    "ended and were not reset (autoreset_mode DISABLED): call "
                                    "reset(options={'reset_mask': mask}) first")
-            if mode is AutoresetMode.NEXT_STEP:
-                return self._step_each(rows)
-        # The usual step: every world steps, its results gathered column by column (few
-        # numpy calls per batch: each costs as much as a world's step of Python).
-        episodes = self.episodes
-        for e, a in zip(episodes, rows, strict=True):  # every world's physics, then
-            e.push(a)  # every world's reading and task: that Python code then runs warm
-        steps = [e.pull() for e in episodes]
-        obs, rewards, terms, truncs, infos = zip(*steps, strict=True)
-        self._ended = ended = True in terms or True in truncs
-        self._last = list(obs)
-        terms, truncs = np.array(terms), np.array(truncs)
-        if ended:
-            self._autoreset = terms | truncs
-            if mode is AutoresetMode.SAME_STEP:
-                return self._finish_same_step(obs, rewards, terms, truncs, infos)
-        return np.array(obs), np.array(rewards), terms, truncs, self._gather(infos)
+            # NEXT_STEP: the ended worlds reset (their actions ignored), the others step
+            active = ~self._autoreset
+            resets = [(i, self._reset_world(i)) for i in
+                      np.flatnonzero(self._autoreset).tolist()]
+        # Every (active) world's physics, then every world's reading, task and bookkeeping
+        # at once on arrays (modules worlds and tasks.arrays).
+        self.worlds.push(a, active)
+        s = self.worlds.read()
+        block, terms, success, failure = self.tasks.step(s, a, self.dt)
+        obs = np.concatenate([block, s.uvr, s.wheel_rates, a], axis=1).astype(np.float32)
+        reward = 0.0
+        for v in terms.values():
+            reward = reward + v
+        truncs = ~(success | failure) & (s.time >= self.tasks.time_limit - 1e-9)
+        if truncs.any():
+            success = np.where(truncs, self.tasks.succeeded_at_time_limit(s), success)
+        terms_ = (success | failure) & ~truncs
+        flags = (terms, success, failure, s.time)
+        if active is not None:  # the reset worlds: first observation, reward 0, no flags
+            for i, _ in resets:
+                self.worlds.load(i)
+                self.tasks.load(i, self.episodes[i].state)
+            obs[~active] = self._obs[~active]
+            reward[~active] = 0.0
+            terms_ &= active
+            truncs &= active
+        ended = terms_ | truncs
+        self._autoreset = ended
+        self._ended = bool(ended.any())
+        if self._ended and mode is AutoresetMode.SAME_STEP:
+            return self._finish_same_step(obs, reward, terms_, truncs, flags)
+        self._obs = obs
+        return obs.copy(), reward, terms_, truncs, self._infos(flags, active, resets)
 
-    def _finish_same_step(self, obs: tuple[np.ndarray, ...], rewards: tuple[float, ...],
-                          terms: np.ndarray, truncs: np.ndarray, infos: tuple[dict, ...]
+    def _infos(self, flags: tuple, stepped: np.ndarray | None,
+               others: list[tuple[int, dict]]) -> dict[str, Any]:
+        """The step's infos as ``_add_info`` would merge the worlds' infos in world order.
+
+        ``flags``: the reward terms, success, failure and time arrays; ``stepped``: the
+        worlds that stepped (None: all: every mask is the one read-only all-True array
+        :attr:`_full`); ``others``: ``(world, info)`` of the worlds that did not step.
+        """
+        terms, success, failure, time = flags
+        if stepped is None:
+            mask = self._full
+        else:
+            mask = stepped.copy()
+            terms = {k: np.where(mask, v, 0.0) for k, v in terms.items()}
+            success, failure, time = success & mask, failure & mask, np.where(mask, time, 0.0)
+        out: dict[str, Any] = {}
+        first = int(np.argmax(mask)) if mask.any() else self.num_envs
+        for i, info in others:  # the worlds before the first that stepped: keys first
+            if i < first:
+                out = self._add_info(out, info, i)
+        if first < self.num_envs:
+            nested: dict[str, Any] = {}
+            for k, v in terms.items():
+                nested[k], nested[f"_{k}"] = v, mask
+            out.update({"reward_terms": nested, "_reward_terms": mask,
+                        "is_success": success, "_is_success": mask, "failed": failure,
+                        "_failed": mask, "time": time, "_time": mask})
+            if stepped is not None:  # own arrays: the later _add_info write into them
+                for k in ("_reward_terms", "_is_success", "_failed", "_time"):
+                    out[k] = mask.copy()
+                for k in list(nested):
+                    if k.startswith("_"):
+                        nested[k] = mask.copy()
+        for i, info in others:
+            if i >= first:
+                out = self._add_info(out, info, i)
+        return out
+
+    def _finish_same_step(self, obs: np.ndarray, reward: np.ndarray, terms: np.ndarray,
+                          truncs: np.ndarray, flags: tuple
                           ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict]:
         """``SAME_STEP``: reset the worlds that ended, their last step in the info."""
-        merged: dict[str, Any] = {}
-        out = np.array(obs)
-        for i, info in enumerate(infos):
-            if terms[i] or truncs[i]:
-                merged = self._add_info(merged, {"final_obs": obs[i], "final_info": info}, i)
-                out[i], info = self.envs[i].reset()
-            merged = self._add_info(merged, info, i)
-        self._last = [row.copy() for row in out]
+        ended = terms | truncs
+        t, success, failure, time = flags
+        others = []
+        for i in np.flatnonzero(ended).tolist():
+            last = {"reward_terms": {k: v[i].item() for k, v in t.items()},
+                    "is_success": bool(success[i]), "failed": bool(failure[i]),
+                    "time": time[i].item()}
+            final = {"final_obs": obs[i].copy(), "final_info": last}
+            final.update(self._reset_world(i))
+            others.append((i, final))
+        out = np.where(ended[:, None], self._obs, obs)
+        self._obs = out
         self._ended = False
         self._autoreset = np.zeros(self.num_envs, np.bool_)
-        return out, np.array(rewards), terms, truncs, merged
-
-    def _step_each(self, rows: list[list[float]]) -> tuple[np.ndarray, np.ndarray,
-                                                           np.ndarray, np.ndarray, dict]:
-        """``NEXT_STEP`` after an episode's end: world by world, the ended ones reset."""
-        n = self.num_envs
-        obs = np.zeros(self.observation_space.shape, np.float32)
-        rewards, terms, truncs = np.zeros(n), np.zeros(n, np.bool_), np.zeros(n, np.bool_)
-        merged: dict[str, Any] = {}
-        for i, (episode, a) in enumerate(zip(self.episodes, rows, strict=True)):
-            if self._autoreset[i]:
-                obs[i], info = self.envs[i].reset()
-            else:
-                obs[i], rewards[i], terms[i], truncs[i], info = episode.advance(a)
-            merged = self._add_info(merged, info, i)
-        self._last = [row.copy() for row in obs]
-        self._autoreset = terms | truncs
-        self._ended = bool(self._autoreset.any())
-        return obs, rewards, terms, truncs, merged
-
-    def _gather(self, infos: tuple[dict, ...]) -> dict[str, Any]:
-        """The infos of a step of every world, as ``_add_info`` would merge them.
-
-        Each key an array over the worlds (a column of one array per type); every mask is
-        the one all-True array :attr:`_full` (read-only: one array per step, not one per key).
-        """
-        first, full = infos[0]["reward_terms"], self._full
-        values = np.array([(*s["reward_terms"].values(), s["time"]) for s in infos])
-        flags = np.array([(s["is_success"], s["failed"]) for s in infos])
-        out: dict[str, Any] = {}
-        for j, k in enumerate(first):
-            out[k] = values[:, j]
-            out[f"_{k}"] = full
-        return {"reward_terms": out, "_reward_terms": full, "is_success": flags[:, 0],
-                "_is_success": full, "failed": flags[:, 1], "_failed": full,
-                "time": values[:, len(first)], "_time": full}
+        return out.copy(), reward, terms, truncs, self._infos(flags, ~ended, others)
 
     def render(self) -> tuple[Any, ...] | None:
         """Each world's frame (``render_mode="rgb_array"``), None without a render mode."""

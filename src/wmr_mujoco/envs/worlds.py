@@ -1,0 +1,139 @@
+"""n worlds stepped one after the other and read at once into arrays with a world axis.
+
+The batched path of the native vector environment (:mod:`wmr_mujoco.envs.vector`): each
+world's physics is its own :class:`~wmr_mujoco.envs.stepping.Stepper`'s (the same command
+map and ``mj_step`` calls, bit for bit), but the command of every world and the reading of
+every world are computed once per step on arrays of shape ``(n, …)``:
+
+* command ``C = c + h A`` (``A``: the ``(n, m)`` normalised actions, elementwise, the
+  floats of :meth:`~wmr_mujoco.envs.episode.Episode.command`);
+* pose: the ``base`` site's ``x, y`` and ``ψ = ψ₋ + remainder(atan2(R₁₀, R₀₀) − ψ₋, 2π)``
+  (unwrapped next to the last heading ``ψ₋``, as :meth:`Stepper.read`);
+* twist ``(u, v, r)`` from ``mj_objectVelocity`` (local frame), one C call per world into
+  a row of one ``(n, 6)`` buffer;
+* wheel rates ``q̇[wheel rows]`` and the command map's extras, and ``time`` since the reset.
+
+The transcendental functions run through :mod:`math` over the worlds' floats (a C loop:
+``map``), so that every float equals the single environment's; the rest is numpy
+elementwise arithmetic, which rounds as Python's floats do.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from itertools import repeat
+from typing import Any, NamedTuple
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco.envs.episode import Episode
+
+_SITE = mujoco.mjtObj.mjOBJ_SITE
+
+
+def each(fn: Callable[..., float], *args: Any) -> np.ndarray:
+    """``fn`` of :mod:`math` applied world by world (arrays or scalars), as a float array.
+
+    Runs ``map`` over the arrays' Python floats: the same function as the single
+    environment's scalar code, so the same floats (numpy's own ``sin``, ``arctan2`` may
+    differ in the last bit).
+    """
+    n = next(len(a) for a in args if isinstance(a, np.ndarray))
+    its = [a.tolist() if isinstance(a, np.ndarray) else repeat(a) for a in args]
+    return np.fromiter(map(fn, *its), float, n)
+
+
+class States(NamedTuple):
+    """Every world's state after a step, one row per world (module docstring).
+
+    Attributes:
+        time: s since each world's reset, (n,).
+        x, y, psi: the ``base`` site's pose, m, m, rad (ψ unwrapped), (n,) each.
+        uvr: body-frame twist ``(u, v, r)``, m/s, m/s, rad/s, (n, 3).
+        wheel_rates: rad/s, (n, wheels).
+        extra: the command map's extras, name -> (n,).
+    """
+
+    time: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    psi: np.ndarray
+    uvr: np.ndarray
+    wheel_rates: np.ndarray
+    extra: dict[str, np.ndarray]
+
+
+class Worlds:
+    """The physics and the reading of the worlds of ``episodes`` (module docstring).
+
+    Args:
+        episodes: one :class:`Episode` per world, all of one robot, mode and period.
+    """
+
+    def __init__(self, episodes: Sequence[Episode]) -> None:
+        self.episodes = list(episodes)
+        first = self.episodes[0]
+        self.n = n = len(self.episodes)
+        self.steppers = [e.stepper for e in self.episodes]
+        self._advance = [s.advance for s in self.steppers]
+        self._c, self._h = np.array(first._c), np.array(first._h)
+        st = self.steppers
+        self._datas = [s.data for s in st]
+        self._xpos = [s._xpos for s in st]
+        self._xmat = [s._xmat for s in st]
+        self._qvel = [s._qvel for s in st]
+        self._warnings = [s._warnings for s in st]
+        rows = first.stepper._rows  # a slice or indices
+        self._rows = rows if isinstance(rows, slice) else np.asarray(rows, np.intp)
+        self._vel = np.zeros((n, 6))
+        self._objvel = [(s.model, s.data, _SITE, s.site, self._vel[i])
+                        for i, s in enumerate(st)]
+        self._extras = first.stepper.extras
+        #: Each world's time at its reset, and its last heading (the unwrapping's anchor).
+        self.t0 = np.zeros(n)
+        self.heading = np.zeros(n)
+
+    def load(self, i: int) -> None:
+        """Take world ``i``'s reset (its stepper's time origin and heading)."""
+        s = self.steppers[i]
+        self.t0[i] = s._t0
+        self.heading[i] = s._heading
+
+    def push(self, actions: np.ndarray, active: np.ndarray | None = None) -> None:
+        """Hold the command of ``actions`` (n, m), checked, in every world (or ``active``)."""
+        commands = self._c + self._h * actions
+        if active is None:
+            for advance, u in zip(self._advance, commands, strict=True):
+                advance(u)
+        else:
+            for i in np.flatnonzero(active).tolist():
+                self._advance[i](commands[i])
+
+    def read(self) -> States:
+        """Every world's state now (raises on a world's divergence, as the stepper does).
+
+        Raises:
+            SimulationDivergedError: a world's physics diverged.
+        """
+        warned = np.array(self._warnings).any(axis=1)
+        if warned.any():
+            for i in np.flatnonzero(warned).tolist():
+                self.steppers[i].reader.check()
+        objvel = mujoco.mj_objectVelocity
+        for args in self._objvel:
+            objvel(*args, 1)
+        pos = np.array(self._xpos)
+        mat = np.array(self._xmat)
+        h = self.heading
+        psi = h + each(math.remainder, each(math.atan2, mat[:, 3], mat[:, 0]) - h, math.tau)
+        self.heading = psi
+        time = np.fromiter([d.time for d in self._datas], float, self.n) - self.t0
+        vel = self._vel
+        extra: dict[str, np.ndarray] = {}
+        if self._extras is not None:
+            rows = [dict(self._extras(s.model, s.data)) for s in self.steppers]
+            extra = {k: np.array([r[k] for r in rows]) for k in rows[0]}
+        return States(time, pos[:, 0], pos[:, 1], psi, vel[:, [3, 4, 2]],
+                      np.array(self._qvel)[:, self._rows], extra)
