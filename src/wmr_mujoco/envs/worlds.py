@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from itertools import repeat
-from typing import Any, NamedTuple
+from typing import NamedTuple
 
 import mujoco
 import numpy as np
@@ -33,16 +33,21 @@ from wmr_mujoco.envs.episode import Episode
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 
 
-def each(fn: Callable[..., float], *args: Any) -> np.ndarray:
-    """``fn`` of :mod:`math` applied world by world (arrays or scalars), as a float array.
+def each(fn: Callable[..., float], a: np.ndarray, b: np.ndarray | float | None = None
+         ) -> np.ndarray:
+    """``fn`` of :mod:`math` applied world by world: ``fn(a_i)`` or ``fn(a_i, b_i)``.
 
-    Runs ``map`` over the arrays' Python floats: the same function as the single
-    environment's scalar code, so the same floats (numpy's own ``sin``, ``arctan2`` may
-    differ in the last bit).
+    Runs ``map`` over the arrays' Python floats (a scalar ``b`` is used for every world):
+    the same function as the single environment's scalar code, so the same floats (numpy's
+    own ``exp``, ``hypot``, ``arctan2`` differ in the last bit for some arguments).
     """
-    n = next(len(a) for a in args if isinstance(a, np.ndarray))
-    its = [a.tolist() if isinstance(a, np.ndarray) else repeat(a) for a in args]
-    return np.fromiter(map(fn, *its), float, n)
+    if b is None:
+        it = map(fn, a.tolist())
+    elif isinstance(b, np.ndarray):
+        it = map(fn, a.tolist(), b.tolist())
+    else:
+        it = map(fn, a.tolist(), repeat(b, len(a)))
+    return np.fromiter(it, float, len(a))
 
 
 class States(NamedTuple):

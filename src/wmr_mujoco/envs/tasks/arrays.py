@@ -87,6 +87,7 @@ class GoalArrays(TaskArrays):
         self.phi = np.zeros(self.n)
 
     def load(self, i: int, state: Snapshot) -> None:
+        """Take world ``i``'s new episode from its task, and its first state."""
         task = self.tasks[i]
         self.goal[i] = task._goal
         _, _, d, e = task.measure(state)
@@ -94,6 +95,7 @@ class GoalArrays(TaskArrays):
         self.phi[i] = abs(e) * math.exp(-d / self.scale)
 
     def step(self, s: States, actions: np.ndarray, dt: float) -> Step:
+        """The task block, reward terms and outcome of every world's step to ``s``."""
         g, o, scale = self.goal, self.options, self.scale
         dx, dy = g[:, 0] - s.x, g[:, 1] - s.y
         c, sn = each(math.cos, s.psi), each(math.sin, s.psi)
@@ -112,13 +114,19 @@ class GoalArrays(TaskArrays):
         return obs, terms, success, failure
 
 
+#: Columns of :class:`PathArrays`'s table: per sample ``s, x, y, ψ``, and per segment from
+#: it ``Δx, Δy, 1/Δs, 1/|d|²`` (the scalar task's lists, bit for bit).
+S, X, Y, H, GX, GY, IDS, INV = range(8)
+
+
 class PathArrays(TaskArrays):
     """:class:`~wmr_mujoco.envs.tasks.follow.FollowPath` over n worlds.
 
-    The worlds' paths are padded into ``(n, K)`` arrays (``s``, ``x``, ``y``, ``ψ``; past a
-    path's end ``s = +∞``); per segment ``Δx``, ``Δy``, ``1/Δs``, ``1/|d|²``. Per world the
-    last segment ``k`` and arc length ``s*`` are kept; a step walks the segments from ``k``
-    (all worlds at once, while any world's walk goes on) as the scalar task's ``_walk``.
+    The worlds' paths are padded into one table of ``n × width`` rows (columns ``S`` to
+    ``INV``; past a path's end ``s = +∞``), indexed ``world · width + sample``. Per world the
+    last segment ``k`` and arc length ``s*`` are kept. A step walks the segments from ``k``
+    as the scalar task's ``_walk``: the feet on segments ``k − 1 … k + 2`` at once, then,
+    for the worlds whose walk goes on past them, one segment per pass.
     """
 
     def __init__(self, tasks: Sequence[Task]) -> None:
@@ -131,38 +139,38 @@ class PathArrays(TaskArrays):
         self.s = np.zeros(n)
         self.last = np.zeros(n, np.intp)
         self.send = np.zeros(n)
-        self.width = 0  #: samples per row
+        self.width = 0  #: samples per world
         self.window = 1  #: samples a look-ahead may pass beyond a world's segment
         self._alloc(2)
 
     def _alloc(self, width: int) -> None:
-        """Rows of ``width`` samples (the old rows kept)."""
+        """Rows of ``width`` samples per world (the old ones kept)."""
         n, old = self.n, self.width
-        grown = {}
-        for name, fill in (("S", math.inf), ("X", 0.0), ("Y", 0.0), ("H", 0.0), ("GX", 0.0),
-                           ("GY", 0.0), ("IDS", 0.0), ("INV", 0.0)):
-            a = np.full((n, width), fill)
-            if old:
-                a[:, :old] = getattr(self, name)
-            grown[name] = a
-        self.__dict__.update(grown)
+        table = np.zeros((n, width, 8))
+        table[:, :, S] = math.inf
+        if old:
+            table[:, :old] = self.table.reshape(n, old, 8)
         self.width = width
+        self.table = table.reshape(n * width, 8)
+        self.base = np.arange(n) * width
 
     def load(self, i: int, state: Snapshot) -> None:
+        """Take world ``i``'s new episode from its task, and its first state."""
         task = self.tasks[i]
         s = np.array(task._s)
         size = len(s)
         reach = np.searchsorted(s, s[1:] + self.ahead[-1], side="right") - np.arange(size - 1)
         self.window = max(self.window, int(reach.max()) + 1)
-        need = size + self.window + 1
+        need = size + self.window + 3
         if need > self.width:
             self._alloc(need)
-        for name, values in (("S", s), ("X", task._x), ("Y", task._y), ("H", task._heading),
-                             ("GX", task._gx), ("GY", task._gy), ("IDS", task._ids),
-                             ("INV", [g[4] for g in task._segments])):
-            row = getattr(self, name)[i]
-            row[len(values):] = math.inf if name == "S" else 0.0
-            row[:len(values)] = values
+        rows = self.table[i * self.width:(i + 1) * self.width]
+        rows[:] = 0.0
+        rows[:, S] = math.inf
+        for col, values in ((S, s), (X, task._x), (Y, task._y), (H, task._heading),
+                            (GX, task._gx), (GY, task._gy), (IDS, task._ids),
+                            (INV, [g[4] for g in task._segments])):
+            rows[:len(values), col] = values
         proj = task.project(state)
         self.k[i] = task._proj[2]
         self.s[i] = proj.s
@@ -171,54 +179,58 @@ class PathArrays(TaskArrays):
 
     def _foot(self, k: np.ndarray, px: np.ndarray, py: np.ndarray
               ) -> tuple[np.ndarray, np.ndarray]:
-        """``(squared distance, t)`` of each world's foot on its segment ``k``."""
-        r = self._r
-        ax, ay, dx, dy = self.X[r, k], self.Y[r, k], self.GX[r, k], self.GY[r, k]
-        t = ((px - ax) * dx + (py - ay) * dy) * self.INV[r, k]
+        """``(squared distance, t)`` of each world's foot on its segment(s) ``k`` (n, …)."""
+        base = self.base if k.ndim == 1 else self.base[:, None]
+        g = self.table[base + k]
+        ax, ay, dx, dy = g[..., X], g[..., Y], g[..., GX], g[..., GY]
+        t = ((px - ax) * dx + (py - ay) * dy) * g[..., INV]
         t = np.where(t < 0.0, 0.0, np.where(t > 1.0, 1.0, t))
         ex, ey = ax + t * dx - px, ay + t * dy - py
         return ex * ex + ey * ey, t
 
     def _walk(self, px: np.ndarray, py: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``(segment, t)`` per world: the scalar ``_walk`` from each world's last segment."""
-        start = i = self.k
-        best, t = self._foot(i, px, py)
-        for step, bound in ((1, self.last), (-1, None)):
+        k, last = self.k, self.last
+        near = np.minimum(np.maximum(k[:, None] + np.arange(-1, 3), 0), last[:, None])
+        d, u = self._foot(near, px[:, None], py[:, None])
+        f1 = (k + 1 <= last) & ~(d[:, 2] >= d[:, 1])  # forward one segment
+        f2 = f1 & (k + 2 <= last) & ~(d[:, 3] >= d[:, 2])  # and two
+        back = ~f1 & (k >= 1) & ~(d[:, 0] >= d[:, 1])  # else backward one
+        col = np.where(f2, 3, np.where(f1, 2, np.where(back, 0, 1)))
+        r = np.arange(self.n)
+        i, best, t = k + col - 1, d[r, col], u[r, col]
+        for step, go in ((1, f2 & (i + 1 <= last)), (-1, back & (i >= 1))):
             j = i + step
-            go = (j <= bound) if bound is not None else (j >= 0) & (i == start)
-            while go.any():
+            while go.any():  # the walks that go on: one segment per pass
                 j = np.where(go, j, i)
-                d, u = self._foot(j, px, py)
-                better = go & ~(d >= best)
-                i, best, t = np.where(better, j, i), np.where(better, d, best), \
-                    np.where(better, u, t)
+                dj, uj = self._foot(j, px, py)
+                better = go & ~(dj >= best)
+                i, best, t = (np.where(better, j, i), np.where(better, dj, best),
+                              np.where(better, uj, t))
                 j = j + step
-                go = better & ((j <= bound) if bound is not None else (j >= 0))
+                go = better & ((j <= last) if step > 0 else (j >= 0))
         return i, t
 
     def step(self, s: States, actions: np.ndarray, dt: float) -> Step:
-        self._r = r = np.arange(self.n)
+        """The task block, reward terms and outcome of every world's step to ``s``."""
         x, y, psi = s.x, s.y, s.psi
         i, t = self._walk(x, y)
-        S, H = self.S, self.H
-        rx = x - self.X[r, i] - t * self.GX[r, i]
-        ry = y - self.Y[r, i] - t * self.GY[r, i]
-        h0 = H[r, i]
-        heading = h0 + t * (H[r, i + 1] - h0)
+        here = self.base + i
+        a, b = self.table[here], self.table[here + 1]
+        rx = x - a[:, X] - t * a[:, GX]
+        ry = y - a[:, Y] - t * a[:, GY]
+        heading = a[:, H] + t * (b[:, H] - a[:, H])
         side = each(math.cos, heading) * ry - each(math.sin, heading) * rx
-        s0 = S[r, i]
-        sp = s0 + t * (S[r, i + 1] - s0)
+        sp = a[:, S] + t * (b[:, S] - a[:, S])
         cross = np.copysign(each(math.hypot, rx, ry), side)
         # the look-ahead points (FollowPath._observe): k = bisect_right(s, q) − 1
         q = np.minimum(sp[:, None] + self.ahead, self.send[:, None])
-        cols = i[:, None] + np.arange(self.window)
-        near = S[r[:, None], cols]
-        k = i[:, None] - 1 + (near[:, None, :] <= q[:, :, None]).sum(axis=2)
-        k = np.minimum(k, self.last[:, None])
-        rr = r[:, None]
-        tk = (q - S[rr, k]) * self.IDS[rr, k]
-        dx = self.X[rr, k] + tk * self.GX[rr, k] - x[:, None]
-        dy = self.Y[rr, k] + tk * self.GY[rr, k] - y[:, None]
+        ahead = self.table[here[:, None] + np.arange(self.window), S]
+        k = i[:, None] - 1 + (ahead[:, None, :] <= q[:, :, None]).sum(axis=2)
+        g = self.table[self.base[:, None] + np.minimum(k, self.last[:, None])]
+        tk = (q - g[..., S]) * g[..., IDS]
+        dx = g[..., X] + tk * g[..., GX] - x[:, None]
+        dy = g[..., Y] + tk * g[..., GY] - y[:, None]
         c, sn = each(math.cos, psi)[:, None], each(math.sin, psi)[:, None]
         pts = np.stack([c * dx + sn * dy, c * dy - sn * dx], axis=2).reshape(self.n, -1)
         e = each(math.remainder, heading - psi, math.tau)
@@ -243,9 +255,11 @@ class UprightArrays(TaskArrays):
         self.fall = self.options["fall_lean"]
 
     def load(self, i: int, state: Snapshot) -> None:
+        """Take world ``i``'s new episode from its task, and its first state."""
         self.speed[i] = self.tasks[i].speed
 
     def step(self, s: States, actions: np.ndarray, dt: float) -> Step:
+        """The task block, reward terms and outcome of every world's step to ``s``."""
         x, v = s.extra, self.speed
         lean, u = x["lean"], s.uvr[:, 0]
         obs = np.stack([lean, x["lean_rate"], x["steer"], x["steer_rate"], u - v, v], axis=1)
@@ -257,6 +271,7 @@ class UprightArrays(TaskArrays):
         return obs, terms, np.zeros(self.n, np.bool_), failure
 
     def succeeded_at_time_limit(self, s: States) -> np.ndarray:
+        """Per world: up, and within the speed tolerance."""
         lean, u, v = s.extra["lean"], s.uvr[:, 0], self.speed
         return (np.abs(lean) <= self.fall) & \
             (np.abs(u - v) <= self.options["speed_tolerance"] * v)
