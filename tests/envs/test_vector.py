@@ -41,11 +41,17 @@ def _same(a, b):
 
 @pytest.mark.parametrize("mode", list(AutoresetMode))
 @pytest.mark.parametrize("env_id", ["wmr/Disc-FollowPath-v0", "wmr/Whipple-StayUpright-v0",
-                                    "wmr/DiffDrive-GoToGoal-v0"])
+                                    "wmr/DiffDrive-GoToGoal-v0", "wmr/Bicycle-FollowPath-v0",
+                                    "wmr/Mecanum4-GoToGoal-v0",
+                                    "wmr/Omni3Reduced-FollowPath-v0"])
 def test_native_equals_n_single_envs_with_the_same_seeds(env_id, mode):
-    # Exact equality: world i runs the single environment's own step on its own model, so
-    # every observation (float32), reward, flag and info must be bit for bit those of
-    # Gymnasium's SyncVectorEnv over n single environments seeded alike.
+    # Exact equality (no tolerance): world i's physics is the single environment's own
+    # (its stepper's command map and mj_step calls on its own model), and the batched
+    # reading, task and bookkeeping (envs.worlds, envs.tasks.arrays) are the scalar code's
+    # floating-point operations in the same order, so every observation (float32), reward,
+    # flag and info must be bit for bit those of Gymnasium's SyncVectorEnv over n single
+    # environments seeded alike. Light and heavy robots, each task kind, every autoreset
+    # mode, randomisation on, episodes ending (0.3 s) and so resets mixed with steps.
     n = 3
     native = gym.make_vec(env_id, num_envs=n, autoreset_mode=mode, randomize=True, **SHORT)
     sync = gym.make_vec(env_id, num_envs=n, vectorization_mode="sync", randomize=True,
@@ -166,3 +172,13 @@ def test_rgb_frames_per_world():
     frames = envs.render()
     assert len(frames) == 2 and frames[0].shape == (48, 64, 3)
     envs.close()
+
+
+def test_a_diverging_world_is_reported():
+    from wmr_mujoco.sim.stepping import SimulationDivergedError
+
+    envs = gym.make_vec("wmr/Disc-GoToGoal-v0", num_envs=3)
+    envs.reset(seed=0)
+    envs.envs[1].robot.data.qvel[:] = 1e300  # world 1 blows up in its next step
+    with pytest.raises(SimulationDivergedError):
+        envs.step(np.zeros((3, 2)))

@@ -138,6 +138,11 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         #: The worlds' physics and reading, and their task, on arrays (the batched path).
         self.worlds = Worlds(self.episodes)
         self.tasks = ARRAYS[task](tuple(e.task for e in self.episodes))
+        #: The step's observations in float64 (the task's block, twist, wheel rates, action)
+        #: and where the robot's blocks start.
+        self._full_obs = np.zeros((n, first.episode.size))
+        t0 = first.task.size
+        self._cols = (t0, t0 + 3, t0 + 3 + len(first.robot.wheel_names))
         #: The worlds whose episode ended in the last step, and whether there is one.
         self._autoreset = np.zeros(n, np.bool_)
         self._ended = False
@@ -211,8 +216,12 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         # at once on arrays (modules worlds and tasks.arrays).
         self.worlds.push(a, active)
         s = self.worlds.read()
-        block, terms, success, failure = self.tasks.step(s, a, self.dt)
-        obs = np.concatenate([block, s.uvr, s.wheel_rates, a], axis=1).astype(np.float32)
+        full, (t0, t1, t2) = self._full_obs, self._cols
+        terms, success, failure = self.tasks.step(s, a, self.dt, full)
+        full[:, t0:t1] = s.uvr
+        full[:, t1:t2] = s.wheel_rates
+        full[:, t2:] = a
+        obs = full.astype(np.float32)
         reward = 0.0
         for v in terms.values():
             reward = reward + v

@@ -83,6 +83,13 @@ class Worlds:
         self.n = n = len(self.episodes)
         self.steppers = [e.stepper for e in self.episodes]
         self._advance = [s.advance for s in self.steppers]
+        #: The usual physics inlined (a command map ``ctrl = W u``, a split step): each
+        #: world's ``(W, model, data, ctrl)``; None: each stepper's own ``advance``.
+        st0 = first.stepper
+        self._inline = None
+        if st0._w is not None and st0.split and st0.nstep > 1:
+            self._inline = [(s._w, s.model, s.data, s._ctrl) for s in self.steppers]
+            self._nstep = st0.nstep
         self._c, self._h = np.array(first._c), np.array(first._h)
         st = self.steppers
         self._datas = [s.data for s in st]
@@ -109,7 +116,16 @@ class Worlds:
     def push(self, actions: np.ndarray, active: np.ndarray | None = None) -> None:
         """Hold the command of ``actions`` (n, m), checked, in every world (or ``active``)."""
         commands = self._c + self._h * actions
-        if active is None:
+        if active is None and self._inline is not None:  # Stepper.advance, inlined
+            matmul, step1, step, step2 = np.matmul, mujoco.mj_step1, mujoco.mj_step, \
+                mujoco.mj_step2
+            n1 = self._nstep - 1
+            for (w, model, data, ctrl), u in zip(self._inline, commands, strict=True):
+                matmul(w, u, out=ctrl)
+                step2(model, data)
+                step(model, data, n1)
+                step1(model, data)
+        elif active is None:
             for advance, u in zip(self._advance, commands, strict=True):
                 advance(u)
         else:

@@ -28,8 +28,8 @@ from wmr_mujoco.envs.tasks.base import EFFORT, Task
 from wmr_mujoco.envs.tasks.goal import BONUS
 from wmr_mujoco.envs.worlds import States, each
 
-#: ``(obs (n, k), reward terms name -> (n,), success (n,), failure (n,))`` of one step.
-Step = tuple[np.ndarray, dict[str, np.ndarray], np.ndarray, np.ndarray]
+#: ``(reward terms name -> (n,), success (n,), failure (n,))`` of one step.
+Step = tuple[dict[str, np.ndarray], np.ndarray, np.ndarray]
 
 
 def effort(actions: np.ndarray) -> np.ndarray:
@@ -65,8 +65,11 @@ class TaskArrays(ABC):
         """Take world ``i``'s new episode from its task, and its first state."""
 
     @abstractmethod
-    def step(self, s: States, actions: np.ndarray, dt: float) -> Step:
-        """The task block, reward terms and outcome of every world's step to ``s``."""
+    def step(self, s: States, actions: np.ndarray, dt: float, out: np.ndarray) -> Step:
+        """The reward terms and outcome of every world's step to ``s``.
+
+        The task's observation block is written into the first columns of ``out`` (n, …).
+        """
 
     def succeeded_at_time_limit(self, s: States) -> np.ndarray:
         """Per world: whether running to the time limit counts as a success (default no)."""
@@ -94,16 +97,19 @@ class GoalArrays(TaskArrays):
         self.d[i] = d
         self.phi[i] = abs(e) * math.exp(-d / self.scale)
 
-    def step(self, s: States, actions: np.ndarray, dt: float) -> Step:
-        """The task block, reward terms and outcome of every world's step to ``s``."""
+    def step(self, s: States, actions: np.ndarray, dt: float, out: np.ndarray) -> Step:
+        """The reward terms and outcome of every world's step to ``s`` (block in ``out``)."""
         g, o, scale = self.goal, self.options, self.scale
         dx, dy = g[:, 0] - s.x, g[:, 1] - s.y
         c, sn = each(math.cos, s.psi), each(math.sin, s.psi)
         e = each(math.remainder, g[:, 2] - s.psi, math.tau)
         e[e == -math.pi] = math.pi
         d = each(math.hypot, dx, dy)
-        obs = np.stack([c * dx + sn * dy, c * dy - sn * dx, each(math.sin, e),
-                        each(math.cos, e), d], axis=1)
+        out[:, 0] = c * dx + sn * dy
+        out[:, 1] = c * dy - sn * dx
+        out[:, 2] = each(math.sin, e)
+        out[:, 3] = each(math.cos, e)
+        out[:, 4] = d
         phi = np.abs(e) * each(math.exp, -d / scale)
         success = (d < o["position_tolerance"]) & (np.abs(e) < o["heading_tolerance"])
         failure = d > o["arena"]
@@ -111,7 +117,7 @@ class GoalArrays(TaskArrays):
                  "effort": effort(actions), "success": bonus(success, BONUS),
                  "failure": bonus(failure, -BONUS)}
         self.d, self.phi = d, phi
-        return obs, terms, success, failure
+        return terms, success, failure
 
 
 #: Columns of :class:`PathArrays`'s table: per sample ``s, x, y, ψ``, and per segment from
@@ -146,12 +152,12 @@ class PathArrays(TaskArrays):
     def _alloc(self, width: int) -> None:
         """Rows of ``width`` samples per world (the old ones kept)."""
         n, old = self.n, self.width
-        table = np.zeros((n, width, 8))
-        table[:, :, S] = math.inf
+        table = np.zeros((8, n, width))
+        table[S] = math.inf
         if old:
-            table[:, :old] = self.table.reshape(n, old, 8)
+            table[:, :, :old] = self.table.reshape(8, n, old)
         self.width = width
-        self.table = table.reshape(n * width, 8)
+        self.table = table.reshape(8, n * width)
         self.base = np.arange(n) * width
 
     def load(self, i: int, state: Snapshot) -> None:
@@ -164,13 +170,13 @@ class PathArrays(TaskArrays):
         need = size + self.window + 3
         if need > self.width:
             self._alloc(need)
-        rows = self.table[i * self.width:(i + 1) * self.width]
+        rows = self.table[:, i * self.width:(i + 1) * self.width]
         rows[:] = 0.0
-        rows[:, S] = math.inf
+        rows[S] = math.inf
         for col, values in ((S, s), (X, task._x), (Y, task._y), (H, task._heading),
                             (GX, task._gx), (GY, task._gy), (IDS, task._ids),
                             (INV, [g[4] for g in task._segments])):
-            rows[:len(values), col] = values
+            rows[col, :len(values)] = values
         proj = task.project(state)
         self.k[i] = task._proj[2]
         self.s[i] = proj.s
@@ -181,9 +187,9 @@ class PathArrays(TaskArrays):
               ) -> tuple[np.ndarray, np.ndarray]:
         """``(squared distance, t)`` of each world's foot on its segment(s) ``k`` (n, …)."""
         base = self.base if k.ndim == 1 else self.base[:, None]
-        g = self.table[base + k]
-        ax, ay, dx, dy = g[..., X], g[..., Y], g[..., GX], g[..., GY]
-        t = ((px - ax) * dx + (py - ay) * dy) * g[..., INV]
+        g = self.table[:, base + k]
+        ax, ay, dx, dy = g[X], g[Y], g[GX], g[GY]
+        t = ((px - ax) * dx + (py - ay) * dy) * g[INV]
         t = np.where(t < 0.0, 0.0, np.where(t > 1.0, 1.0, t))
         ex, ey = ax + t * dx - px, ay + t * dy - py
         return ex * ex + ey * ey, t
@@ -211,31 +217,35 @@ class PathArrays(TaskArrays):
                 go = better & ((j <= last) if step > 0 else (j >= 0))
         return i, t
 
-    def step(self, s: States, actions: np.ndarray, dt: float) -> Step:
-        """The task block, reward terms and outcome of every world's step to ``s``."""
+    def step(self, s: States, actions: np.ndarray, dt: float, out: np.ndarray) -> Step:
+        """The reward terms and outcome of every world's step to ``s`` (block in ``out``)."""
         x, y, psi = s.x, s.y, s.psi
         i, t = self._walk(x, y)
         here = self.base + i
-        a, b = self.table[here], self.table[here + 1]
-        rx = x - a[:, X] - t * a[:, GX]
-        ry = y - a[:, Y] - t * a[:, GY]
-        heading = a[:, H] + t * (b[:, H] - a[:, H])
+        a, b = self.table[:, here], self.table[:, here + 1]
+        rx = x - a[X] - t * a[GX]
+        ry = y - a[Y] - t * a[GY]
+        heading = a[H] + t * (b[H] - a[H])
         side = each(math.cos, heading) * ry - each(math.sin, heading) * rx
-        sp = a[:, S] + t * (b[:, S] - a[:, S])
+        sp = a[S] + t * (b[S] - a[S])
         cross = np.copysign(each(math.hypot, rx, ry), side)
         # the look-ahead points (FollowPath._observe): k = bisect_right(s, q) − 1
         q = np.minimum(sp[:, None] + self.ahead, self.send[:, None])
-        ahead = self.table[here[:, None] + np.arange(self.window), S]
-        k = i[:, None] - 1 + (ahead[:, None, :] <= q[:, :, None]).sum(axis=2)
-        g = self.table[self.base[:, None] + np.minimum(k, self.last[:, None])]
-        tk = (q - g[..., S]) * g[..., IDS]
-        dx = g[..., X] + tk * g[..., GX] - x[:, None]
-        dy = g[..., Y] + tk * g[..., GY] - y[:, None]
+        ahead = self.table[S, here[:, None] + np.arange(self.window)]
+        k = np.count_nonzero(ahead[:, None, :] <= q[:, :, None], axis=2)
+        k += i[:, None] - 1
+        g = self.table[:, self.base[:, None] + np.minimum(k, self.last[:, None])]
+        tk = (q - g[S]) * g[IDS]
+        dx = g[X] + tk * g[GX] - x[:, None]
+        dy = g[Y] + tk * g[GY] - y[:, None]
         c, sn = each(math.cos, psi)[:, None], each(math.sin, psi)[:, None]
-        pts = np.stack([c * dx + sn * dy, c * dy - sn * dx], axis=2).reshape(self.n, -1)
+        out[:, 0:10:2] = c * dx + sn * dy
+        out[:, 1:10:2] = c * dy - sn * dx
         e = each(math.remainder, heading - psi, math.tau)
-        obs = np.concatenate([pts, np.stack([cross, each(math.sin, e), each(math.cos, e),
-                                             self.end - sp], axis=1)], axis=1)
+        out[:, 10] = cross
+        out[:, 11] = each(math.sin, e)
+        out[:, 12] = each(math.cos, e)
+        out[:, 13] = self.end - sp
         failure = np.abs(cross) > self.dev
         success = (sp >= self.end) & ~failure
         z = cross / self.dev
@@ -243,7 +253,7 @@ class PathArrays(TaskArrays):
                  "effort": effort(actions), "success": bonus(success, BONUS),
                  "failure": bonus(failure, -BONUS)}
         self.k, self.s = i, sp
-        return obs, terms, success, failure
+        return terms, success, failure
 
 
 class UprightArrays(TaskArrays):
@@ -258,17 +268,18 @@ class UprightArrays(TaskArrays):
         """Take world ``i``'s new episode from its task, and its first state."""
         self.speed[i] = self.tasks[i].speed
 
-    def step(self, s: States, actions: np.ndarray, dt: float) -> Step:
-        """The task block, reward terms and outcome of every world's step to ``s``."""
+    def step(self, s: States, actions: np.ndarray, dt: float, out: np.ndarray) -> Step:
+        """The reward terms and outcome of every world's step to ``s`` (block in ``out``)."""
         x, v = s.extra, self.speed
         lean, u = x["lean"], s.uvr[:, 0]
-        obs = np.stack([lean, x["lean_rate"], x["steer"], x["steer_rate"], u - v, v], axis=1)
+        for j, col in enumerate((lean, x["lean_rate"], x["steer"], x["steer_rate"], u - v, v)):
+            out[:, j] = col
         rel = (u - v) / v
         z = lean / self.fall
         failure = np.abs(lean) > self.fall
         terms = {"alive": np.full(self.n, dt), "lean": -dt * (z * z), "speed": -dt * rel * rel,
                  "effort": effort(actions), "failure": bonus(failure, -BONUS)}
-        return obs, terms, np.zeros(self.n, np.bool_), failure
+        return terms, np.zeros(self.n, np.bool_), failure
 
     def succeeded_at_time_limit(self, s: States) -> np.ndarray:
         """Per world: up, and within the speed tolerance."""
