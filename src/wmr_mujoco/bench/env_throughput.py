@@ -213,7 +213,7 @@ def measure(env_id: str, seconds: float, repeats: int, vector: int = 4) -> dict[
         reset()
         samples["reset_ms"].append(1e3 * (CLOCK() - t0))
     out: dict[str, float] = {name: statistics.median(x) for name, x in samples.items()}
-    for name, size in vector_sizes(vector).items():
+    for name in vector_sizes(vector):
         if name not in out:  # the --vector loop's size
             out[name] = out["vector"]
     for name in ("env", *vector_sizes(vector), "sync", "drive"):
