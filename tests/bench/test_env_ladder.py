@@ -36,3 +36,11 @@ def test_bad_arguments_exit_2(capsys):
     with pytest.raises(SystemExit) as exc:
         env_ladder.main(["wmr/Nope-v0"])
     assert exc.value.code == 2
+
+
+def test_the_vector_layers_are_timed_per_world_step():
+    us = env_ladder.ladder("wmr/Disc-FollowPath-v0", seconds=0.05, repeats=1, worlds=2)
+    assert set(us) == set(env_ladder.VECTOR_LAYERS) and all(v > 0 for v in us.values())
+    row = env_ladder.table({"wmr/Disc-FollowPath-v0": us}).splitlines()
+    assert row[0].endswith("| vector | vector / bare |")
+    assert row[-1].count("(+") + row[-1].count("(-") == len(env_ladder.VECTOR_LAYERS) - 1

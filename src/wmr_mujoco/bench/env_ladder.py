@@ -17,6 +17,14 @@ adds:
   info dict and the float32 observation);
 * ``env``: ``env.step`` (adds the action's check).
 
+``--vector N`` times the native vector environment's batched step instead, per world-step,
+at ``N`` worlds (:data:`VECTOR_LAYERS`): ``bare`` (the bare loop over the N worlds),
+``physics`` (:meth:`Worlds.push <wmr_mujoco.envs.worlds.Worlds.push>`: every world's
+command and timesteps), ``read`` (adds :meth:`Worlds.read
+<wmr_mujoco.envs.worlds.Worlds.read>`: every world's state into arrays), ``task`` (adds
+the task's arrays step, :mod:`wmr_mujoco.envs.tasks.arrays`) and ``vector`` (``step`` of
+the vector environment: adds the action check, observation, flags and infos).
+
 Every loop runs the same physics after the same actions, in this process, timed in its CPU
 time and taking turns (medians of ``--repeats`` runs of ``--seconds``): each layer's cost is
 measured as it runs in a real step, right after the physics has filled the caches, which
@@ -33,11 +41,62 @@ from typing import Any
 
 import gymnasium as gym
 import mujoco
+import numpy as np
 
 from wmr_mujoco.bench.env_throughput import SEED, check_ids, rate, record, replayer
 
 #: The loops, each adding one layer to the one before (module docstring).
 LAYERS = ("bare", "physics", "stepper", "task", "episode", "env")
+#: The loops of the native vector environment's batched step (module docstring).
+VECTOR_LAYERS = ("bare", "physics", "read", "task", "vector")
+
+
+def vector_loops(env_id: str, worlds: int) -> dict[str, Callable[[int], float]]:
+    """The timed loops of :data:`VECTOR_LAYERS` at ``worlds`` worlds, each its own envs."""
+    rec = record(gym.make(env_id))
+    off = gym.vector.AutoresetMode.DISABLED
+    vecs = {name: gym.make_vec(env_id, num_envs=worlds, autoreset_mode=off)
+            for name in VECTOR_LAYERS}
+    for v in vecs.values():
+        v.reset(seed=[SEED] * worlds)
+    batch = [np.stack([a] * worlds).astype(float) for a in rec.actions]
+    bare = [(e.robot.model, e.robot.data, e.frame_skip) for e in vecs["bare"].envs]
+    starts = []
+    for model, data, _ in bare:
+        starts.append(mujoco.MjData(model))
+        mujoco.mj_copyData(starts[-1], model, data)
+
+    def bare_step(k: int) -> bool:
+        for model, data, skip in bare:
+            data.ctrl[:] = rec.controls[k]
+            mujoco.mj_step(model, data, skip)
+        return False
+
+    def read_step(k: int) -> bool:
+        w = vecs["read"].worlds
+        w.push(batch[k])
+        w.read()
+        return False
+
+    def task_step(k: int) -> bool:
+        v = vecs["task"]
+        v.worlds.push(batch[k])
+        _, success, failure = v.tasks.step(v.worlds.read(), batch[k], v.dt, v._full_obs)
+        return bool(success.any() or failure.any())
+
+    def vector_step(k: int) -> bool:
+        _, _, term, trunc, _ = vecs["vector"].step(batch[k])
+        return bool(term.any() or trunc.any())
+
+    def restart(name: str) -> Callable[[], None]:
+        if name == "bare":
+            return lambda: [mujoco.mj_copyData(d, m, s) for (m, d, _), s in
+                            zip(bare, starts, strict=True)] and None
+        return lambda: vecs[name].reset(seed=[SEED] * worlds) and None
+
+    steps = {"bare": bare_step, "physics": lambda k: vecs["physics"].worlds.push(batch[k])
+             or False, "read": read_step, "task": task_step, "vector": vector_step}
+    return {name: replayer(steps[name], restart(name), len(batch)) for name in VECTOR_LAYERS}
 
 
 def ladder_loops(env_id: str) -> tuple[dict[str, Callable[[int], float]], dict[str, Any]]:
@@ -88,27 +147,31 @@ def ladder_loops(env_id: str) -> tuple[dict[str, Callable[[int], float]], dict[s
     return {name: replayer(steps[name], restarts[name], n) for name in LAYERS}, envs
 
 
-def ladder(env_id: str, seconds: float, repeats: int) -> dict[str, float]:
-    """Median µs per step of each loop of :data:`LAYERS`."""
-    runs, _ = ladder_loops(env_id)
+def ladder(env_id: str, seconds: float, repeats: int, worlds: int = 0) -> dict[str, float]:
+    """Median µs per step of each loop of :data:`LAYERS`.
+
+    ``worlds`` > 0: µs per world-step of :data:`VECTOR_LAYERS` at that many worlds.
+    """
+    runs = vector_loops(env_id, worlds) if worlds else ladder_loops(env_id)[0]
     for run in runs.values():
         run(10)
     samples: dict[str, list[float]] = {name: [] for name in runs}
     for _ in range(repeats):
         for name, run in runs.items():
-            samples[name].append(1e6 / rate(run, seconds))
+            samples[name].append(1e6 / rate(run, seconds) / max(worlds, 1))
     return {name: statistics.median(x) for name, x in samples.items()}
 
 
 def table(rows: dict[str, dict[str, float]]) -> str:
     """Markdown: µs per step of each loop, and (in brackets) what its layer adds."""
-    head = "| environment | " + " | ".join(LAYERS) + " | env / bare |"
-    lines = [head, "|---|" + "---:|" * (len(LAYERS) + 1)]
+    layers = VECTOR_LAYERS if "vector" in next(iter(rows.values())) else LAYERS
+    head = "| environment | " + " | ".join(layers) + f" | {layers[-1]} / bare |"
+    lines = [head, "|---|" + "---:|" * (len(layers) + 1)]
     for env_id, us in rows.items():
         cells = [f"{us['bare']:.1f}"] + [
-            f"{us[b]:.1f} (+{us[b] - us[a]:.1f})" for a, b in pairwise(LAYERS)]
+            f"{us[b]:.1f} (+{us[b] - us[a]:.1f})" for a, b in pairwise(layers)]
         lines.append(f"| {env_id} | " + " | ".join(cells) +
-                     f" | {100 * us['bare'] / us['env']:.0f} % |")
+                     f" | {100 * us['bare'] / us[layers[-1]]:.0f} % |")
     return "\n".join(lines)
 
 
@@ -118,17 +181,21 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("ids", nargs="*", help="environment ids (default: the light robots)")
     parser.add_argument("--seconds", type=float, default=0.5)
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--vector", type=int, default=0,
+                        help="worlds of the native vector env (default 0: the single env)")
     args = parser.parse_args(argv)
-    if not 0.05 <= args.seconds <= 30 or not 1 <= args.repeats <= 20:
+    if not 0.05 <= args.seconds <= 30 or not 1 <= args.repeats <= 20 or \
+            not 0 <= args.vector <= 64:
         parser.error(f"--seconds {args.seconds} (valid: 0.05 to 30), --repeats "
-                     f"{args.repeats} (1 to 20)")
+                     f"{args.repeats} (1 to 20), --vector {args.vector} (0 to 64)")
     ids = check_ids(parser, args.ids) or ["wmr/Disc-GoToGoal-v0", "wmr/Disc-FollowPath-v0",
                                           "wmr/Bicycle-FollowPath-v0"]
     rows = {}
     for env_id in ids:
-        rows[env_id] = ladder(env_id, args.seconds, args.repeats)
+        rows[env_id] = ladder(env_id, args.seconds, args.repeats, args.vector)
     print(table(rows))
-    print(f"\nµs per step (in brackets: what the layer adds to the one before); medians of "
+    per = f"world-step at {args.vector} worlds" if args.vector else "step"
+    print(f"\nµs per {per} (in brackets: what the layer adds to the one before); medians of "
           f"{args.repeats} runs of {args.seconds:g} s, one process, CPU time.")
     return 0
 
