@@ -126,3 +126,25 @@ def test_effort_and_each_are_the_scalar_sums_and_functions():
     assert each(math.atan2, x, x[::-1]).tolist() == [math.atan2(p, q) for p, q in
                                                      zip(x.tolist(), x[::-1].tolist(), strict=True)]
     assert each(math.remainder, x, math.tau).tolist() == [math.remainder(v, math.tau) for v in x]
+
+
+@pytest.mark.parametrize("spacing", [1 / 3, 1.0, 3.0])
+def test_the_look_ahead_search_is_bisect_whatever_its_guess(spacing):
+    # The search starts from a guess (the path's mean sample spacing) and moves until
+    # s[k] <= q < s[k+1]: a wrong guess (the spacing scaled) must change nothing.
+    import bisect
+
+    tasks, starts = _tasks("FollowPath", "disc", 3, 11)
+    arrays = ARRAYS["FollowPath"](tasks)
+    for i, (task, start) in enumerate(zip(tasks, starts, strict=True)):
+        state = Fake(tuple(start.tolist()), (0.0, 0.0, 0.0), {})
+        task.observe(state)
+        arrays.load(i, state)
+    arrays.ds *= spacing
+    rng = np.random.default_rng(12)
+    i = np.array([rng.integers(0, len(t._s) - 1) for t in tasks])
+    s_i = np.array([t._s[k] for t, k in zip(tasks, i, strict=True)])
+    q = np.minimum(s_i[:, None] + rng.uniform(0, 3, (3, 5)), arrays.send[:, None])
+    k = arrays._search(q, i)
+    for w, task in enumerate(tasks):
+        assert k[w].tolist() == [bisect.bisect_right(task._s, v) - 1 for v in q[w].tolist()]

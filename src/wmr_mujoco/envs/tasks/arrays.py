@@ -145,8 +145,8 @@ class PathArrays(TaskArrays):
         self.s = np.zeros(n)
         self.last = np.zeros(n, np.intp)
         self.send = np.zeros(n)
+        self.ds = np.ones(n)  #: each path's mean sample spacing, m (the look-ahead's guess)
         self.width = 0  #: samples per world
-        self.window = 1  #: samples a look-ahead may pass beyond a world's segment
         self._alloc(2)
 
     def _alloc(self, width: int) -> None:
@@ -165,9 +165,7 @@ class PathArrays(TaskArrays):
         task = self.tasks[i]
         s = np.array(task._s)
         size = len(s)
-        reach = np.searchsorted(s, s[1:] + self.ahead[-1], side="right") - np.arange(size - 1)
-        self.window = max(self.window, int(reach.max()) + 1)
-        need = size + self.window + 3
+        need = size + 2  # past the end: s = +∞ (a search stops there)
         if need > self.width:
             self._alloc(need)
         rows = self.table[:, i * self.width:(i + 1) * self.width]
@@ -182,6 +180,7 @@ class PathArrays(TaskArrays):
         self.s[i] = proj.s
         self.last[i] = size - 2
         self.send[i] = s[-1]
+        self.ds[i] = s[-1] / (size - 1) if s[-1] > 0 else 1.0
 
     def _foot(self, k: np.ndarray, px: np.ndarray, py: np.ndarray
               ) -> tuple[np.ndarray, np.ndarray]:
@@ -217,6 +216,23 @@ class PathArrays(TaskArrays):
                 go = better & ((j <= last) if step > 0 else (j >= 0))
         return i, t
 
+    def _search(self, q: np.ndarray, i: np.ndarray) -> np.ndarray:
+        """``bisect_right(s, q) − 1`` per world and look-ahead (q (n, 5) ≥ ``s[i]``).
+
+        Guessed from the mean sample spacing, then moved until ``s[k] ≤ q < s[k + 1]``
+        (exact whatever the guess: the samples are sorted).
+        """
+        flat = self.table[S]
+        base = self.base[:, None]
+        k = np.minimum(np.maximum((q / self.ds[:, None]).astype(np.intp), i[:, None]),
+                       self.last[:, None] + 1)
+        for step in (1, -1):
+            move = (flat[base + k + 1] <= q) if step > 0 else (flat[base + k] > q)
+            while move.any():
+                k = k + step * move
+                move &= (flat[base + k + 1] <= q) if step > 0 else (flat[base + k] > q)
+        return k
+
     def step(self, s: States, actions: np.ndarray, dt: float, out: np.ndarray) -> Step:
         """The reward terms and outcome of every world's step to ``s`` (block in ``out``)."""
         x, y, psi = s.x, s.y, s.psi
@@ -231,9 +247,7 @@ class PathArrays(TaskArrays):
         cross = np.copysign(each(math.hypot, rx, ry), side)
         # the look-ahead points (FollowPath._observe): k = bisect_right(s, q) − 1
         q = np.minimum(sp[:, None] + self.ahead, self.send[:, None])
-        ahead = self.table[S, here[:, None] + np.arange(self.window)]
-        k = np.count_nonzero(ahead[:, None, :] <= q[:, :, None], axis=2)
-        k += i[:, None] - 1
+        k = self._search(q, i)
         g = self.table[:, self.base[:, None] + np.minimum(k, self.last[:, None])]
         tk = (q - g[S]) * g[IDS]
         dx = g[X] + tk * g[GX] - x[:, None]
