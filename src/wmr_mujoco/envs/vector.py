@@ -4,15 +4,20 @@ Each environment id registers :class:`WmrVectorEnv` as its ``vector_entry_point`
 ``gymnasium.make_vec(id, num_envs=n)`` (the default ``vectorization_mode``) returns it;
 ``"sync"`` and ``"async"`` still wrap n single environments. The n worlds are n
 :class:`~wmr_mujoco.envs.env.WmrEnv`, each with its own model and data (so that each draws
-its own domain randomisation), stepped one after the other by the single environment's
-own step (:meth:`~wmr_mujoco.envs.episode.Episode.push`, then
-:meth:`~wmr_mujoco.envs.episode.Episode.pull`): world ``i`` gives bit for bit the
-observations, rewards and flags of a single environment reset with its seed. What this
-class saves is the generic wrapper's work around each world's step: the whole batch of
-actions is checked once (a bad action of any world raises before any world steps), every
-world's physics is stepped before every world is read (the reading and task code, Python,
-then runs with its caches warm for all worlds but the first), and the results and infos are
-gathered into arrays once per step.
+its own domain randomisation) and its own reset (task draw, randomisation, settling). A
+step is batched: the whole batch of actions is checked once (a bad action of any world
+raises before any world steps); each world's physics runs (:class:`~wmr_mujoco.envs.
+worlds.Worlds`: its own command map and ``mj_step`` calls, the only per-world Python); then
+every world's state is read into arrays with a leading world axis, the task's observation
+block, reward terms and outcome are computed once for all worlds
+(:mod:`wmr_mujoco.envs.tasks.arrays`), and the observations, rewards, flags and infos are
+assembled as arrays. Worlds whose episode ended are reset one by one (their single
+environment's reset) and loaded into the arrays. The batched code performs the single
+environment's floating-point operations in the same order, so world ``i`` gives bit for bit
+the observations, rewards, flags and infos of a single environment reset with its seed
+(``tests/envs/test_vector.py``). The worlds' single environments are not stepped: after a
+step, ``envs[i].episode.state`` stays at the world's last reset (its robot's ``data`` is
+current).
 
 Semantics are Gymnasium 1.x's (:class:`gymnasium.vector.SyncVectorEnv`, whose results this
 class reproduces, infos included):

@@ -128,11 +128,14 @@ S, X, Y, H, GX, GY, IDS, INV = range(8)
 class PathArrays(TaskArrays):
     """:class:`~wmr_mujoco.envs.tasks.follow.FollowPath` over n worlds.
 
-    The worlds' paths are padded into one table of ``n × width`` rows (columns ``S`` to
-    ``INV``; past a path's end ``s = +∞``), indexed ``world · width + sample``. Per world the
-    last segment ``k`` and arc length ``s*`` are kept. A step walks the segments from ``k``
-    as the scalar task's ``_walk``: the feet on segments ``k − 1 … k + 2`` at once, then,
-    for the worlds whose walk goes on past them, one segment per pass.
+    The worlds' paths are padded into one table of 8 rows (``S`` to ``INV``) by
+    ``n · width`` columns (past a path's end ``s = +∞``), indexed ``world · width + sample``:
+    8 floats a sample, as the scalar task's own lists hold (the paths' length is bounded by
+    :data:`~wmr_mujoco.envs.tasks.base.MAX_LENGTH`). Per world the last segment ``k`` and
+    arc length ``s*`` are kept. A step walks the segments from ``k`` as the scalar task's
+    ``_walk``: the feet on segments ``k − 1 … k + 2`` at once, then, for the worlds whose
+    walk goes on past them, one segment per pass; the look-ahead points' samples are found
+    by :meth:`_search`.
     """
 
     def __init__(self, tasks: Sequence[Task]) -> None:
