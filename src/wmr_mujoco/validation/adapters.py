@@ -60,6 +60,8 @@ class Adapter(Protocol):
 
     # Optional: ``exact_step(x, u, dt) -> x⁺``, the exact solution of ``ẋ = rhs(x, u)`` over
     # ``dt`` with ``u`` held; the runner then uses it instead of an RK4 step.
+    # Optional: ``trajectory(x0, inputs, dt) -> (N + 1, n) states``, every step of the
+    # runner's schedule at once (vectorised): the same floats as its steps one by one.
 
 
 #: ``factory(scenario, model, params) -> Adapter`` (params: the robot's, defaults if None).

@@ -173,14 +173,20 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     The analytic model does not depend on the simulation, so the whole open-loop schedule
     is known before MuJoCo runs: ``u_k = u(k Δt)``, ``ctrl_k = controls(u_k, x_k)`` and
     ``x_{k+1} = RK4(x_k, u_k)``, or ``adapter.exact_step(x_k, u_k, Δt)`` where the adapter has
-    an exact step for a held input.
+    an exact step for a held input; ``adapter.trajectory(x_0, inputs, Δt)`` where it has
+    one (the same states, all steps at once).
 
     Returns:
         ``(inputs (N, m), controls (N, nu), analytic (N + 1, n))``.
     """
     x = np.asarray(x0, float)
-    step = getattr(adapter, "exact_step", None)  # where the adapter has one
     inputs = s.inputs_on(nstep, dt)  # u(k Δt), the floats of s.input_at(k Δt)
+    trajectory = getattr(adapter, "trajectory", None)  # every step at once, where it has one
+    if trajectory is not None:
+        states = np.asarray(trajectory(x, inputs, dt), float)
+        controls = [adapter.controls(u, xk) for u, xk in zip(inputs, states, strict=False)]
+        return inputs, np.asarray(controls), states
+    step = getattr(adapter, "exact_step", None)  # where the adapter has one
     controls, states = [], [x]
     for u in inputs:
         controls.append(adapter.controls(u, x))
