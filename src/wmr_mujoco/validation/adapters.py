@@ -55,7 +55,12 @@ class Adapter(Protocol):
         ...
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-        """The analytic state's quantities, read from the simulation."""
+        """The analytic state's quantities, read from the simulation.
+
+        It may read the state, frames, centres of mass and body velocities (the runner
+        computes those stages: :func:`~wmr_mujoco.validation.runner.sync_kinematics`),
+        not contacts, forces or sensors.
+        """
         ...
 
     # Optional: ``exact_step(x, u, dt) -> x⁺``, the exact solution of ``ẋ = rhs(x, u)`` over

@@ -282,7 +282,8 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     Every :data:`RECORD_EVERY`-th step is redone from its stored start, so that contacts
     and frames belong to the configuration whose constraints produced the new
     velocities; the robot's probes and the lateral-slip measurement see it there, and the
-    pose at the step's end is recorded beside the analytic state at the same time.
+    pose at the step's end is recorded beside the analytic state at the same time (its
+    frames and velocities from :func:`sync_kinematics`).
 
     Raises:
         ValueError: the robot has no judge for the scenario's kind.
@@ -313,7 +314,7 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
         for probe in probes:
             probe.observe(sample)
         mujoco.mj_setState(model, data, states[k + 1], STATE_SPEC)
-        mujoco.mj_forward(model, data)
+        sync_kinematics(model, data)
         trace.time.append(data.time - s.settle)
         trace.sim.append(adapter.sim_state(model, data))
         trace.analytic.append(prep.analytic[k + 1])
@@ -323,6 +324,18 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     for probe in probes:
         metrics += probe.metrics()
     return s.opened(metrics)
+
+
+def sync_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+    """Frames, centres of mass and body velocities of the state in ``data``.
+
+    The stages of ``mj_forward`` that an adapter's ``sim_state`` reads (``mj_kinematics``,
+    ``mj_comPos``, ``mj_comVel``: poses, ``mj_objectVelocity``), the same floats as there,
+    without the collision and constraint stages it does not read.
+    """
+    mujoco.mj_kinematics(model, data)
+    mujoco.mj_comPos(model, data)
+    mujoco.mj_comVel(model, data)
 
 
 def run_all(work: Sequence[Job], progress: Callable[[str], None] | None = None,
