@@ -281,7 +281,9 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
 
     Every :data:`RECORD_EVERY`-th step is redone from its stored start, so that contacts
     and frames belong to the configuration whose constraints produced the new
-    velocities; the robot's probes and the lateral-slip measurement see it there, and the
+    velocities; the robot's probes and the lateral-slip measurement see it there (a
+    robot without either has nothing to read there, and the step is not redone: the
+    simulation's own data were checked for warnings, its states for NaN), and the
     pose at the step's end is recorded beside the analytic state at the same time (its
     frames and velocities from :func:`sync_kinematics`).
 
@@ -296,23 +298,15 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     probes: list[Probe] = [p for factory in spec.probes
                            if (p := factory(s, model, adapter, spec.targets)) is not None]
     trace.state_names, trace.state_units = adapter.state_names, adapter.state_units
-    dt = model.opt.timestep
     nstep = len(prep.controls)
+    restep = bool(probes or adapter.lateral_wheels)  # else nothing reads the redone step
     for k in range(nstep):
         if k % RECORD_EVERY != RECORD_EVERY - 1 and k != nstep - 1:
             continue
-        # The warm start is not part of the stored state: start the solver from zero so
-        # that the measurement does not depend on how the states were produced.
-        mujoco.mj_setState(model, data, states[k], STATE_SPEC)
-        data.qacc_warmstart[:] = 0.0
-        data.ctrl[:] = prep.controls[k]
-        mujoco.mj_step(model, data)
-        check_healthy(model, data)
-        trace.slip.append(lateral_slip(model, data, adapter.lateral_wheels))
-        sample = Sample(k, k * dt, model, data, prep.inputs[k], prep.controls[k],
-                        prep.analytic[k])
-        for probe in probes:
-            probe.observe(sample)
+        if restep:
+            _restep(prep, states, k, trace, probes)
+        else:
+            trace.slip.append(np.zeros(0))
         mujoco.mj_setState(model, data, states[k + 1], STATE_SPEC)
         sync_kinematics(model, data)
         trace.time.append(data.time - s.settle)
@@ -324,6 +318,24 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     for probe in probes:
         metrics += probe.metrics()
     return s.opened(metrics)
+
+
+def _restep(prep: Prepared, states: np.ndarray, k: int, trace: Trace,
+            probes: Sequence[Probe]) -> None:
+    """Step ``k`` redone from its stored start: lateral slip and the probes see it."""
+    model, data, adapter = prep.model, prep.data, prep.adapter
+    # The warm start is not part of the stored state: start the solver from zero so
+    # that the measurement does not depend on how the states were produced.
+    mujoco.mj_setState(model, data, states[k], STATE_SPEC)
+    data.qacc_warmstart[:] = 0.0
+    data.ctrl[:] = prep.controls[k]
+    mujoco.mj_step(model, data)
+    check_healthy(model, data)
+    trace.slip.append(lateral_slip(model, data, adapter.lateral_wheels))
+    sample = Sample(k, k * model.opt.timestep, model, data, prep.inputs[k],
+                    prep.controls[k], prep.analytic[k])
+    for probe in probes:
+        probe.observe(sample)
 
 
 def sync_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
