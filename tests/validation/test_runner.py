@@ -214,3 +214,41 @@ def test_sync_kinematics_gives_the_frames_and_velocities_of_mj_forward(robot):
     np.testing.assert_array_equal(body_twist(model, data), body_twist(model, full))
     np.testing.assert_array_equal(data.xpos, full.xpos)
     np.testing.assert_array_equal(data.cvel, full.cvel)
+
+
+def test_a_step_is_redone_only_for_what_reads_it_and_records_the_same():
+    """omni3_reduced has no probe and no lateral wheel: its steps are not redone.
+
+    A probe that reads nothing forces the re-steps; every recorded time, pose and
+    analytic state and every judged row must come out the same (equal floats: the
+    recorded states are the rollout's, the re-step only feeds what reads it).
+    """
+    import dataclasses
+
+    from wmr_mujoco.sim.engine import simulate
+    from wmr_mujoco.validation.metrics import Trace
+    from wmr_mujoco.validation.runner import measure_metrics, prepare
+
+    seen = []
+
+    class Counting:
+        def observe(self, sample):
+            seen.append(sample.k)
+
+        def metrics(self):
+            return []
+
+    spec = get_spec("omni3_reduced")
+    s = dataclasses.replace(next(x for x in spec.scenarios if x.name == "translate+rotate"),
+                            duration=0.5)
+    probed = dataclasses.replace(spec, probes=(lambda *a: Counting(),))
+    out = []
+    for sp in (spec, probed):
+        prep = prepare(sp, s)
+        trace = Trace()
+        metrics = measure_metrics(prep, simulate(prep.model, prep.data, prep.controls), trace)
+        out.append((metrics, trace.arrays()))
+    assert seen, "the probe forces the re-steps"
+    assert out[0][0] == out[1][0]
+    for key in ("time", "sim", "analytic"):
+        np.testing.assert_array_equal(out[0][1][key], out[1][1][key])
