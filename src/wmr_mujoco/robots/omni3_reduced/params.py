@@ -20,6 +20,7 @@ class OmniReducedParams(OmniParams):
 
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "roller_shape", "roller_armature",
                                          "roller_damping", "floor_impedance",
+                                         "solver", "jacobian", "cone",
                                          *SIM_PAIR_FIELDS)
     #: Its capsule pairs take the collision class's contact (``builder.floor_pairs``), at
     #: the step and time constant its tests derive their tolerances for (omni3's before

@@ -1,0 +1,141 @@
+"""Does a cheaper solver setting still meet every target? (solver_cost's validation).
+
+The validation half of :mod:`wmr_mujoco.bench.solver_cost`. A setting (:class:`~wmr_mujoco.bench.solver_cost.Setting`) that a robot's parameters
+express is validated as ``wmr validate ROBOT --seed S`` would, but with the setting's
+parameters: every registered scenario of the robot (:func:`wmr_mujoco.lookup.validation_jobs`)
+runs its whole family (:func:`wmr_mujoco.validation.members.run_family`, the family's
+declared draws) and is judged by its worst member. The robot's default parameters run
+the same families at the same seed beside it, and the two are compared row by row
+(:func:`compare`):
+
+* **lost**: the rows the defaults pass and the setting fails (the setting is rejected if
+  any, at any seed);
+* **worst change**: the largest rise of a judged figure as a share of its target,
+  ``max (|v_setting| − |v_default|) / target`` over the rows with a target (positive: the
+  setting comes closer to failing).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.lookup import validation_jobs
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.models.paths import DOCS_DIR
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.validation.members import run_family
+from wmr_mujoco.validation.pool import run_calls
+from wmr_mujoco.validation.targets import Row
+
+if TYPE_CHECKING:
+    from wmr_mujoco.bench.solver_cost import Setting
+
+#: Where :mod:`wmr_mujoco.bench.solver_cost` publishes its tables, and its marker.
+DOC = DOCS_DIR / "benchmarks.md"
+MARKER = "solver-cost"
+
+Figures = dict[tuple[str, str], Row]
+
+
+def _family_rows(spec: RobotSpec, key: int, seed: int, params: RobotParams) -> list[Row]:
+    """The judged rows of the robot's ``key``-th scenario's family (worst member)."""
+    _, s = validation_jobs([spec.name])[key]
+    return list(run_family(spec, s, seed, params=params).rows)
+
+
+def figures(spec: RobotSpec, params: RobotParams, seed: int, jobs: int = 1) -> Figures:
+    """Every row of ``wmr validate ROBOT --seed SEED`` with ``params``, by (scenario, metric)."""
+    n = len(validation_jobs([spec.name]))
+    calls = [(_family_rows, (spec, k, seed, params)) for k in range(n)]
+    out: Figures = {}
+    for rows in run_calls(calls, jobs):
+        for r in rows:  # type: ignore[attr-defined]
+            out[(r.scenario, r.metric)] = r
+    return out
+
+
+@dataclasses.dataclass(frozen=True)
+class Verdict:
+    """A setting's figures against the defaults' at one seed.
+
+    Attributes:
+        lost: ``scenario / metric`` of the rows the defaults pass and the setting fails.
+        worst_rise: the largest ``(|v_setting| − |v_default|) / target`` over the rows
+            with a target.
+        worst_row: ``scenario / metric`` of that row.
+        missing: rows of the defaults the setting did not produce (a failed run).
+    """
+
+    lost: tuple[str, ...]
+    worst_rise: float
+    worst_row: str
+    missing: tuple[str, ...] = ()
+
+    @property
+    def acceptable(self) -> bool:
+        """No target lost and no row missing."""
+        return not self.lost and not self.missing
+
+
+def compare(default: Figures, setting: Figures) -> Verdict:
+    """The setting's rows against the defaults' (see the module docstring)."""
+    lost, missing = [], []
+    worst, where = float("-inf"), ""
+    for key, d in default.items():
+        name = f"{key[0]} / {key[1]}"
+        s = setting.get(key)
+        if s is None:
+            missing.append(name)
+            continue
+        if d.passed and not s.passed:
+            lost.append(name)
+        if d.target:
+            rise = (abs(s.value) - abs(d.value)) / abs(d.target)
+            if not rise <= worst:  # NaN (a failed figure) counts as the worst
+                worst, where = rise, name
+    return Verdict(tuple(lost), worst, where, tuple(missing))
+
+
+def verdict_text(by_seed: Mapping[int, Verdict]) -> str:
+    """One table cell: accepted or the lost targets, and the worst rise, per seed."""
+    parts = []
+    for seed, v in by_seed.items():
+        head = "passes all" if v.acceptable else (
+            f"loses {len(v.lost) + len(v.missing)}: {', '.join((*v.lost, *v.missing))[:80]}")
+        parts.append(f"seed {seed}: {head}; worst rise {v.worst_rise:+.1%} of target "
+                     f"({v.worst_row})")
+    return "; ".join(parts)
+
+
+def judge_settings(spec: RobotSpec, settings: Sequence[Setting], seeds: Sequence[int],
+                   jobs: int = 1, progress: bool = True) -> dict[str, str]:
+    """Validate each of the candidate ``settings`` the robot's parameters express.
+
+    Returns:
+        setting label -> table cell (:func:`verdict_text`); settings not validated are
+        left out.
+    """
+    chosen = [(s, s.robot_params(spec)) for s in settings]
+    chosen = [(s, p) for s, p in chosen if p is not None]
+    if not chosen or spec.params_type is None:
+        return {}
+    out: dict[str, dict[int, Verdict]] = {s.label: {} for s, _ in chosen}
+    for seed in seeds:
+        base = figures(spec, spec.params_type(), seed, jobs)
+        for s, p in chosen:
+            assert p is not None
+            out[s.label][seed] = compare(base, figures(spec, p, seed, jobs))
+            if progress:
+                print(f"  {spec.name} {s.label} seed {seed}: "
+                      f"{verdict_text({seed: out[s.label][seed]})}", flush=True)
+    return {label: verdict_text(v) for label, v in out.items()}
+
+
+def publish(text: str, path: Path = DOC) -> None:
+    """Paste the study's text between its markers in ``docs/benchmarks.md``."""
+    replace_between(path, MARKER, text)
+    print(f"wrote {path}")
