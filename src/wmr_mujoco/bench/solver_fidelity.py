@@ -1,11 +1,12 @@
 """Does a cheaper solver setting still meet every target? (solver_cost's validation).
 
-The validation half of :mod:`wmr_mujoco.bench.solver_cost`. A setting (:class:`~wmr_mujoco.bench.solver_cost.Setting`) that a robot's parameters
-express is validated as ``wmr validate ROBOT --seed S`` would, but with the setting's
-parameters: every registered scenario of the robot (:func:`wmr_mujoco.lookup.validation_jobs`)
-runs its whole family (:func:`wmr_mujoco.validation.members.run_family`, the family's
-declared draws) and is judged by its worst member. The robot's default parameters run
-the same families at the same seed beside it, and the two are compared row by row
+The validation half of :mod:`wmr_mujoco.bench.solver_cost`. A setting
+(:class:`~wmr_mujoco.bench.solver_cost.Setting`) that a robot's parameters express is
+validated as ``wmr validate ROBOT --seed S`` would, but with the setting's parameters:
+every registered scenario of the robot (:func:`wmr_mujoco.lookup.validation_jobs`) runs
+its whole family (:func:`wmr_mujoco.validation.members.run_family`, the family's declared
+draws) and is judged by its worst member. The robot's default parameters run the same
+families at the same seed beside it, and the two are compared row by row
 (:func:`compare`):
 
 * **lost**: the rows the defaults pass and the setting fails (the setting is rejected if
