@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+import json
 import math
 
 import mujoco
@@ -164,3 +166,16 @@ def test_bad_robot_or_seed_fails_before_any_work(capsys):
     with pytest.raises(SystemExit, match="--seeds: -1"):
         solver_cost.main(["omni3", "--seeds", "-1"])
     assert capsys.readouterr().out == ""
+
+
+def test_cached_figures_are_read_back_and_keyed_by_the_model(tmp_path):
+    """A setting that changes the model file gets its own cache file; rows written there
+    are what ``figures`` returns (no validation runs)."""
+    spec = get_spec("omni3")
+    default, sparse = OmniParams(), OmniParams(jacobian="sparse")
+    path = solver_fidelity.cache_file(spec, default, 0, tmp_path)
+    assert path != solver_fidelity.cache_file(spec, sparse, 0, tmp_path)
+    assert path != solver_fidelity.cache_file(spec, default, 1, tmp_path)
+    row = _row(0.25, True, 1.0, "a")
+    path.write_text(json.dumps([dataclasses.asdict(row)]))
+    assert solver_fidelity.figures(spec, default, 0, cache=tmp_path) == {("s", "a"): row}

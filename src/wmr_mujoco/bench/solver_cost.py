@@ -14,7 +14,8 @@
    step and × real time of a bare one-thread ``mj_step`` loop on that drive (every setting
    timed in alternating rounds of one run, median of the rounds), and its ratio to the
    default. A setting is a change of the compiled model's ``MjOption`` fields; the ones a
-   robot's parameters can express (``solver``, ``jacobian``, ``cone``) are also
+   robot's parameters can express (``solver``, ``jacobian``, ``cone``) and that cost at
+   most :data:`CANDIDATE_RATIO` of the default, keeping the robot on the floor, are
    **validated**: every scenario's family of ``wmr validate ROBOT`` is run with the
    setting's parameters at each seed, beside the defaults at the same seed, and compared
    row by row (:mod:`wmr_mujoco.bench.solver_fidelity`). A setting is acceptable only if
@@ -23,8 +24,15 @@
 ``physics`` marks the settings that change the equations: the pyramidal cone (a
 ``condim`` 3 pyramid reaches ``μ f_n`` only along the contact frame's axes,
 ``μ f_n / √2`` along their diagonals) and PGS/CG, which stop at their iteration limits
-short of Newton's solution. The others (Jacobian storage, islands, midphase, warm start,
-tolerances that Newton meets before them) are the same equations solved another way.
+short of Newton's solution. The others are the same equations solved another way:
+Jacobian storage, islands, midphase and warm start to round-off; tolerances and
+iteration limits by where the solver stops (timed only: no parameter expresses them).
+
+``--physics`` also validates the candidates that change the physics; the validated
+figures are kept in ``reports/solver_cost/`` (named by the digest of the model files,
+:func:`wmr_mujoco.bench.solver_fidelity.cache_file`), so a rerun times again and reuses
+them. ``--write`` pastes the tables into ``docs/benchmarks.md`` (its ``solver-cost``
+marker).
 """
 
 from __future__ import annotations
@@ -284,11 +292,21 @@ def cost_rows(robot: str, settings: Sequence[Setting], cs: Sequence[Cost],
         if not math.isfinite(c.us_per_step):
             out.append(f"| {robot} | {s.label} | {mark} | | | | | {c.error[:70]} |")
             continue
-        verdict = c.error or fidelity.get(s.label, "not validated" if c.candidate
-                                          else "no candidate (cost within the noise)")
+        verdict = c.error or fidelity.get(s.label, _unvalidated(s, c))
         out.append(f"| {robot} | {s.label} | {mark} | {c.contacts:.2f} | {c.us_per_step:.1f} "
                    f"| {c.rtf:.0f}× | {c.ratio:.2f} | {verdict} |")
     return out
+
+
+def _unvalidated(s: Setting, c: Cost) -> str:
+    """Why a timed setting has no validation."""
+    if not c.candidate:
+        return f"no candidate (cost ratio above {CANDIDATE_RATIO})"
+    if not s.params:
+        return "candidate, not validated (no robot parameter expresses it)"
+    if s.physics:
+        return "candidate, changes physics: not validated (run with --physics)"
+    return "candidate, not validated (this robot's parameters do not express it)"
 
 
 HEADER = ("| robot | setting | changes physics | contacts/step | µs/step | × real time "
@@ -305,7 +323,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--quick", action="store_true", help="1 s drive, 2 rounds")
     ap.add_argument("--seeds", type=int, nargs="+", default=[0, 1])
     ap.add_argument("--no-validate", action="store_true", help="timing only")
-    ap.add_argument("--jobs", type=int, default=1, help="processes for the validation")
+    ap.add_argument("--physics", action="store_true",
+                    help="validate the candidates that change the physics too")
+    ap.add_argument("--jobs", type=int, default=2, help="processes for the validation")
     ap.add_argument("--write", action="store_true",
                     help="publish the tables in docs/benchmarks.md under its marker")
     args = ap.parse_args(argv)
@@ -313,6 +333,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     for seed in args.seeds:
         if seed < 0:
             raise SystemExit(f"--seeds: {seed} is negative; a seed is an integer >= 0")
+    if args.jobs < 1:
+        raise SystemExit(f"--jobs: {args.jobs}; give 1 or more processes")
     how = Rounds(1.0, 2) if args.quick else Rounds(2.0, 5)
     sections, table = [], [HEADER]
     for spec in specs:
@@ -321,8 +343,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(sections[-1], flush=True)
         cs = costs(spec, SETTINGS, how)
         fid = {} if args.no_validate else solver_fidelity.judge_settings(
-            spec, [s for s, c in zip(SETTINGS, cs, strict=True) if c.candidate],
-            args.seeds, args.jobs)
+            spec, [s for s, c in zip(SETTINGS, cs, strict=True)
+                   if c.candidate and (args.physics or not s.physics)], args.seeds, args.jobs)
         rows = cost_rows(spec.name, SETTINGS, cs, fid)
         table += rows
         print("\n".join([HEADER, *rows]), flush=True)

@@ -19,12 +19,17 @@ families at the same seed beside it, and the two are compared row by row
 from __future__ import annotations
 
 import dataclasses
+import hashlib
+import json
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from wmr_mujoco.atomic import write_text_atomic
+from wmr_mujoco.docs_sync.export import scene_xml
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.lookup import validation_jobs
+from wmr_mujoco.models.builders.common import to_xml
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import DOCS_DIR
 from wmr_mujoco.robots.spec import RobotSpec
@@ -39,6 +44,9 @@ if TYPE_CHECKING:
 DOC = DOCS_DIR / "benchmarks.md"
 MARKER = "solver-cost"
 
+#: Where the figures of each (robot, setting, seed) are kept between runs.
+CACHE = Path("reports") / "solver_cost"
+
 Figures = dict[tuple[str, str], Row]
 
 
@@ -48,14 +56,39 @@ def _family_rows(spec: RobotSpec, key: int, seed: int, params: RobotParams) -> l
     return list(run_family(spec, s, seed, params=params).rows)
 
 
-def figures(spec: RobotSpec, params: RobotParams, seed: int, jobs: int = 1) -> Figures:
-    """Every row of ``wmr validate ROBOT --seed SEED`` with ``params``, by (scenario, metric)."""
+def cache_file(spec: RobotSpec, params: RobotParams, seed: int, folder: Path) -> Path:
+    """The file of the figures of ``params`` at ``seed``.
+
+    Named by the digest of the model files the parameters build (robot and scene), so a
+    changed model runs again.
+    """
+    assert spec.build is not None
+    text = to_xml(spec.build(params)) + scene_xml(spec, params)
+    digest = hashlib.sha256(text.encode()).hexdigest()[:16]
+    return folder / f"{spec.name}-seed{seed}-{digest}.json"
+
+
+def figures(spec: RobotSpec, params: RobotParams, seed: int, jobs: int = 1,
+            cache: Path | None = None) -> Figures:
+    """Every row of ``wmr validate ROBOT --seed SEED`` with ``params``, by (scenario, metric).
+
+    ``cache``: a folder keeping the rows of each model and seed (:func:`cache_file`); rows
+    found there are read instead of run. The validation code is not part of the key:
+    clear the folder after changing it.
+    """
+    path = None if cache is None else cache_file(spec, params, seed, cache)
+    if path is not None and path.exists():
+        rows = [Row(**r) for r in json.loads(path.read_text())]
+        return {(r.scenario, r.metric): r for r in rows}
     n = len(validation_jobs([spec.name]))
     calls = [(_family_rows, (spec, k, seed, params)) for k in range(n)]
     out: Figures = {}
     for rows in run_calls(calls, jobs):
         for r in rows:  # type: ignore[attr-defined]
             out[(r.scenario, r.metric)] = r
+    if path is not None:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        write_text_atomic(path, json.dumps([dataclasses.asdict(r) for r in out.values()]))
     return out
 
 
@@ -113,7 +146,8 @@ def verdict_text(by_seed: Mapping[int, Verdict]) -> str:
 
 
 def judge_settings(spec: RobotSpec, settings: Sequence[Setting], seeds: Sequence[int],
-                   jobs: int = 1, progress: bool = True) -> dict[str, str]:
+                   jobs: int = 1, progress: bool = True,
+                   cache: Path | None = CACHE) -> dict[str, str]:
     """Validate each of the candidate ``settings`` the robot's parameters express.
 
     Returns:
@@ -126,10 +160,10 @@ def judge_settings(spec: RobotSpec, settings: Sequence[Setting], seeds: Sequence
         return {}
     out: dict[str, dict[int, Verdict]] = {s.label: {} for s, _ in chosen}
     for seed in seeds:
-        base = figures(spec, spec.params_type(), seed, jobs)
+        base = figures(spec, spec.params_type(), seed, jobs, cache)
         for s, p in chosen:
             assert p is not None
-            out[s.label][seed] = compare(base, figures(spec, p, seed, jobs))
+            out[s.label][seed] = compare(base, figures(spec, p, seed, jobs, cache))
             if progress:
                 print(f"  {spec.name} {s.label} seed {seed}: "
                       f"{verdict_text({seed: out[s.label][seed]})}", flush=True)
