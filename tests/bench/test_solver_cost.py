@@ -93,6 +93,8 @@ def test_profile_counts_the_cones_rows_per_contact(robot, cone, rows):
     assert p.nefc == pytest.approx(rows * p.ncon, rel=1e-12)
     assert p.niter >= 1.0
     assert sum(p.us[s] for s in solver_cost.STAGES) <= p.us["STEP"] * (1 + 1e-9)
+    # the ceiling is what a free solver would give: above the whole step's factor
+    assert p.ceiling > p.timestep * 1e6 / p.us["STEP"]
 
 
 def test_costs_are_consistent_and_the_default_is_its_own_unit():
