@@ -119,25 +119,30 @@ def test_a_setting_that_throws_the_robot_off_the_floor_is_no_candidate():
     assert "left the floor" in pyr.error and not pyr.candidate
 
 
-def _row(value, passed, target=1.0, metric="m"):
-    return Row("r", "s", metric, value, "", target, passed)
+def _row(value, passed, target=1.0, metric="m", unit=""):
+    return Row("r", "s", metric, value, unit, target, passed)
+
+
+def _rows(*rows):
+    return {(r.scenario, r.metric, r.unit): r for r in rows}
 
 
 def test_compare_finds_a_lost_target_and_the_largest_rise_as_a_share_of_target():
-    default = {("s", "a"): _row(0.5, True, 1.0, "a"), ("s", "b"): _row(2.0, True, 4.0, "b"),
-               ("s", "c"): _row(3.0, False, 1.0, "c")}
-    setting = {("s", "a"): _row(1.5, False, 1.0, "a"), ("s", "b"): _row(-2.4, True, 4.0, "b"),
-               ("s", "c"): _row(3.0, False, 1.0, "c")}
+    default = _rows(_row(0.5, True, 1.0, "a"), _row(2.0, True, 4.0, "b"),
+                    _row(3.0, False, 1.0, "c"), _row(0.1, None, 0.01, "open"))
+    setting = _rows(_row(1.5, False, 1.0, "a"), _row(-2.4, True, 4.0, "b"),
+                    _row(3.0, False, 1.0, "c"), _row(0.9, None, 0.01, "open"))
     v = solver_fidelity.compare(default, setting)
     assert v.lost == ("s / a",)  # c failed already: not lost
-    assert v.worst_rise == pytest.approx(1.0)  # (1.5 − 0.5) / 1 beats (2.4 − 2) / 4
+    # (1.5 − 0.5) / 1 beats (2.4 − 2) / 4; the open row's 80-fold rise is not judged
+    assert v.worst_rise == pytest.approx(1.0)
     assert v.worst_row == "s / a"
     assert not v.acceptable
 
 
 def test_compare_counts_a_missing_row_and_a_nan_figure_as_failures():
-    default = {("s", "a"): _row(0.5, True), ("s", "b"): _row(0.1, True, metric="b")}
-    setting = {("s", "a"): _row(math.nan, False)}
+    default = _rows(_row(0.5, True, metric="a"), _row(0.1, True, metric="b"))
+    setting = _rows(_row(math.nan, False, metric="a"))
     v = solver_fidelity.compare(default, setting)
     assert v.missing == ("s / b",)
     assert v.lost == ("s / a",)
@@ -145,7 +150,7 @@ def test_compare_counts_a_missing_row_and_a_nan_figure_as_failures():
 
 
 def test_an_unchanged_setting_is_acceptable_with_no_rise():
-    rows = {("s", "a"): _row(0.5, True), ("s", "b"): _row(0.1, None, None, "b")}
+    rows = _rows(_row(0.5, True, 1.0, "a", "%"), _row(0.1, None, None, "a", "m"))
     v = solver_fidelity.compare(rows, dict(rows))
     assert v.acceptable and v.worst_rise == 0.0
 
@@ -178,6 +183,7 @@ def test_cached_figures_are_read_back_and_keyed_by_the_model(tmp_path):
     path = solver_fidelity.cache_file(spec, default, 0, tmp_path)
     assert path != solver_fidelity.cache_file(spec, sparse, 0, tmp_path)
     assert path != solver_fidelity.cache_file(spec, default, 1, tmp_path)
-    row = _row(0.25, True, 1.0, "a")
-    path.write_text(json.dumps([dataclasses.asdict(row)]))
-    assert solver_fidelity.figures(spec, default, 0, cache=tmp_path) == {("s", "a"): row}
+    rows = [_row(0.25, True, 1.0, "a", "%"), _row(0.01, None, None, "a", "m")]
+    path.write_text(json.dumps([dataclasses.asdict(r) for r in rows]))
+    # one metric in two units: two rows, neither hiding the other
+    assert solver_fidelity.figures(spec, default, 0, cache=tmp_path) == _rows(*rows)

@@ -12,7 +12,7 @@ families at the same seed beside it, and the two are compared row by row
 * **lost**: the rows the defaults pass and the setting fails (the setting is rejected if
   any, at any seed);
 * **worst change**: the largest rise of a judged figure as a share of its target,
-  ``max (|v_setting| − |v_default|) / target`` over the rows with a target (positive: the
+  ``max (|v_setting| − |v_default|) / target`` over the judged rows (positive: the
   setting comes closer to failing).
 """
 
@@ -47,7 +47,12 @@ MARKER = "solver-cost"
 #: Where the figures of each (robot, setting, seed) are kept between runs.
 CACHE = Path("reports") / "solver_cost"
 
-Figures = dict[tuple[str, str], Row]
+#: Rows by (scenario, metric, unit): a metric can be reported in two units.
+Figures = dict[tuple[str, str, str], Row]
+
+
+def _key(r: Row) -> tuple[str, str, str]:
+    return (r.scenario, r.metric, r.unit)
 
 
 def _family_rows(spec: RobotSpec, key: int, seed: int, params: RobotParams) -> list[Row]:
@@ -70,7 +75,7 @@ def cache_file(spec: RobotSpec, params: RobotParams, seed: int, folder: Path) ->
 
 def figures(spec: RobotSpec, params: RobotParams, seed: int, jobs: int = 1,
             cache: Path | None = None) -> Figures:
-    """Every row of ``wmr validate ROBOT --seed SEED`` with ``params``, by (scenario, metric).
+    """Every row of ``wmr validate ROBOT --seed SEED`` with ``params`` (:data:`Figures`).
 
     ``cache``: a folder keeping the rows of each model and seed (:func:`cache_file`); rows
     found there are read instead of run. The validation code is not part of the key:
@@ -79,13 +84,13 @@ def figures(spec: RobotSpec, params: RobotParams, seed: int, jobs: int = 1,
     path = None if cache is None else cache_file(spec, params, seed, cache)
     if path is not None and path.exists():
         rows = [Row(**r) for r in json.loads(path.read_text())]
-        return {(r.scenario, r.metric): r for r in rows}
+        return {_key(r): r for r in rows}
     n = len(validation_jobs([spec.name]))
     calls = [(_family_rows, (spec, k, seed, params)) for k in range(n)]
     out: Figures = {}
     for rows in run_calls(calls, jobs):
         for r in rows:  # type: ignore[attr-defined]
-            out[(r.scenario, r.metric)] = r
+            out[_key(r)] = r
     if path is not None:
         path.parent.mkdir(parents=True, exist_ok=True)
         write_text_atomic(path, json.dumps([dataclasses.asdict(r) for r in out.values()]))
@@ -98,8 +103,8 @@ class Verdict:
 
     Attributes:
         lost: ``scenario / metric`` of the rows the defaults pass and the setting fails.
-        worst_rise: the largest ``(|v_setting| − |v_default|) / target`` over the rows
-            with a target.
+        worst_rise: the largest ``(|v_setting| − |v_default|) / target`` over the judged
+            rows (an open target's figure is shown, not judged).
         worst_row: ``scenario / metric`` of that row.
         missing: rows of the defaults the setting did not produce (a failed run).
     """
@@ -120,14 +125,14 @@ def compare(default: Figures, setting: Figures) -> Verdict:
     lost, missing = [], []
     worst, where = float("-inf"), ""
     for key, d in default.items():
-        name = f"{key[0]} / {key[1]}"
+        name = f"{key[0]} / {key[1]} ({key[2]})" if key[2] else f"{key[0]} / {key[1]}"
         s = setting.get(key)
         if s is None:
             missing.append(name)
             continue
         if d.passed and not s.passed:
             lost.append(name)
-        if d.target:
+        if d.target and d.passed is not None:  # a judged row
             rise = (abs(s.value) - abs(d.value)) / abs(d.target)
             if not rise <= worst:  # NaN (a failed figure) counts as the worst
                 worst, where = rise, name
