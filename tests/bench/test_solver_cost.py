@@ -187,3 +187,21 @@ def test_cached_figures_are_read_back_and_keyed_by_the_model(tmp_path):
     path.write_text(json.dumps([dataclasses.asdict(r) for r in rows]))
     # one metric in two units: two rows, neither hiding the other
     assert solver_fidelity.figures(spec, default, 0, cache=tmp_path) == _rows(*rows)
+
+
+def test_a_setting_rejected_at_one_seed_runs_no_later_seed(monkeypatch):
+    """The validation itself is the project's (`wmr validate`'s families); here only the
+    bookkeeping: figures faked per (setting, seed), the sparse setting losing its one
+    target at seed 0, so seed 1 is never asked for."""
+    spec = get_spec("omni3")
+    asked = []
+
+    def fake(spec_, params, seed, jobs=1, cache=None):
+        asked.append((params.jacobian, seed))
+        bad = params.jacobian == "sparse"
+        return _rows(_row(2.0 if bad else 0.5, not bad))
+
+    monkeypatch.setattr(solver_fidelity, "figures", fake)
+    cell = solver_fidelity.judge_settings(spec, [SETTINGS[1]], [0, 1], progress=False)
+    assert asked == [("auto", 0), ("sparse", 0)]
+    assert cell["jacobian sparse"].startswith("seed 0: loses 1: s / m;")

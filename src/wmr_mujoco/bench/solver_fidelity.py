@@ -155,6 +155,9 @@ def judge_settings(spec: RobotSpec, settings: Sequence[Setting], seeds: Sequence
                    cache: Path | None = CACHE) -> dict[str, str]:
     """Validate each of the candidate ``settings`` the robot's parameters express.
 
+    At each seed in turn; a setting that loses a target at one seed is rejected there
+    (its later seeds are not run).
+
     Returns:
         setting label -> table cell (:func:`verdict_text`); settings not validated are
         left out.
@@ -165,8 +168,12 @@ def judge_settings(spec: RobotSpec, settings: Sequence[Setting], seeds: Sequence
         return {}
     out: dict[str, dict[int, Verdict]] = {s.label: {} for s, _ in chosen}
     for seed in seeds:
+        # a setting rejected at an earlier seed needs no later one
+        left = [(s, p) for s, p in chosen if all(v.acceptable for v in out[s.label].values())]
+        if not left:
+            break
         base = figures(spec, spec.params_type(), seed, jobs, cache)
-        for s, p in chosen:
+        for s, p in left:
             assert p is not None
             out[s.label][seed] = compare(base, figures(spec, p, seed, jobs, cache))
             if progress:
