@@ -101,7 +101,7 @@ def test_costs_are_consistent_and_the_default_is_its_own_unit():
     """µs per step × real-time factor = the timestep in µs (both from the same median
     wall time), and the default's ratio is 1."""
     spec = get_spec("omni3_reduced")
-    cs = solver_cost.costs(spec, (DEFAULT, SETTINGS[1]), Rounds(0.2, 1))
+    cs = solver_cost.costs(spec, (DEFAULT, _setting("jacobian sparse")), Rounds(0.2, 1))
     dt_us = load(spec).opt.timestep * 1e6
     assert cs[0].ratio == 1.0
     for c in cs:
@@ -160,7 +160,7 @@ def test_only_cheaper_expressible_settings_are_validated():
     express is not run through the validation (nothing is run here)."""
     spec = get_spec("omni3")
     timed_only = Setting("tolerance", (("tolerance", 1e-4),))
-    sparse = SETTINGS[1]
+    sparse = _setting("jacobian sparse")
     assert solver_fidelity.judge_settings(spec, [timed_only], [0]) == {}
     assert solver_cost.Cost(50.0, 20.0, 0.95, 3.0).candidate is False
     assert solver_cost.Cost(50.0, 20.0, 0.5, 3.0).candidate is True
@@ -179,14 +179,25 @@ def test_cached_figures_are_read_back_and_keyed_by_the_model(tmp_path):
     """A setting that changes the model file gets its own cache file; rows written there
     are what ``figures`` returns (no validation runs)."""
     spec = get_spec("omni3")
-    default, sparse = OmniParams(), OmniParams(jacobian="sparse")
+    default, dense = OmniParams(), OmniParams(jacobian="dense")
     path = solver_fidelity.cache_file(spec, default, 0, tmp_path)
-    assert path != solver_fidelity.cache_file(spec, sparse, 0, tmp_path)
+    assert path != solver_fidelity.cache_file(spec, dense, 0, tmp_path)
     assert path != solver_fidelity.cache_file(spec, default, 1, tmp_path)
     rows = [_row(0.25, True, 1.0, "a", "%"), _row(0.01, None, None, "a", "m")]
     path.write_text(json.dumps([dataclasses.asdict(r) for r in rows]))
     # one metric in two units: two rows, neither hiding the other
     assert solver_fidelity.figures(spec, default, 0, cache=tmp_path) == _rows(*rows)
+
+
+def _setting(label):
+    return next(s for s in SETTINGS if s.label == label)
+
+
+def test_omni3_defaults_to_the_sparse_jacobian_the_study_validated():
+    """The shipped file carries the default (MuJoCo alone would pick dense below 60 DoF)."""
+    assert load(get_spec("omni3")).opt.jacobian == mujoco.mjtJacobian.mjJAC_SPARSE
+    assert _setting(solver_cost.PREVIOUS["omni3"]).robot_params(get_spec("omni3")) == \
+        OmniParams(jacobian="auto")
 
 
 def test_a_setting_rejected_at_one_seed_runs_no_later_seed(monkeypatch):
@@ -198,10 +209,11 @@ def test_a_setting_rejected_at_one_seed_runs_no_later_seed(monkeypatch):
 
     def fake(spec_, params, seed, jobs=1, cache=None):
         asked.append((params.jacobian, seed))
-        bad = params.jacobian == "sparse"
+        bad = params.jacobian == "dense"
         return _rows(_row(2.0 if bad else 0.5, not bad))
 
     monkeypatch.setattr(solver_fidelity, "figures", fake)
-    cell = solver_fidelity.judge_settings(spec, [SETTINGS[1]], [0, 1], progress=False)
-    assert asked == [("auto", 0), ("sparse", 0)]
-    assert cell["jacobian sparse"].startswith("seed 0: loses 1: s / m;")
+    cell = solver_fidelity.judge_settings(spec, [_setting("jacobian dense")], [0, 1],
+                                          progress=False)
+    assert asked == [("sparse", 0), ("dense", 0)]
+    assert cell["jacobian dense"].startswith("seed 0: loses 1: s / m;")

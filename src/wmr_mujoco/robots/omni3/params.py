@@ -51,11 +51,12 @@ class OmniParams:
         solver: MuJoCo constraint solver, ``"Newton"`` (default), ``"PGS"`` or ``"CG"``
             (PGS and CG stop at their own iteration limits short of Newton's solution;
             :mod:`wmr_mujoco.bench.solver_cost` times and validates them).
-        jacobian: MuJoCo's constraint Jacobian and Newton Hessian storage, ``"auto"``
-            (MuJoCo's choice: dense below 60 DoF), ``"dense"`` or ``"sparse"``. Not a
-            physics parameter: the same equations in another storage (the solution
-            agrees to the solver's tolerance); the cost study
-            :mod:`wmr_mujoco.bench.solver_cost` times each.
+        jacobian: MuJoCo's constraint Jacobian and Newton Hessian storage, ``"sparse"``
+            (the default), ``"dense"`` or ``"auto"`` (MuJoCo's choice: dense below 60
+            DoF, so dense for omni3's 45). Not a physics parameter: the same equations in
+            another storage (the motion agrees to round-off); sparse is the cheaper at
+            this model's sparse mass matrix (a tree of 40 single hinges on one free
+            body): :mod:`wmr_mujoco.bench.solver_cost` times each and validates it.
         cone: friction cone, ``"elliptic"`` (the default, no pyramidal creep) or
             ``"pyramidal"``. A physics change: the pyramid's ``condim`` 3 square of
             edges lets a tangential force reach ``μ f_n`` along the contact frame's
@@ -82,7 +83,7 @@ class OmniParams:
     roller_armature: float = 0.0
     roller_damping: float = 0.0
     solver: str = "Newton"
-    jacobian: str = "auto"
+    jacobian: str = "sparse"
     cone: str = "elliptic"
     drive: DriveParams = DriveParams(wheel_kv=2.0, wheel_armature=0.004,
                                      wheel_torque_limit=1.0, wheel_rate_limit=60.0)
