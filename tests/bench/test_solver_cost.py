@@ -217,3 +217,16 @@ def test_a_setting_rejected_at_one_seed_runs_no_later_seed(monkeypatch):
                                           progress=False)
     assert asked == [("sparse", 0), ("dense", 0)]
     assert cell["jacobian dense"].startswith("seed 0: loses 1: s / m;")
+
+
+def test_without_running_only_kept_figures_give_a_verdict(tmp_path):
+    """``run=False`` reads the cache and runs nothing: a setting whose figures are kept
+    gets its verdict, one without is left out."""
+    spec = get_spec("omni3")
+    for params, value in ((OmniParams(), 0.5), (OmniParams(solver="PGS"), 0.6)):
+        path = solver_fidelity.cache_file(spec, params, 0, tmp_path)
+        path.write_text(json.dumps([dataclasses.asdict(_row(value, True))]))
+    cells = solver_fidelity.judge_settings(spec, [_setting("PGS"), _setting("CG")], [0, 1],
+                                           progress=False, cache=tmp_path, run=False)
+    assert list(cells) == ["PGS"]
+    assert cells["PGS"].startswith("seed 0: passes all; worst rise +10.0% of target")

@@ -28,7 +28,8 @@ short of Newton's solution. The others are the same equations solved another way
 Jacobian storage, islands, midphase and warm start to round-off; tolerances and
 iteration limits by where the solver stops (timed only: no parameter expresses them).
 
-``--physics`` also validates the candidates that change the physics; the validated
+``--physics`` also runs the validation of the candidates that change the physics (without
+it, their verdicts come from figures kept by an earlier run, if any); the validated
 figures are kept in ``reports/solver_cost/`` (named by the digest of the model files,
 :func:`wmr_mujoco.bench.solver_fidelity.cache_file`), so a rerun times again and reuses
 them. ``--write`` pastes the tables into ``docs/benchmarks.md`` (its ``solver-cost``
@@ -371,10 +372,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         sections.append(profile_text(spec.name, prof))
         print(sections[-1], flush=True)
         cs = costs(spec, SETTINGS, how)
-        fid = {} if args.no_validate else solver_fidelity.judge_settings(
-            spec, [s for s, c in zip(SETTINGS, cs, strict=True)
-                   if (c.candidate and (args.physics or not s.physics))
-                   or s.label == PREVIOUS.get(spec.name)], args.seeds, args.jobs)
+        chosen = [s for s, c in zip(SETTINGS, cs, strict=True)
+                  if c.candidate or s.label == PREVIOUS.get(spec.name)]
+        run = [s for s in chosen if args.physics or not s.physics]
+        fid = {} if args.no_validate else {
+            **solver_fidelity.judge_settings(spec, run, args.seeds, args.jobs),
+            **solver_fidelity.judge_settings(spec, [s for s in chosen if s not in run],
+                                             args.seeds, run=False)}
         rows = cost_rows(spec.name, SETTINGS, cs, fid)
         table += rows
         print("\n".join([HEADER, *rows]), flush=True)

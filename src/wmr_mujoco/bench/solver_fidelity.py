@@ -73,6 +73,16 @@ def cache_file(spec: RobotSpec, params: RobotParams, seed: int, folder: Path) ->
     return folder / f"{spec.name}-seed{seed}-{digest}.json"
 
 
+def kept(spec: RobotSpec, params: RobotParams, seed: int, cache: Path | None
+         ) -> Figures | None:
+    """The figures of ``params`` at ``seed`` kept in ``cache`` (None: not there)."""
+    path = None if cache is None else cache_file(spec, params, seed, cache)
+    if path is None or not path.exists():
+        return None
+    rows = [Row(**r) for r in json.loads(path.read_text())]
+    return {_key(r): r for r in rows}
+
+
 def figures(spec: RobotSpec, params: RobotParams, seed: int, jobs: int = 1,
             cache: Path | None = None) -> Figures:
     """Every row of ``wmr validate ROBOT --seed SEED`` with ``params`` (:data:`Figures`).
@@ -81,10 +91,10 @@ def figures(spec: RobotSpec, params: RobotParams, seed: int, jobs: int = 1,
     found there are read instead of run. The validation code is not part of the key:
     clear the folder after changing it.
     """
+    found = kept(spec, params, seed, cache)
+    if found is not None:
+        return found
     path = None if cache is None else cache_file(spec, params, seed, cache)
-    if path is not None and path.exists():
-        rows = [Row(**r) for r in json.loads(path.read_text())]
-        return {_key(r): r for r in rows}
     n = len(validation_jobs([spec.name]))
     calls = [(_family_rows, (spec, k, seed, params)) for k in range(n)]
     out: Figures = {}
@@ -152,11 +162,12 @@ def verdict_text(by_seed: Mapping[int, Verdict]) -> str:
 
 def judge_settings(spec: RobotSpec, settings: Sequence[Setting], seeds: Sequence[int],
                    jobs: int = 1, progress: bool = True,
-                   cache: Path | None = CACHE) -> dict[str, str]:
+                   cache: Path | None = CACHE, run: bool = True) -> dict[str, str]:
     """Validate each of the candidate ``settings`` the robot's parameters express.
 
     At each seed in turn; a setting that loses a target at one seed is rejected there
-    (its later seeds are not run).
+    (its later seeds are not run). ``run=False`` runs nothing: the verdicts of the seeds
+    whose figures ``cache`` keeps (a setting with none is left out).
 
     Returns:
         setting label -> table cell (:func:`verdict_text`); settings not validated are
@@ -172,14 +183,18 @@ def judge_settings(spec: RobotSpec, settings: Sequence[Setting], seeds: Sequence
         left = [(s, p) for s, p in chosen if all(v.acceptable for v in out[s.label].values())]
         if not left:
             break
-        base = figures(spec, spec.params_type(), seed, jobs, cache)
+        base = (figures(spec, spec.params_type(), seed, jobs, cache) if run
+                else kept(spec, spec.params_type(), seed, cache))
         for s, p in left:
             assert p is not None
-            out[s.label][seed] = compare(base, figures(spec, p, seed, jobs, cache))
+            mine = figures(spec, p, seed, jobs, cache) if run else kept(spec, p, seed, cache)
+            if base is None or mine is None:
+                continue
+            out[s.label][seed] = compare(base, mine)
             if progress:
                 print(f"  {spec.name} {s.label} seed {seed}: "
                       f"{verdict_text({seed: out[s.label][seed]})}", flush=True)
-    return {label: verdict_text(v) for label, v in out.items()}
+    return {label: verdict_text(v) for label, v in out.items() if v}
 
 
 def publish(text: str, path: Path = DOC) -> None:
