@@ -230,3 +230,13 @@ def test_without_running_only_kept_figures_give_a_verdict(tmp_path):
                                            progress=False, cache=tmp_path, run=False)
     assert list(cells) == ["PGS"]
     assert cells["PGS"].startswith("seed 0: passes all; worst rise +10.0% of target")
+
+
+def test_a_setting_equal_to_the_default_is_not_timed_against_it():
+    """mecanum4 has 74 DoF: MuJoCo's ``auto`` already picks the sparse Jacobian there, so
+    both settings are its defaults, not candidates (a noisy ratio cannot make them one)."""
+    spec = get_spec("mecanum4")
+    assert load(spec).nv >= 60  # MuJoCo's rule: auto is sparse from 60 DoF
+    costs = solver_cost.costs(spec, (DEFAULT, _setting("jacobian auto"),
+                                     _setting("jacobian sparse")), Rounds(0.1, 1))
+    assert all("default's own options" in c.error and not c.candidate for c in costs[1:])
