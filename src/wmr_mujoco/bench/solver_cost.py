@@ -240,9 +240,7 @@ MIN_CONTACT_SHARE = 0.5
 
 
 def _options(model: mujoco.MjModel) -> tuple[float, ...]:
-    """The ``MjOption`` fields a setting may change, resolved (``auto`` Jacobian: dense
-    below 60 DoF, MuJoCo's rule).
-    """
+    """The ``MjOption`` fields a setting may change (``auto`` resolved: dense below 60 DoF)."""
     jac = model.opt.jacobian
     if jac == _J.mjJAC_AUTO:
         jac = _J.mjJAC_SPARSE if model.nv >= 60 else _J.mjJAC_DENSE
