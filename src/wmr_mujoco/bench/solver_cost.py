@@ -42,12 +42,12 @@ import argparse
 import dataclasses
 import math
 from collections.abc import Sequence
-from typing import Any
 
 import mujoco
 import numpy as np
 
 from wmr_mujoco.bench.default_speed import RTF_GOAL, Rounds, _prepare, _Timed, _wall
+from wmr_mujoco.bench.solver_profile import profile, profile_text, run_drive
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.robots.spec import RobotSpec
@@ -129,83 +129,6 @@ SETTINGS: tuple[Setting, ...] = (
 #: the default whatever its cost, so the table shows what the change did to the figures.
 PREVIOUS: dict[str, str] = {"omni3": "jacobian auto"}
 
-#: MuJoCo's timers of one step's stages, in the order of ``mj_step``.
-STAGES = ("POS_KINEMATICS", "POS_INERTIA", "COL_BROAD", "COL_NARROW", "POS_MAKE",
-          "POS_PROJECT", "VELOCITY", "ACTUATION", "CONSTRAINT", "ADVANCE")
-
-
-@dataclasses.dataclass(frozen=True)
-class Profile:
-    """Where one step's time goes, averaged over a drive.
-
-    Attributes:
-        us: µs per step of each of :data:`STAGES`, then ``"STEP"`` (the whole step).
-        niter: mean solver iterations per step.
-        neval: mean line-search cost evaluations per step.
-        ncon: mean contacts per step.
-        nefc: mean constraint rows per step.
-        timestep: the model's step, s.
-    """
-
-    us: dict[str, float]
-    niter: float
-    neval: float
-    ncon: float
-    nefc: float
-    timestep: float
-
-    @property
-    def ceiling(self) -> float:
-        """The real-time factor with a free constraint solver: ``Δt / (step − solver)``.
-
-        What no solver setting can beat at this timestep: the other stages' cost stays.
-        """
-        return self.timestep * 1e6 / (self.us["STEP"] - self.us["CONSTRAINT"])
-
-
-def _steps(t: _Timed, per_step: Any = None) -> int:
-    """Run the prepared drive from its settled state; ``per_step(data)`` after each step."""
-    m, d = t.model, t.data
-    mujoco.mj_setState(m, d, t.state, mujoco.mjtState.mjSTATE_INTEGRATION)
-    per = max(1, round(CONTROL_PERIOD / m.opt.timestep))
-    for ctrl in t.controls:
-        d.ctrl[:] = ctrl
-        for _ in range(per):
-            mujoco.mj_step(m, d)
-            if per_step is not None:
-                per_step(d)
-    return per * len(t.controls)
-
-
-def profile(t: _Timed, rounds: int = 1) -> Profile:
-    """MuJoCo's timers and solver counts over the prepared drive.
-
-    The drive runs ``rounds`` times from the same settled state; each stage's µs per step
-    is the median over the rounds (a preempted round on a shared machine inflates the
-    stage it hit), the counts are the same every round (the run is deterministic).
-    """
-    d = t.data
-    names = (*STAGES, "STEP")
-    timers = [getattr(mujoco.mjtTimer, f"mjTIMER_{n}") for n in names]
-    counts: list[tuple[int, int, int, int]] = []
-
-    def record(data: mujoco.MjData) -> None:
-        n = int(data.solver_niter[0])
-        neval = sum(data.solver[i].neval for i in range(min(n, mujoco.mjNSOLVER)))
-        counts.append((n, neval, data.ncon, data.nefc))
-
-    per_round = []
-    for k in range(rounds):
-        before = np.array([d.timer[i].duration for i in timers])
-        nstep = _steps(t, record if k == 0 else None)
-        per_round.append((np.array([d.timer[i].duration for i in timers]) - before)
-                         / nstep * 1e6)
-    us = np.median(np.array(per_round), axis=0)
-    mean = np.mean(np.array(counts, float), axis=0)
-    return Profile(dict(zip(names, us.tolist(), strict=True)), *mean.tolist(),
-                   timestep=float(t.model.opt.timestep))
-
-
 @dataclasses.dataclass(frozen=True)
 class Cost:
     """One setting's cost on one robot's drive.
@@ -252,7 +175,7 @@ def _options(model: mujoco.MjModel) -> tuple[float, ...]:
 def contacts(t: _Timed) -> float:
     """Mean contacts per step over the prepared drive (untimed; a divergence raises)."""
     n: list[int] = []
-    _steps(t, lambda d: n.append(d.ncon))
+    run_drive(t, lambda d: n.append(d.ncon))
     check_healthy(t.model, t.data)
     return float(np.mean(n))
 
@@ -313,20 +236,6 @@ def spec_dt(t: _Timed | None) -> float:
     return float(t.model.opt.timestep)
 
 
-def profile_text(robot: str, p: Profile) -> str:
-    """The profile as lines: each stage's µs and share of the step, then the counts."""
-    total = p.us["STEP"]
-    lines = [f"{robot}: one default step, {total:.1f} µs (MuJoCo's timers, median of rounds)"]
-    for name in STAGES:
-        lines.append(f"  {name.lower():15s} {p.us[name]:7.1f} µs  {p.us[name] / total:5.1%}")
-    lines.append(f"  per step: {p.niter:.2f} solver iterations, {p.neval:.1f} line-search "
-                 f"evaluations, {p.ncon:.1f} contacts, {p.nefc:.1f} constraint rows")
-    lines.append(f"  the other stages alone: {p.us['STEP'] - p.us['CONSTRAINT']:.1f} µs, at "
-                 f"most {p.ceiling:.0f}× real time at {p.timestep * 1e3:g} ms with a free "
-                 f"solver")
-    return "\n".join(lines)
-
-
 def cost_rows(robot: str, settings: Sequence[Setting], cs: Sequence[Cost],
               fidelity: dict[str, str] | None = None) -> list[str]:
     """Table lines: setting, physics mark, µs/step, × real time, ratio, validation."""
@@ -346,6 +255,8 @@ def cost_rows(robot: str, settings: Sequence[Setting], cs: Sequence[Cost],
 
 def _unvalidated(s: Setting, c: Cost) -> str:
     """Why a timed setting has no validation."""
+    if s == DEFAULT:
+        return "the default: what the others are compared with"
     if not c.candidate:
         return f"no candidate (cost ratio above {CANDIDATE_RATIO})"
     if not s.params:

@@ -1,0 +1,31 @@
+"""MuJoCo's timers and solver counts of a drive."""
+
+from __future__ import annotations
+
+import mujoco
+import pytest
+
+from wmr_mujoco.bench import solver_profile
+from wmr_mujoco.bench.default_speed import _prepare
+from wmr_mujoco.robots import get_spec
+
+
+@pytest.mark.parametrize(("robot", "cone", "rows"), [("omni3", None, 3),
+                                                     ("omni3_reduced", None, 3),
+                                                     ("omni3_reduced", "pyramidal", 4)])
+def test_profile_counts_the_cones_rows_per_contact(robot, cone, rows):
+    """Every constraint row of the omni robots is a wheel contact (no limits, no friction
+    loss): an elliptic condim-3 contact makes 3 rows (normal + 2 friction), a pyramidal
+    one 2 (condim − 1) = 4 edges; the solver iterates at least once per step with
+    contacts, and the timed stages are parts of the step (their sum cannot exceed it)."""
+    spec = get_spec(robot)
+    t = _prepare(spec, None, 0.2)
+    if cone:
+        t.model.opt.cone = mujoco.mjtCone.mjCONE_PYRAMIDAL
+    p = solver_profile.profile(t)
+    assert p.ncon > 1.0  # rollers touch
+    assert p.nefc == pytest.approx(rows * p.ncon, rel=1e-12)
+    assert p.niter >= 1.0
+    assert sum(p.us[s] for s in solver_profile.STAGES) <= p.us["STEP"] * (1 + 1e-9)
+    # the ceiling is what a free solver would give: above the whole step's factor
+    assert p.ceiling > p.timestep * 1e6 / p.us["STEP"]
