@@ -32,6 +32,8 @@ def test_bad_devices():
         WarpBackend(devices="cpu")
     with pytest.raises(ValueError, match=r"probe_steps = -1; give an integer >= 0"):
         WarpBackend(probe_steps=-1)
+    with pytest.raises(ValueError, match=r"graph = 'yes'; give True or False"):
+        WarpBackend(graph="yes")
 
 
 def test_a_divergence_is_reported_naming_float32_and_rollout():

@@ -14,6 +14,11 @@ def test_measure_times_the_requested_batch():
         bt.measure("diffdrive", "rollout", 0)
 
 
+def test_a_budget_sets_the_steps_within_the_clip():
+    # 60 robot-steps over 3 worlds: 20 steps each, inside [MIN_STEPS, MAX_STEPS].
+    assert bt.measure("diffdrive", "rollout", 3, repeats=1, budget=60).steps == 20
+
+
 def test_table_has_a_row_per_robot_and_backend():
     points = [bt.Point("diffdrive", "rollout", 1, 100, 0.01),
               bt.Point("diffdrive", "rollout", 8, 100, 0.02),
@@ -25,6 +30,8 @@ def test_table_has_a_row_per_robot_and_backend():
 
 
 def test_docs_hold_the_markers():
+    from wmr_mujoco.bench import batch_parity
     from wmr_mujoco.docs_sync.markers import has_markers
 
-    assert has_markers(bt.DOC, bt.MARKER)
+    for marker in (bt.MARKER, bt.GPU_MARKER, batch_parity.MARKER, batch_parity.GPU_MARKER):
+        assert has_markers(bt.DOC, marker)

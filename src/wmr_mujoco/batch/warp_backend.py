@@ -12,6 +12,9 @@ read back, so GPUs work at once. After every chunk the overflow flags (contact a
 constraint buffers, :mod:`wmr_mujoco.batch.buffers`) and the states' finiteness are
 checked: an overflow is a :class:`RuntimeError`, a non-finite state a
 :class:`~wmr_mujoco.sim.stepping.SimulationDivergedError`, both naming the member.
+On a CUDA device ``mujoco_warp.step`` is captured once as a CUDA graph and replayed for
+every step (``graph=True``, the default): the host then launches one graph, not the step's
+hundreds of kernels, between the copies of the step's controls in and its state out.
 
 MuJoCo Warp computes in float32 (C MuJoCo: float64); its results differ from
 ``"rollout"``'s by the amounts ``tests/batch/test_parity.py`` measures per robot.
@@ -55,20 +58,25 @@ class WarpBackend(Backend):
         devices: Warp device names (None: every CUDA device, else ``"cpu"``); a name may
             repeat (more shards on one device).
         probe_steps: steps of the C MuJoCo run that sizes the buffers.
+        graph: replay the step as a captured CUDA graph on CUDA devices (no effect on the
+            CPU, where Warp has no graphs).
     """
 
     name = "warp"
     extra = warp_setup.EXTRA
 
     def __init__(self, devices: Sequence[str] | None = None,
-                 probe_steps: int = buffers.PROBE_STEPS) -> None:
+                 probe_steps: int = buffers.PROBE_STEPS, graph: bool = True) -> None:
         if devices is not None and (isinstance(devices, str) or not devices):
             raise ValueError(f"devices = {devices!r}; give a non-empty list of Warp device "
                              "names, e.g. ['cuda:0', 'cuda:1'] or ['cpu']")
         if isinstance(probe_steps, bool) or not isinstance(probe_steps, int) or probe_steps < 0:
             raise ValueError(f"probe_steps = {probe_steps!r}; give an integer >= 0")
+        if not isinstance(graph, bool):
+            raise ValueError(f"graph = {graph!r}; give True or False")
         self.devices = None if devices is None else list(devices)
         self.probe_steps = probe_steps
+        self.graph = graph
 
     @classmethod
     def installed(cls) -> bool:
@@ -102,7 +110,7 @@ class WarpBackend(Backend):
         sizes = buffers.measure(preps, self.probe_steps)
         devices = self.devices or warp_setup.devices()
         ranges = shard.split(len(preps), len(devices))
-        runs = [_ShardRun([preps[i] for i in r], r.start, dev, sizes)
+        runs = [_ShardRun([preps[i] for i in r], r.start, dev, sizes, self.graph)
                 for r, dev in zip(ranges, devices, strict=False)]
         nstep = len(preps[0].controls)
         self.step_seconds = 0.0
@@ -179,11 +187,13 @@ class _ShardRun:
     """One device's members: Warp model and data, controls, and the states read back."""
 
     def __init__(self, preps: list[Prepared], first: int, device: str,
-                 sizes: buffers.Buffers) -> None:
+                 sizes: buffers.Buffers, graph: bool = False) -> None:
         import warp as wp
 
         _, mjw = warp_setup.init()
         self.preps, self.first, self.device = preps, first, device
+        self.capture = graph and wp.get_device(device).is_cuda
+        self.graph: Any = None
         self.mjw, self.wp = mjw, wp
         base = preps[0]
         nw = len(preps)
@@ -222,9 +232,20 @@ class _ShardRun:
         with _device(self.device):
             for k in range(k0, k1):
                 wp.copy(self.d.ctrl, self.ctrl[k])
-                self.mjw.step(self.m, self.d)
+                self._step()
                 for f, h in self.hist.items():
                     wp.copy(h[k - k0], getattr(self.d, f))
+
+    def _step(self) -> None:
+        """One ``mujoco_warp.step``: on a CUDA device the replay of its captured graph."""
+        if not self.capture:
+            self.mjw.step(self.m, self.d)
+            return
+        if self.graph is None:  # capturing records the kernels without running them
+            with self.wp.ScopedCapture() as capture:
+                self.mjw.step(self.m, self.d)
+            self.graph = capture.graph
+        self.wp.capture_launch(self.graph)
 
     def wait(self) -> None:
         """Wait until the device has done the queued steps."""

@@ -4,8 +4,8 @@
 :func:`wmr_mujoco.batch.parity.parity` (seeded validation-style draws through both
 backends, the worst member's base position difference judged against a share of the
 robot's own position target) for every robot with a position target, prints the table
-and pastes it into ``docs/batch.md``. ``tests/batch/test_parity.py`` asserts the same
-on the same draws.
+and pastes it into ``docs/batch.md`` (under :data:`GPU_MARKER` when Warp runs on a
+GPU). ``tests/batch/test_parity.py`` asserts the same on the same draws.
 """
 
 from __future__ import annotations
@@ -18,6 +18,8 @@ from wmr_mujoco.robots import get_spec
 from wmr_mujoco.sim.stepping import SimulationDivergedError
 
 MARKER = "batch-parity"
+#: The marker of the table measured with Warp on a GPU.
+GPU_MARKER = "batch-parity-gpu"
 #: Members, seconds and seed of the draws (as in tests/batch/test_parity.py).
 MEMBERS, DURATION, SEED = 3, 1.0, 7
 
@@ -28,7 +30,7 @@ def table() -> str:
     from wmr_mujoco.robots import ROBOTS
 
     lines = [f"`python -m wmr_mujoco.bench.batch_parity`: {MEMBERS} seeded members of "
-             f"{DURATION:g} s per robot (seed {SEED}), warp on the CPU against rollout; "
+             f"{DURATION:g} s per robot (seed {SEED}), warp on {_device()} against rollout; "
              f"tolerance {par.SHARE:g} × the robot's position target.", "",
              "| robot | worst member | tolerance | largest difference (m) | verdict |",
              "|---|---|---|---|---|"]
@@ -45,10 +47,20 @@ def table() -> str:
     return "\n".join(lines)
 
 
+def _device() -> str:
+    """Where Warp runs: the GPU's name, else "the CPU"."""
+    from wmr_mujoco.batch import warp_setup
+
+    wp, _ = warp_setup.init()
+    device = warp_setup.devices()[0]
+    return "the CPU" if device == "cpu" else f"{device} ({wp.get_device(device).name})"
+
+
 def main(argv: Sequence[str] | None = None) -> None:
     """Measure, print, and paste the table into docs/batch.md (unless ``--no-write``)."""
     args = study_parser(__doc__.splitlines()[0]).parse_args(argv)
-    publish(DOC, {MARKER: table()}, not args.no_write)
+    marker = MARKER if _device() == "the CPU" else GPU_MARKER
+    publish(DOC, {marker: table()}, not args.no_write)
 
 
 if __name__ == "__main__":

@@ -2,12 +2,11 @@
 
 import math
 
-import mujoco
 import numpy as np
 import pytest
 
 from wmr_mujoco.analytic.integrate import integrate
-from wmr_mujoco.lookup import load
+from wmr_mujoco.robots.single_steer.inertia import sleigh_inertia
 from wmr_mujoco.robots.single_steer.params import SingleSteerParams
 from wmr_mujoco.robots.steered import analytic as steered
 
@@ -58,7 +57,7 @@ def test_sleigh_yaw_rate_decays_exponentially():
 def test_steady_steering_gives_a_straight_crab():
     # With p = 0 and β, v constant the yaw rate is the one that keeps p = M v (c × e):
     # starting from rest-consistent momentum the robot translates along ψ + β.
-    inertia = steered.sleigh_inertia(SingleSteerParams())
+    inertia = sleigh_inertia(SingleSteerParams())
     beta, v = 0.5, 0.4
     p0 = steered.single_momentum(0.0, v, beta, 0.0, inertia)
     states = integrate(lambda x, u: steered.single_rates(x, u, inertia),
@@ -71,34 +70,3 @@ def test_icr_lies_on_the_steered_axle_line():
     icr = steered.single_icr(0.4, 0.3, 0.5)
     axle = np.array([-math.sin(0.3), math.cos(0.3)])
     assert icr[0] * axle[1] - icr[1] * axle[0] == pytest.approx(0.0, abs=1e-15)
-
-
-def test_sleigh_mass_data_match_the_compiled_model():
-    # Independent: sum MuJoCo's own body masses and inertias about the steering axis.
-    p = SingleSteerParams()
-    model = load("single_steer")
-    data = mujoco.MjData(model)
-    mujoco.mj_forward(model, data)
-    pivot = data.site_xpos[model.site("base").id]
-    rigid_mass, first, yaw = 0.0, np.zeros(2), 0.0
-    fork_yaw = 0.0
-    for b in range(1, model.nbody):
-        name = model.body(b).name
-        m = model.body_mass[b]
-        d = data.xipos[b][:2] - pivot[:2]
-        izz = (data.ximat[b].reshape(3, 3) @ np.diag(model.body_inertia[b])
-               @ data.ximat[b].reshape(3, 3).T)[2, 2]
-        if name.startswith("caster"):
-            m = 1.4 * m  # a rolling ball: (7/5) m at its centre, no yaw inertia
-            izz = 0.0
-        if name in ("drive_fork", "drive_wheel"):
-            fork_yaw += izz
-            izz = 0.0
-        rigid_mass += m
-        first += m * d
-        yaw += izz + m * d @ d
-    got = steered.sleigh_inertia(p)
-    assert got.mass == pytest.approx(rigid_mass)
-    assert got.com == pytest.approx(tuple(first / rigid_mass), abs=1e-12)
-    assert got.yaw_inertia == pytest.approx(yaw)
-    assert got.fork_inertia == pytest.approx(fork_yaw)

@@ -13,6 +13,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+import mujoco
 import numpy as np
 
 from wmr_mujoco.models.loading import load
@@ -77,16 +78,20 @@ def _pick(trials: Sequence[Scenario], names: Sequence[str] | None) -> list[Scena
     return [t for t in trials if names is None or t.name in names]
 
 
+def _ripple(model: mujoco.MjModel) -> float:
+    """Peak-to-peak rolling-radius ripple of wheel 1 over a revolution, % of its mean."""
+    profile = rolling_radius_profile(model, "wheel1", "wheel1_roller")
+    return 100.0 * float(np.ptp(profile) / np.mean(profile))
+
+
 def measure_omni(params: OmniParams, label: str, names: Sequence[str] | None = None
                  ) -> Summary:
     """Ripple and trials (all, or those named) of the robot built from ``params``."""
     from wmr_mujoco.robots.omni3 import SPEC  # the entry imports this module
 
-    model = load(SPEC, params)
-    profile = rolling_radius_profile(model, "wheel1", "wheel1_roller")
-    ripple = 100.0 * float(np.ptp(profile) / np.mean(profile))
     trials = _pick(standard_trials(ROBOT), names)
-    return summarise(label, [run_trial(SPEC, t, params) for t in trials], ripple)
+    return summarise(label, [run_trial(SPEC, t, params) for t in trials],
+                     _ripple(load(SPEC, params)))
 
 
 def measure_peer(names: Sequence[str] | None = None, scene: Path | None = None) -> Summary:
@@ -101,7 +106,20 @@ def measure_peer(names: Sequence[str] | None = None, scene: Path | None = None) 
 
 
 def peer_comparison(scene: Path, quick: bool) -> list[Mapping[str, object]]:
-    """omni3 at its defaults and the peer robot_soccer_kit on the same open-loop trials."""
+    """omni3 at its defaults and the peer robot_soccer_kit on the same open-loop trials.
+
+    The two run trial by trial in turns (omni3's trial, then the peer's same trial), so
+    that both real-time factors see the same load of a shared machine.
+    """
+    from wmr_mujoco.robots.omni3 import SPEC  # the entry imports this module
+
     names = QUICK_PEER_TRIALS if quick else None
+    params, peer = OmniParams(), peer_spec(scene)
+    theirs_by_name = {t.name: t for t in _pick(peer.scenarios, names)}
+    ours, theirs = [], []
+    for trial in _pick(standard_trials(ROBOT), names):
+        ours.append(run_trial(SPEC, trial, params))
+        theirs.append(run_trial(peer, theirs_by_name[trial.name]))
     return [dataclasses.asdict(s) for s in (
-        measure_omni(OmniParams(), f"{ROBOT} (default)", names), measure_peer(names, scene))]
+        summarise(f"{ROBOT} (default)", ours, _ripple(load(SPEC, params))),
+        summarise(f"{PEER_NAME} (peer, as published)", theirs, float("nan")))]

@@ -23,6 +23,7 @@ from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.learning import Learning
 from wmr_mujoco.robots.single_steer import builder
+from wmr_mujoco.robots.single_steer.inertia import sleigh_inertia
 from wmr_mujoco.robots.single_steer.params import SingleSteerParams
 from wmr_mujoco.robots.spec import Picture, RobotSpec
 from wmr_mujoco.robots.steered import analytic as steered
@@ -50,7 +51,7 @@ class SingleSteerSleigh:
     @cached_property
     def inertia(self) -> steered.SleighInertia:
         """Mass data of the sleigh equations."""
-        return steered.sleigh_inertia(self.params)
+        return sleigh_inertia(self.params)
 
     def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
         """``(v_w/R, ω)``: wheel-rate and steering-rate servo targets."""
