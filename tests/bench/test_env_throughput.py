@@ -7,12 +7,16 @@ from wmr_mujoco.bench import env_throughput
 
 def test_measure_reports_every_loop_and_ratio():
     m = env_throughput.measure("wmr/Disc-GoToGoal-v0", seconds=0.05, repeats=1, vector=2)
-    assert set(m) >= {"env", "vector", "drive", "bare", "env_ratio", "vector_ratio",
-                      "drive_ratio", "reset_ms", "frame_skip"}
-    assert all(m[k] > 0 for k in ("env", "vector", "drive", "bare", "reset_ms"))
+    assert set(m) >= {"env", "vector", "sync", "drive", "bare", "env_ratio", "vector_ratio",
+                      "sync_ratio", "drive_ratio", "reset_ms", "frame_skip"}
+    assert all(m[k] > 0 for k in ("env", "vector", "sync", "drive", "bare", "reset_ms"))
     assert m["env_ratio"] == pytest.approx(m["env"] / m["bare"])
     assert m["frame_skip"] == 10  # 20 ms control period / 2 ms timestep
     assert "| wmr/Disc-GoToGoal-v0 | 10 |" in env_throughput.table({"wmr/Disc-GoToGoal-v0": m})
+    line = env_throughput.summary({"wmr/Disc-GoToGoal-v0": m}, 2, 1, 0.05)
+    assert "worst vector / bare" in line and "(native, 2 worlds)" in line
+    # The exit status judges the env and the native vector ratios, the worse of the two.
+    assert env_throughput.worst({"a": m}) == min(m["env_ratio"], m["vector_ratio"])
 
 
 def test_the_replayed_episode_is_a_solved_one():

@@ -37,3 +37,29 @@ def test_unknown_command_space_has_no_scripted_controller():
     ep = Episode("diffdrive", "GoToGoal", mode="wheels")
     with pytest.raises(ValueError, match="no scripted controller"):
         Scripted(ep)
+
+
+def test_the_steering_law_reads_the_declared_steer_arm():
+    # The kind follows the command's channel names and the registry entry's steer_arm,
+    # and the arm is the robot's parameter of that name (no duck typing on the params).
+    kinds = {}
+    for robot in ("bicycle", "tricycle", "single_steer", "double_steer"):
+        ctrl = Scripted(Episode(robot, "FollowPath"))
+        kinds[robot] = ctrl.kind
+        name = ctrl.ep.profile.steer_arm
+        params = ctrl.ep.robot.spec.params_type()  # the robot's (default) parameters
+        assert ctrl.arm == (getattr(params, name) if name else 0.0)
+    assert kinds == {"bicycle": "car", "tricycle": "car", "single_steer": "wheel",
+                     "double_steer": "double"}
+    assert Scripted(Episode("bicycle", "FollowPath")).law.wheelbase == pytest.approx(1.05)
+
+
+def test_a_steer_arm_that_is_not_a_parameter_is_named():
+    from dataclasses import replace
+
+    from wmr_mujoco.envs import scripted
+
+    ep = Episode("bicycle", "FollowPath")
+    ep.profile = replace(ep.profile, steer_arm="axle_gap")
+    with pytest.raises(ValueError, match="steer_arm='axle_gap' is not a field"):
+        scripted.Scripted(ep)

@@ -150,3 +150,21 @@ def test_follow_path_points_ahead_are_the_path_positions():
         d = world - p.position
         body = np.column_stack([c * d[:, 0] + sn * d[:, 1], c * d[:, 1] - sn * d[:, 0]])
         np.testing.assert_allclose(obs[:10], body.ravel(), atol=1e-9)
+
+
+@pytest.mark.parametrize(("robot", "task"), [("disc", "FollowPath"), ("disc", "GoToGoal"),
+                                             ("whipple", "StayUpright")])
+def test_evaluate_observe_is_evaluate_and_observe(robot, task):
+    # The environments' one call per step must equal the two calls exactly (same floats).
+    from wmr_mujoco.envs.episode import Episode
+
+    ep = Episode(robot, task)
+    ep.reset(np.random.default_rng(4))
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        prev = ep.state
+        a = rng.uniform(-0.5, 0.5, ep.n_action).tolist()
+        ep.push(a)
+        ep.state = state = ep.stepper.finish()
+        fused = ep.task.evaluate_observe(prev, state, a, ep.dt)
+        assert fused == (*ep.task.evaluate(prev, state, a, ep.dt), ep.task.observe(state))

@@ -43,3 +43,17 @@ def test_bands_outside_the_physical_range_are_refused(name):
 def test_default_has_no_radius_band():
     # A robot not described may roll on rollers, whose radius is no single geom's.
     assert DEFAULT.bands.wheel_radius is None
+
+
+@pytest.mark.parametrize("arm", ["not a name", 1.0, None])
+def test_a_steer_arm_must_name_a_parameter(arm):
+    with pytest.raises(ValueError, match="steer_arm"):
+        Learning(steer_arm=arm)
+
+
+def test_declared_steer_arms_are_fields_of_the_robots_parameters():
+    # The scripted controllers read the arm from the parameters by this name.
+    for name, spec in ROBOTS.items():
+        arm = spec.learning.steer_arm if spec.learning is not None else ""
+        if arm:
+            assert hasattr(spec.params_type(), arm), name

@@ -10,6 +10,8 @@ actuators, :mod:`wmr_mujoco.drive`) and task that its registry entry offers
     env = gym.make("wmr/DiffDrive-GoToGoal-v0")
     obs, info = env.reset(seed=0)
 
+    envs = gym.make_vec("wmr/DiffDrive-GoToGoal-v0", num_envs=8)  # n worlds, one loop
+
 Needs the optional extra ``rl`` (``pip install wmr-mujoco[rl]``: gymnasium). Without it the
 tasks and the dm_control suite (:mod:`wmr_mujoco.suite`) still work; ``WmrEnv`` then
 raises ImportError naming the extra.
@@ -54,6 +56,7 @@ def register_all() -> list[str]:
                 # environment checks every action itself and refuses step() before
                 # reset(), and each wrapper costs a call per step (check_env passes).
                 gym.register(name, entry_point="wmr_mujoco.envs.env:WmrEnv",
+                             vector_entry_point="wmr_mujoco.envs.vector:WmrVectorEnv",
                              kwargs={"robot": robot, "task": task},
                              disable_env_checker=True, order_enforce=False)
             ids.append(name)

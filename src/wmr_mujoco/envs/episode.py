@@ -168,8 +168,7 @@ class Episode:
             RuntimeError: no reset yet.
             SimulationDivergedError: the physics diverged.
         """
-        prev = self.state
-        if prev is None:
+        if self.state is None:
             raise RuntimeError("call reset() before step()")
         # The usual action, a float array of the right shape inside [-1, 1], is checked on
         # Python floats; anything else (a NaN fails the bounds) goes through check_action,
@@ -183,20 +182,43 @@ class Episode:
                     break
         else:
             a = check_action(action, self.n_action)
-        task = self.task
-        # a has n_action entries (checked above).
-        self.state = state = self.stepper.step([c + h * v for c, h, v in
-                                                zip(self._c, self._h, a, strict=False)])
+        return self.advance(a)
+
+    def advance(self, a: list[float]) -> tuple[np.ndarray, float, bool, bool, dict]:
+        """:meth:`step` of a checked action: ``n_action`` floats in ``[-1, 1]``.
+
+        :meth:`push` then :meth:`pull` (the vector environment checks a whole batch before
+        it steps any world, and pushes every world before it pulls them).
+        """
+        self.push(a)
+        return self.pull()
+
+    def push(self, a: list[float]) -> None:
+        """The physics of :meth:`advance` (the command of ``a`` held for one period)."""
+        self.stepper.advance([c + h * v for c, h, v in zip(self._c, self._h, a, strict=False)])
         self.last_action = a
-        terms, success, failure = task.evaluate(prev, state, a, self.dt)
+
+    def pull(self) -> tuple[np.ndarray, float, bool, bool, dict]:
+        """After :meth:`push`: the step's ``(observation, reward, terminated, truncated, info)``.
+
+        Raises:
+            SimulationDivergedError: the physics diverged.
+        """
+        prev, task = self.state, self.task
+        self.state = state = self.stepper.finish()
+        a = self.last_action
+        terms, success, failure, obs = task.evaluate_observe(prev, state, a, self.dt)
         time = state.time
         truncated = not (success or failure) and time >= task.time_limit - 1e-9
         if truncated:
             success = task.succeeded_at_time_limit(state)
         info = {"reward_terms": terms, "is_success": bool(success), "failed": bool(failure),
                 "time": time}
-        return (self.observe(), sum(terms.values()), not truncated and (success or failure),
-                truncated, info)
+        obs += state.uvr  # the task's block is a new list: extended in place (observe())
+        obs += state.wheel_rates_list
+        obs += a
+        return (np.array(obs, np.float32), sum(terms.values()),
+                not truncated and (success or failure), truncated, info)
 
     def observe(self) -> np.ndarray:
         """The observation vector (float32; module docstring)."""

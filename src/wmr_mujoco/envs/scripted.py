@@ -11,12 +11,13 @@ the robot's task scale, at most half its speed limit) and look-ahead ``L_d = 0.3
 * ``(v, omega)`` unicycle: pure pursuit
   (:class:`~wmr_mujoco.loop.control.pure_pursuit.PurePursuit`), ``κ = 2 sin α / L_d``,
   ``v = V``, ``ω = V κ``.
-* ``(v, steer)`` car-like (parameters with a ``wheelbase`` ℓ): the same pure pursuit
+* ``(v, steer)`` car-like (a robot whose registry entry declares the steering arm, the
+  wheelbase ℓ: ``Learning.steer_arm`` names its parameter): the same pure pursuit
   writing ``δ = atan(ℓ κ)`` (clipped to the steering range).
 * ``(v, front_steer, rear_steer)``: pure pursuit's ``κ`` for two steered wheels at ``±h``
   along the body turned symmetrically about the centre, ``δ_f = −δ_r = atan(h κ)``: the
-  centre then moves along the body axis on curvature κ.
-* ``(v, steer)`` with one centred steered wheel (no wheelbase; the yaw is free, a
+  centre then moves along the body axis on curvature κ (``h``: the declared steering arm).
+* ``(v, steer)`` with one centred steered wheel (no steering arm; the yaw is free, a
   Chaplygin sleigh): steer the wheel at pure pursuit's look-ahead point ``p_L``,
   ``β = atan2(y_L, x_L)`` (clipped to the steering range), ``v = V``; a point behind
   (``|β| > π/2``) is reached rolling backwards, ``β → β + π``, ``v = −V``. GoToGoal: ``p_L``
@@ -48,7 +49,7 @@ SPEED = 0.5
 LOOKAHEAD = 0.35
 #: Heading gain of the holonomic controller, 1/s; position gain, 1/s.
 K_HEADING, K_POSITION = 2.0, 1.5
-#: The command kinds by channel names (``"car"`` needs a wheelbase, else ``"wheel"``).
+#: The command kinds by channel names (``"car"`` needs a steering arm, else ``"wheel"``).
 KINDS = {("u", "v", "r"): "holonomic", ("v", "omega"): "unicycle", ("v", "steer"): "car",
          ("v", "front_steer", "rear_steer"): "double"}
 
@@ -64,10 +65,15 @@ class Scripted:
         self.ep = episode
         robot = episode.robot
         names = tuple(robot.command_space.names)
-        params = robot.spec.params_type() if robot.spec.params_type else None
         self.kind = KINDS.get(names)
-        if self.kind == "car" and not hasattr(params, "wheelbase"):
+        #: The steering arm ℓ (``Learning.steer_arm`` of the robot's entry), m; 0: none.
+        self.arm = _arm(robot, episode.profile.steer_arm)
+        if self.kind == "car" and not self.arm:
             self.kind = "wheel"
+        if self.kind == "double" and not self.arm:
+            raise ValueError(f"robot {robot.spec.name!r}: a (v, front_steer, rear_steer) "
+                             "command needs its registry entry's Learning.steer_arm (the "
+                             "half wheelbase's parameter)")
         if robot.mode == "command" and robot.spec.command.balance is not None:
             self.kind = "balance"
         if self.kind is None:
@@ -86,10 +92,8 @@ class Scripted:
         if self.kind == "holonomic":
             self.law = HolonomicPose(K_POSITION, K_HEADING, self.speed, float(high[2]))
         elif self.kind != "balance":
-            wheelbase = float(params.wheelbase) if self.kind == "car" else None
+            wheelbase = self.arm if self.kind == "car" else None
             self.law = PurePursuit(self.speed, self.lookahead, wheelbase, self.steer_limit)
-        #: The steered wheels' distance from the centre, m (the double steer's ``h``).
-        self.half_wheelbase = float(params.half_wheelbase) if self.kind == "double" else 0.0
 
     def reset(self) -> None:
         """Plan the episode: the path to follow, or the balancing law at the target speed."""
@@ -118,7 +122,7 @@ class Scripted:
         if kind == "unicycle" or kind == "car":
             return self.law(state, self.path, t)
         if kind == "double":
-            delta = math.atan(self.half_wheelbase * self.law.curvature(state, self.path))
+            delta = math.atan(self.arm * self.law.curvature(state, self.path))
             return np.array([self.speed, delta, -delta])
         return self._wheel(state)
 
@@ -146,6 +150,23 @@ class Scripted:
     def action(self, state: Any) -> np.ndarray:
         """The normalised action of :meth:`command`, clipped to ``[-1, 1]``."""
         return np.clip(self.ep.action(self.command(state)), -1.0, 1.0)
+
+
+def _arm(robot: Any, name: str) -> float:
+    """The steering arm: the robot's parameter ``name``, m (0.0 for no name).
+
+    Raises:
+        ValueError: the robot's parameters have no such field.
+    """
+    if not name:
+        return 0.0
+    params = robot.params if getattr(robot, "params", None) is not None else (
+        robot.spec.params_type() if robot.spec.params_type else None)
+    try:
+        return float(getattr(params, name))
+    except AttributeError:
+        raise ValueError(f"robot {robot.spec.name!r}: Learning.steer_arm={name!r} is not a "
+                         f"field of its parameters {type(params).__name__}") from None
 
 
 def run_episode(episode: Episode, rng: np.random.Generator) -> tuple[bool, dict]:

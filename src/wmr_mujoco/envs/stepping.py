@@ -30,6 +30,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.loop.readout import NO_EXTRAS
+from wmr_mujoco.validation.command import RateCommand
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 
@@ -100,8 +101,18 @@ class Stepper:
         self.nstep = int(robot.nstep)
         self.period = float(robot.control_period)
         #: natural command -> controls (the robot's command map), None: the controls.
-        self.controller = (cmap.bind(model, cmap.analytic(robot.params))
-                           if robot.mode == "command" else None)
+        self.controller = None
+        #: ``W`` of a command map that is ``ctrl = W u`` (:meth:`RateCommand.matrix`, no
+        #: steering servo, no adjustment): applied here as ``bind``'s controller applies
+        #: it, ``np.matmul(W, u, out=ctrl)``, without the call around it.
+        self._w: np.ndarray | None = None
+        if robot.mode == "command":
+            adapter = cmap.analytic(robot.params)
+            if type(cmap).bind is RateCommand.bind and not cmap.servo and cmap.adjust is None:
+                self._w = cmap.matrix(adapter)
+            if self._w is None:
+                self.controller = cmap.bind(model, adapter)
+        self._u = np.zeros(len(data.ctrl) if self._w is None else self._w.shape[1])
         self.split = model.opt.integrator != mujoco.mjtIntegrator.mjINT_RK4
         reader = robot.reader
         self.reader, self.site = reader, reader.site
@@ -125,8 +136,21 @@ class Stepper:
 
     def step(self, command: list[float]) -> Snapshot:
         """Hold ``command`` (checked, inside the command space) for one control period."""
+        self.advance(command)
+        return self.finish()
+
+    def advance(self, command: list[float]) -> None:
+        """The physics of :meth:`step`; :meth:`finish` then checks and reads it.
+
+        (Apart so that a vector environment steps every world's physics, then reads every
+        world: the reading's Python code runs warm for all worlds but the first.)
+        """
         model, data = self.model, self.data
-        if self.controller is None:
+        if self._w is not None:
+            u = self._u
+            u[:] = command
+            np.matmul(self._w, u, out=self._ctrl)
+        elif self.controller is None:
             self._ctrl[:] = command
         else:
             self.controller(data, np.array(command), self.period, self._ctrl)
@@ -140,6 +164,9 @@ class Stepper:
             mujoco.mj_kinematics(model, data)
             mujoco.mj_comPos(model, data)
             mujoco.mj_comVel(model, data)
+
+    def finish(self) -> Snapshot:
+        """After :meth:`advance`: raise on a divergence, else the new snapshot."""
         if any(self._warnings.tolist()):
             self.reader.check()
         return self.read()

@@ -81,6 +81,12 @@ class Learning:
         control_period: seconds per environment step.
         bands: domain randomisation bands.
         task_options: per task, defaults of its options that differ for this robot.
+        steer_arm: the field of the robot's parameters that is the distance ``ℓ`` from the
+            point that follows a path to a steered axle, for the scripted controllers'
+            steering law ``δ = atan(ℓ κ)`` (:mod:`wmr_mujoco.envs.scripted`): the wheelbase
+            of a car-like ``(v, steer)`` command, the half wheelbase of a
+            ``(v, front_steer, rear_steer)`` one; empty: no such arm (a ``(v, steer)``
+            command then steers one wheel at the centre).
     """
 
     stem: str = ""
@@ -90,8 +96,13 @@ class Learning:
     control_period: float = 0.02
     bands: Bands = Bands()
     task_options: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
+    steer_arm: str = ""
 
     def __post_init__(self) -> None:
+        if not isinstance(self.steer_arm, str) or (self.steer_arm and
+                                                   not self.steer_arm.isidentifier()):
+            raise ValueError(f"Learning.steer_arm={self.steer_arm!r}: must be the name of a "
+                             "field of the robot's parameters, or empty")
         for name in ("scale", "max_curvature", "control_period"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, float)) or not (

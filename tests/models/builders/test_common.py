@@ -185,8 +185,8 @@ def _normal_gain(robot: str, params) -> float:
     return float(np.max(np.linalg.eigvals(gain[np.ix_(normal, normal)] / imp[normal]).real))
 
 
-ROBOTS_WITH_PAIRS = ("bicycle", "tricycle", "omni3", "mecanum4", "diffdrive", "single_steer",
-                     "double_steer")
+ROBOTS_WITH_PAIRS = ("bicycle", "tricycle", "omni3", "omni3_reduced", "mecanum4", "diffdrive",
+                     "single_steer", "double_steer")
 
 
 @pytest.mark.parametrize("robot", ROBOTS_WITH_PAIRS)
@@ -211,6 +211,19 @@ def test_mecanum4_needs_more_than_three_steps():
     assert _normal_gain("mecanum4", None) > 2.0
     model = load("mecanum4")
     assert float(np.min(model.pair_solref[:, 0])) / model.opt.timestep > SLIDING_STEPS
+
+
+def test_a_capsule_doubles_the_gain_of_one_touching_roller():
+    # omni3_reduced's capsule touches the floor at both end caps, 2 h = 0.12 mm apart
+    # along the axle: two nearly equal normal rows where omni3 has one touching roller
+    # per wheel, so λ doubles (within 10 %: the caps' small lever arm about the axle and
+    # the two models' different wheel inertias). Hence its pairs' four steps
+    # (omni3_reduced.builder.CAPSULE_PAIR_STEPS) against the wheels' three.
+    from wmr_mujoco.robots.omni3_reduced.builder import CAPSULE_PAIR_STEPS
+
+    ratio = _normal_gain("omni3_reduced", None) / _normal_gain("omni3", None)
+    assert ratio == pytest.approx(2.0, rel=0.1)
+    assert _normal_gain("omni3_reduced", None) < CAPSULE_PAIR_STEPS
 
 
 def test_sliding_impratio_keeps_impratio_times_d():

@@ -22,6 +22,11 @@ from wmr_mujoco.sim.stepping import check_healthy
 from wmr_mujoco.validation.scenarios import ScenarioKind
 
 NAME = "omni3_reduced"
+#: The collision class's stiff contact on the capsule pairs (no remedy): the tests whose
+#: bounds are derived for a rigid rolling contact run on it. The default's soft pairs add
+#: a shortfall of their own (the rolling radius lost to the rest depth, creep of the softer
+#: friction rows) that those derivations leave out; the validation judges the sum.
+STIFF = OmniReducedParams(floor_impedance=0.0)
 WHEELS = ("wheel1", "wheel2", "wheel3")
 G = 9.81
 
@@ -139,8 +144,9 @@ def test_a_wheel_that_does_not_slide_sideways_drives_at_omega_r(twist, wheels):
     drive direction is at most the other wheels' roller friction, ``μ_lat m g`` ≤ 0.25 N
     (μ_lat ≤ 0.01): ``v`` ≈ 1e-5 m/s, under 0.1 % of the 0.3 m/s rim speed. Height:
     within 1 mm of r (the static penetration of ``m g`` on the contacts is under 0.1 mm).
+    On the stiff contact (:data:`STIFF`), for which these bounds are derived.
     """
-    model = load(NAME)
+    model = load(NAME, params=STIFF)
     data = _settled(model)
     rates = _jacobian() @ np.array(twist)
     z = _drive(model, data, rates, 1.0)

@@ -134,6 +134,16 @@ class Task(ABC):
         """
         return (self.reward_terms(prev, state, action, dt), *self.outcome(state))
 
+    def evaluate_observe(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                         ) -> tuple[dict[str, float], bool, bool, list[float]]:
+        """``(*evaluate(...), observe(state))`` of one step, in one call.
+
+        A task may override it to share the work (the environments' hot path); the result
+        must equal the two calls'.
+        """
+        terms, success, failure = self.evaluate(prev, state, action, dt)
+        return terms, success, failure, self.observe(state)
+
     def succeeded_at_time_limit(self, state: Any) -> bool:
         """Whether an episode that runs to its time limit counts as a success (default no)."""
         return False

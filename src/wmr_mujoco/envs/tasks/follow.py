@@ -86,6 +86,12 @@ class FollowPath(Task):
         self._s = path.s.tolist()
         self._x, self._y = path.xy[:, 0].tolist(), path.xy[:, 1].tolist()
         self._heading = path.heading.tolist()
+        #: Per segment: ``x`` and ``y`` increments and ``1 / Δs`` (0 for a segment of no
+        #: length), so that a point at arc length ``q`` is ``x_k + t Δx_k``, bit for bit
+        #: the interpolation ``x_k + t (x_{k+1} − x_k)``.
+        self._gx = [b - a for a, b in zip(self._x, self._x[1:], strict=False)]
+        self._gy = [b - a for a, b in zip(self._y, self._y[1:], strict=False)]
+        self._ids = [_inverse(b - a) for a, b in zip(self._s, self._s[1:], strict=False)]
         #: Per segment ``(a_x, a_y, d_x, d_y, 1/|d|²)``: its start and its vector (a
         #: segment of no length: 0, its foot is its start).
         self._segments = [(ax, ay, bx - ax, by - ay, _inverse((bx - ax) ** 2 + (by - ay) ** 2))
@@ -136,18 +142,25 @@ class FollowPath(Task):
         The points ahead are interpolated linearly in arc length between the path's
         samples (clipped at its far end), in one pass over floats.
         """
-        p = self.project(state)
+        return self._observe(state, self.project(state))
+
+    def _observe(self, state: Any, p: Projection) -> list[float]:
+        """:meth:`observe` of the state's projection ``p``."""
         x, y, psi = pose_of(state)
         c, sn = math.cos(psi), math.sin(psi)
-        sl, xl, yl = self._s, self._x, self._y
-        n, end, k, out = len(sl) - 2, sl[-1], self._proj[2], []
+        sl, xl, yl, gx, gy, ids = self._s, self._x, self._y, self._gx, self._gy, self._ids
+        n, end, k, out, s0 = len(sl) - 2, sl[-1], self._proj[2], [], p.s
         for d in self._ahead:
-            q = p.s + d
-            q = end if q > end else q
-            k = min(bisect.bisect_right(sl, q, k) - 1, n)
-            t = (q - sl[k]) * _inverse(sl[k + 1] - sl[k])
-            dx, dy = xl[k] + t * (xl[k + 1] - xl[k]) - x, yl[k] + t * (yl[k + 1] - yl[k]) - y
-            out += (c * dx + sn * dy, c * dy - sn * dx)
+            q = s0 + d
+            if q > end:
+                q = end
+            k = bisect.bisect_right(sl, q, k) - 1
+            if k > n:
+                k = n
+            t = (q - sl[k]) * ids[k]
+            dx, dy = xl[k] + t * gx[k] - x, yl[k] + t * gy[k] - y
+            out.append(c * dx + sn * dy)
+            out.append(c * dy - sn * dx)
         e = math.remainder(p.heading - psi, math.tau)  # wrap() on floats
         out += (p.cross_track, math.sin(e), math.cos(e), self.end - p.s)
         return out
@@ -169,6 +182,12 @@ class FollowPath(Task):
                  "cross_track": -dt * (p.cross_track / dev) ** 2, "effort": effort(action),
                  "success": BONUS if success else 0.0, "failure": -BONUS if failure else 0.0},
                 success, failure)
+
+    def evaluate_observe(self, prev: Any, state: Any, action: Sequence[float], dt: float
+                         ) -> tuple[dict[str, float], bool, bool, list[float]]:
+        """:meth:`evaluate` and :meth:`observe`, from one projection of each state."""
+        terms, success, failure = self.evaluate(prev, state, action, dt)
+        return terms, success, failure, self._observe(state, self._proj[1])
 
     def outcome(self, state: Any) -> tuple[bool, bool]:
         """Success at the path's end; failure beyond ``max_deviation``."""
@@ -194,18 +213,24 @@ def _foot(segment: tuple[float, ...], px: float, py: float) -> tuple[float, floa
 def _walk(segments: list[tuple[float, ...]], px: float, py: float, i: int) -> tuple[int, float]:
     """``(segment, t)`` of the nearest point to ``(px, py)``, walked to from segment ``i``.
 
-    The foot on segment ``k`` is ``a + t d`` with ``t = clip((p − a)·d / |d|², 0, 1)``; the
-    walk goes forward while the next segment's foot is nearer, else backward likewise.
+    The foot on segment ``k`` is ``a + t d`` with ``t = clip((p − a)·d / |d|², 0, 1)``
+    (:func:`_foot`, inlined here: the environments' hot path); the walk goes forward while
+    the next segment's foot is nearer, else backward likewise.
     """
     best, t = _foot(segments[i], px, py)
-    last = len(segments) - 1
+    last, start = len(segments) - 1, i
     for step in (1, -1):
-        moved = False
-        while 0 <= i + step <= last:
-            d, u = _foot(segments[i + step], px, py)
+        j = i + step
+        while 0 <= j <= last:
+            ax, ay, dx, dy, inv = segments[j]
+            u = ((px - ax) * dx + (py - ay) * dy) * inv
+            u = 0.0 if u < 0.0 else 1.0 if u > 1.0 else u
+            ex, ey = ax + u * dx - px, ay + u * dy - py
+            d = ex * ex + ey * ey
             if d >= best:
                 break
-            i, best, t, moved = i + step, d, u, True
-        if moved:
+            i, best, t = j, d, u
+            j += step
+        if i != start:  # moved: the other way cannot be nearer
             break
     return i, t

@@ -96,5 +96,6 @@ SPEC = RobotSpec(
     scene_extras=wheel_floor_pairs(builder.build),
     # Planar model: its joints hold the frame level (no pitch), so wheels of different
     # radii would lift one of them off the floor: no radius band.
-    learning=Learning("Bicycle", scale=3.0, max_curvature=0.5, bands=NO_RADIUS_BANDS),
+    learning=Learning("Bicycle", scale=3.0, max_curvature=0.5, bands=NO_RADIUS_BANDS,
+                      steer_arm="wheelbase"),
 )

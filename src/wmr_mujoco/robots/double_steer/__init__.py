@@ -119,5 +119,5 @@ SPEC = RobotSpec(
     picture=Picture(joint_angles={"front_steer": 0.35, "rear_steer": -0.35}),
     command=COMMAND,
     scene_extras=wheel_floor_pairs(builder.build), open_targets=FLOOR_OPEN,
-    learning=Learning("DoubleSteer"),
+    learning=Learning("DoubleSteer", steer_arm="half_wheelbase"),
 )

@@ -22,7 +22,6 @@ from wmr_mujoco.robots.learning import NO_RADIUS_BANDS, Learning
 from wmr_mujoco.robots.omni3_reduced import builder
 from wmr_mujoco.robots.omni3_reduced.params import OmniReducedParams
 from wmr_mujoco.robots.spec import Clip, RobotSpec
-from wmr_mujoco.validation import floor_family
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.metrics import Target
@@ -55,14 +54,6 @@ def _own(s: Scenario) -> Scenario:
 #: omni3's kinematic scenarios, under this robot's name.
 SCENARIOS = tuple(_own(s) for s in omni3.SCENARIOS if s.kind is ScenarioKind.KINEMATIC)
 
-#: Its wheels leave the floor under random steps: its capsule pairs keep the collision
-#: class's contact, and the remedy's pairs on the capsules lifted them more
-#: (docs/floor-contact.md). Open, not passed.
-FLOOR_OPEN_REASON = ("its capsule pairs keep the collision class's contact; the remedy's "
-                     "pairs on the capsules lifted them more (docs/floor-contact.md)")
-FLOOR_OPEN = {floor_family.NAME: {floor_family.AFTER_STEP: FLOOR_OPEN_REASON,
-                                  floor_family.OVER_RUN: FLOOR_OPEN_REASON}}
-
 SPEC = RobotSpec(
     name=NAME,
     description="omni3 reduced: each omni wheel one driven hinge carrying one capsule whose "
@@ -74,7 +65,6 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="square with rotation",
     bench_scenario="translate+rotate", render_scenario="square with rotation",
     clips=(Clip(),), command=omni3.COMMAND, scene_extras=builder.floor_pairs,
-    open_targets=FLOOR_OPEN,
     # omni3's size; its wheels touch the floor through one low-friction capsule each.
     learning=Learning("Omni3Reduced", scale=0.5, max_curvature=3.0,
                       bands=NO_RADIUS_BANDS),

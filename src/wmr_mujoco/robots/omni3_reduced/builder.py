@@ -24,6 +24,14 @@ ROLLER_FRICTION = 0.01
 #: platform turns (a yaw drag omni3's single touching roller does not have; the ladder's
 #: design rows measure it at 0.1 e and e).
 CAPSULE_ROW_FRACTION = 0.01
+#: Least ``t_c/Δt`` of the capsule pairs' remedy. A capsule on the floor makes two
+#: contacts (its end caps), nearly one above the other's point: the normal gain λ of
+#: ``A (A + R)⁻¹ / d`` (stable while ``λ < t_c/Δt``, ``common.sliding_pair_kwargs``) is
+#: twice omni3's one touching roller per wheel, 2.8 against 1.4 at rest
+#: (``tests/models/builders/test_common.py`` computes it). At the wheels'
+#: three steps the capsules bounced off the floor; four keep them on it (the random-steps
+#: family, ``docs/floor-contact.md``), as mecanum4's four for its λ of 2.2.
+CAPSULE_PAIR_STEPS = 4
 WHEEL_RGBA = (0.55, 0.55, 0.58, 0.6)
 
 
@@ -117,10 +125,18 @@ def floor_pairs(scene: mjcf.RootElement, params: OmniParams,
     MuJoCo's plane-capsule collider sets the contact frame's first tangent to the capsule
     axis (the axle, projected on the floor) and the second to ``normal × axle``, the drive
     direction; a pair's five friction values are (tangent 1, tangent 2, torsional,
-    rolling, rolling). Everything else is the collision class's contact
-    (:func:`~wmr_mujoco.models.builders.common.contact_pair_kwargs`).
+    rolling, rolling). The capsule slides along its axle whenever the platform moves
+    sideways, the sliding contact that lifts a wheel off the floor; with
+    ``params.floor_impedance`` > 0 the pairs take the remedy
+    (:func:`~wmr_mujoco.models.builders.common.sliding_pair_kwargs` at
+    :data:`CAPSULE_PAIR_STEPS`, and the model's ``impratio``
+    :func:`~wmr_mujoco.models.builders.common.sliding_impratio`); with 0 the collision
+    class's contact (:func:`~wmr_mujoco.models.builders.common.contact_pair_kwargs`).
     """
-    kwargs = common.contact_pair_kwargs(params.sim)
+    d = params.floor_impedance
+    kwargs = common.sliding_pair_kwargs(params.sim, d, steps=CAPSULE_PAIR_STEPS)
     kwargs["friction"] = (roller_friction, params.sim.friction, *kwargs["friction"][2:])
     for i in range(3):
         scene.contact.add("pair", geom1="floor", geom2=f"wheel{i + 1}_collision", **kwargs)
+    if d > 0.0:
+        scene.option.impratio = common.sliding_impratio(d)

@@ -164,5 +164,5 @@ SPEC = RobotSpec(
     render_scenario="figure eight", picture=Picture(joint_angles={"steer": 0.35}),
     command=COMMAND,
     scene_extras=wheel_floor_pairs(builder.build),
-    learning=Learning("Tricycle"),
+    learning=Learning("Tricycle", steer_arm="wheelbase"),
 )
