@@ -168,3 +168,87 @@ def test_schedule_uses_an_adapters_exact_step_and_else_rk4():
     np.testing.assert_allclose(rk[-1], [0.02, 0.0], atol=1e-15)
     _, _, ex = schedule(s, Marked(), np.zeros(2), 0.002, 5)
     np.testing.assert_allclose(ex[-1], [5.02, 5.0], atol=1e-12)
+
+
+def test_schedule_takes_an_adapters_trajectory_with_the_controls_of_its_states():
+    """A trajectory, where the adapter has one, gives the states; controls see them."""
+    from wmr_mujoco.validation.runner import schedule
+
+    class Whole:
+        def controls(self, u, x):
+            return np.asarray(u, float) + x[0]  # shows which state it saw
+
+        def rhs(self, x, u):
+            raise AssertionError("not called where a trajectory is given")
+
+        def trajectory(self, x0, inputs, dt):
+            return x0 + np.arange(len(inputs) + 1)[:, None] * np.ones(2)
+
+    s = Scenario("disc", "t", (const(2.0), const(0.0)), duration=0.01)
+    _, controls, states = schedule(s, Whole(), np.zeros(2), 0.002, 5)
+    np.testing.assert_array_equal(states[:, 0], np.arange(6))
+    np.testing.assert_array_equal(controls[:, 0], 2.0 + np.arange(5))
+
+
+@pytest.mark.parametrize("robot", ["omni3", "diffdrive"])
+def test_sync_kinematics_gives_the_frames_and_velocities_of_mj_forward(robot):
+    """The runner's partial forward is mj_forward's own stages: equal floats."""
+    import mujoco
+
+    import wmr_mujoco
+    from wmr_mujoco.validation.adapters import base_pose, body_twist
+    from wmr_mujoco.validation.runner import sync_kinematics
+
+    model = wmr_mujoco.load(robot)
+    data = mujoco.MjData(model)
+    data.ctrl[:] = 1.0
+    mujoco.mj_step(model, data, 300)  # moving, in contact
+    full = mujoco.MjData(model)
+    for d in (full, data):
+        mujoco.mj_setState(model, d, np.r_[0.3, data.qpos, data.qvel],
+                           mujoco.mjtState.mjSTATE_TIME | mujoco.mjtState.mjSTATE_QPOS
+                           | mujoco.mjtState.mjSTATE_QVEL)
+    mujoco.mj_forward(model, full)
+    sync_kinematics(model, data)
+    np.testing.assert_array_equal(base_pose(model, data), base_pose(model, full))
+    np.testing.assert_array_equal(body_twist(model, data), body_twist(model, full))
+    np.testing.assert_array_equal(data.xpos, full.xpos)
+    np.testing.assert_array_equal(data.cvel, full.cvel)
+
+
+def test_a_step_is_redone_only_for_what_reads_it_and_records_the_same():
+    """omni3_reduced has no probe and no lateral wheel: its steps are not redone.
+
+    A probe that reads nothing forces the re-steps; every recorded time, pose and
+    analytic state and every judged row must come out the same (equal floats: the
+    recorded states are the rollout's, the re-step only feeds what reads it).
+    """
+    import dataclasses
+
+    from wmr_mujoco.sim.engine import simulate
+    from wmr_mujoco.validation.metrics import Trace
+    from wmr_mujoco.validation.runner import measure_metrics, prepare
+
+    seen = []
+
+    class Counting:
+        def observe(self, sample):
+            seen.append(sample.k)
+
+        def metrics(self):
+            return []
+
+    spec = get_spec("omni3_reduced")
+    s = dataclasses.replace(next(x for x in spec.scenarios if x.name == "translate+rotate"),
+                            duration=0.5)
+    probed = dataclasses.replace(spec, probes=(lambda *a: Counting(),))
+    out = []
+    for sp in (spec, probed):
+        prep = prepare(sp, s)
+        trace = Trace()
+        metrics = measure_metrics(prep, simulate(prep.model, prep.data, prep.controls), trace)
+        out.append((metrics, trace.arrays()))
+    assert seen, "the probe forces the re-steps"
+    assert out[0][0] == out[1][0]
+    for key in ("time", "sim", "analytic"):
+        np.testing.assert_array_equal(out[0][1][key], out[1][1][key])

@@ -1,5 +1,6 @@
 import math
 
+import numpy as np
 import pytest
 
 from wmr_mujoco.validation.signals import Piecewise, Sine, const, pulses
@@ -41,3 +42,23 @@ def test_bad_signals(call, match):
 def test_const_refuses_a_bad_value_or_ramp(value, ramp, match):
     with pytest.raises(ValueError, match=match):
         const(value, ramp)
+
+
+def test_on_gives_the_floats_of_a_call_at_every_time():
+    """``on`` is the scalar call elementwise: same arithmetic, so the same floats.
+
+    Times before, on and between knots, a step (two knots at one time) and a hold after
+    the last knot; the sine's libm and NumPy sin may differ in the last bit on some
+    CPUs, hence its 1e-15 relative tolerance.
+    """
+    from wmr_mujoco.validation.signals import Held
+
+    times = np.arange(4000) * 0.00125
+    signals = [Piecewise(((0.5, -1.0), (1.0, 2.0), (1.0, 3.0), (2.5, 0.25), (4.0, 0.25))),
+               const(0.3, 0.5), pulses((0.2, 0.7, 1.5), (1.0, 3.0, -2.0)),
+               Held(Piecewise(((0.0, 0.0), (2.0, 1.0))), 1.3)]
+    for s in signals:
+        np.testing.assert_array_equal(s.on(times), [s(t) for t in times])
+    for s in (Sine(0.4, 1.7, offset=0.1, phase=0.3), Held(Sine(1.0, 2.0), 3.0)):
+        np.testing.assert_allclose(s.on(times), [s(t) for t in times], rtol=1e-15,
+                                   atol=1e-15)

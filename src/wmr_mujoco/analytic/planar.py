@@ -71,3 +71,38 @@ def twist_step(pose: np.ndarray, twist: np.ndarray, dt: float) -> np.ndarray:
     dx, dy = (a * u - b * v) * dt, (b * u + a * v) * dt
     c, s = math.cos(psi), math.sin(psi)
     return np.array([x + c * dx - s * dy, y + s * dx + c * dy, psi + th])
+
+
+def twist_steps(pose: np.ndarray, twists: np.ndarray, dt: float) -> np.ndarray:
+    """Poses after each of ``len(twists)`` steps of :func:`twist_step`, computed at once.
+
+    The same floats as calling :func:`twist_step` step after step: every term is the
+    same arithmetic elementwise, and each running sum (``ψ + θ``, then
+    ``(x + c Δx) − s Δy`` and ``(y + s Δx) + c Δy`` in that order) is one sequential
+    ``np.cumsum`` over the terms interleaved as they are added.
+
+    Args:
+        pose: ``(x, y, ψ)`` at the start.
+        twists: (N, 3) body twists ``(u, v, r)``, each held over one step.
+        dt: s.
+
+    Returns:
+        (N + 1, 3) poses, the start first.
+    """
+    w = np.asarray(twists, float).reshape(-1, 3)
+    n = len(w)
+    u, v, th = w[:, 0], w[:, 1], w[:, 2] * dt
+    small = np.abs(th) < 1e-4
+    safe = np.where(small, 1.0, th)
+    a = np.where(small, 1.0 - th * th / 6.0, np.sin(safe) / safe)
+    b = np.where(small, th / 2.0 - th ** 3 / 24.0, (1.0 - np.cos(safe)) / safe)
+    dx, dy = (a * u - b * v) * dt, (b * u + a * v) * dt
+    out = np.empty((n + 1, 3))
+    out[:, 2] = np.cumsum(np.concatenate([[float(pose[2])], th]))
+    c, s = np.cos(out[:-1, 2]), np.sin(out[:-1, 2])
+    for j, (first, second) in enumerate(((c * dx, -(s * dy)), (s * dx, c * dy))):
+        terms = np.empty(2 * n + 1)
+        terms[0] = float(pose[j])
+        terms[1::2], terms[2::2] = first, second
+        out[:, j] = np.cumsum(terms)[::2]
+    return out

@@ -47,12 +47,13 @@ PEER_GOAL = 5.0
 #: main's defaults before issue 24 § 4 (commit f5c9b14), as overrides of today's: a
 #: record to compare with, not a setting of any robot. Keys are parameter fields,
 #: ``sim.<field>`` those of :class:`~wmr_mujoco.models.params.SimParams`.
-PREVIOUS_DEFAULTS: Mapping[str, Mapping[str, float]] = {
+PREVIOUS_DEFAULTS: Mapping[str, Mapping[str, float | str]] = {
     "disc": {},
     "bicycle": {"sim.floor_impedance": 0.0},
     "tricycle": {"sim.timestep": 0.002, "sim.floor_impedance": 0.0},
-    "omni3": {"floor_impedance": 0.0, "sim.timestep": 0.001, "sim.contact_timeconst": 0.002},
-    "omni3_reduced": {},
+    "omni3": {"floor_impedance": 0.0, "sim.timestep": 0.001, "sim.contact_timeconst": 0.002,
+              "jacobian": "auto"},
+    "omni3_reduced": {"floor_impedance": 0.0},
     "mecanum4": {"floor_impedance": 0.0, "sim.timestep": 0.004,
                  "sim.contact_timeconst": 0.008},
     "diffdrive": {"sim.timestep": 0.002, "sim.floor_impedance": 0.0},

@@ -55,11 +55,18 @@ class Adapter(Protocol):
         ...
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-        """The analytic state's quantities, read from the simulation."""
+        """The analytic state's quantities, read from the simulation.
+
+        It may read the state, frames, centres of mass and body velocities (the runner
+        computes those stages: :func:`~wmr_mujoco.validation.runner.sync_kinematics`),
+        not contacts, forces or sensors.
+        """
         ...
 
     # Optional: ``exact_step(x, u, dt) -> x⁺``, the exact solution of ``ẋ = rhs(x, u)`` over
     # ``dt`` with ``u`` held; the runner then uses it instead of an RK4 step.
+    # Optional: ``trajectory(x0, inputs, dt) -> (N + 1, n) states``, every step of the
+    # runner's schedule at once (vectorised): the same floats as its steps one by one.
 
 
 #: ``factory(scenario, model, params) -> Adapter`` (params: the robot's, defaults if None).

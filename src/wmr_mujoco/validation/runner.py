@@ -173,14 +173,20 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     The analytic model does not depend on the simulation, so the whole open-loop schedule
     is known before MuJoCo runs: ``u_k = u(k Δt)``, ``ctrl_k = controls(u_k, x_k)`` and
     ``x_{k+1} = RK4(x_k, u_k)``, or ``adapter.exact_step(x_k, u_k, Δt)`` where the adapter has
-    an exact step for a held input.
+    an exact step for a held input; ``adapter.trajectory(x_0, inputs, Δt)`` where it has
+    one (the same states, all steps at once).
 
     Returns:
         ``(inputs (N, m), controls (N, nu), analytic (N + 1, n))``.
     """
     x = np.asarray(x0, float)
-    step = getattr(adapter, "exact_step", None)  # where the adapter has one
     inputs = s.inputs_on(nstep, dt)  # u(k Δt), the floats of s.input_at(k Δt)
+    trajectory = getattr(adapter, "trajectory", None)  # every step at once, where it has one
+    if trajectory is not None:
+        states = np.asarray(trajectory(x, inputs, dt), float)
+        controls = [adapter.controls(u, xk) for u, xk in zip(inputs, states, strict=False)]
+        return inputs, np.asarray(controls), states
+    step = getattr(adapter, "exact_step", None)  # where the adapter has one
     controls, states = [], [x]
     for u in inputs:
         controls.append(adapter.controls(u, x))
@@ -275,8 +281,11 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
 
     Every :data:`RECORD_EVERY`-th step is redone from its stored start, so that contacts
     and frames belong to the configuration whose constraints produced the new
-    velocities; the robot's probes and the lateral-slip measurement see it there, and the
-    pose at the step's end is recorded beside the analytic state at the same time.
+    velocities; the robot's probes and the lateral-slip measurement see it there (a
+    robot without either has nothing to read there, and the step is not redone: the
+    simulation's own data were checked for warnings, its states for NaN), and the
+    pose at the step's end is recorded beside the analytic state at the same time (its
+    frames and velocities from :func:`sync_kinematics`).
 
     Raises:
         ValueError: the robot has no judge for the scenario's kind.
@@ -289,25 +298,17 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     probes: list[Probe] = [p for factory in spec.probes
                            if (p := factory(s, model, adapter, spec.targets)) is not None]
     trace.state_names, trace.state_units = adapter.state_names, adapter.state_units
-    dt = model.opt.timestep
     nstep = len(prep.controls)
+    restep = bool(probes or adapter.lateral_wheels)  # else nothing reads the redone step
     for k in range(nstep):
         if k % RECORD_EVERY != RECORD_EVERY - 1 and k != nstep - 1:
             continue
-        # The warm start is not part of the stored state: start the solver from zero so
-        # that the measurement does not depend on how the states were produced.
-        mujoco.mj_setState(model, data, states[k], STATE_SPEC)
-        data.qacc_warmstart[:] = 0.0
-        data.ctrl[:] = prep.controls[k]
-        mujoco.mj_step(model, data)
-        check_healthy(model, data)
-        trace.slip.append(lateral_slip(model, data, adapter.lateral_wheels))
-        sample = Sample(k, k * dt, model, data, prep.inputs[k], prep.controls[k],
-                        prep.analytic[k])
-        for probe in probes:
-            probe.observe(sample)
+        if restep:
+            _restep(prep, states, k, trace, probes)
+        else:
+            trace.slip.append(np.zeros(0))
         mujoco.mj_setState(model, data, states[k + 1], STATE_SPEC)
-        mujoco.mj_forward(model, data)
+        sync_kinematics(model, data)
         trace.time.append(data.time - s.settle)
         trace.sim.append(adapter.sim_state(model, data))
         trace.analytic.append(prep.analytic[k + 1])
@@ -317,6 +318,36 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     for probe in probes:
         metrics += probe.metrics()
     return s.opened(metrics)
+
+
+def _restep(prep: Prepared, states: np.ndarray, k: int, trace: Trace,
+            probes: Sequence[Probe]) -> None:
+    """Step ``k`` redone from its stored start: lateral slip and the probes see it."""
+    model, data, adapter = prep.model, prep.data, prep.adapter
+    # The warm start is not part of the stored state: start the solver from zero so
+    # that the measurement does not depend on how the states were produced.
+    mujoco.mj_setState(model, data, states[k], STATE_SPEC)
+    data.qacc_warmstart[:] = 0.0
+    data.ctrl[:] = prep.controls[k]
+    mujoco.mj_step(model, data)
+    check_healthy(model, data)
+    trace.slip.append(lateral_slip(model, data, adapter.lateral_wheels))
+    sample = Sample(k, k * model.opt.timestep, model, data, prep.inputs[k],
+                    prep.controls[k], prep.analytic[k])
+    for probe in probes:
+        probe.observe(sample)
+
+
+def sync_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+    """Frames, centres of mass and body velocities of the state in ``data``.
+
+    The stages of ``mj_forward`` that an adapter's ``sim_state`` reads (``mj_kinematics``,
+    ``mj_comPos``, ``mj_comVel``: poses, ``mj_objectVelocity``), the same floats as there,
+    without the collision and constraint stages it does not read.
+    """
+    mujoco.mj_kinematics(model, data)
+    mujoco.mj_comPos(model, data)
+    mujoco.mj_comVel(model, data)
 
 
 def run_all(work: Sequence[Job], progress: Callable[[str], None] | None = None,

@@ -237,13 +237,15 @@ class Scenario:
     def inputs_on(self, nstep: int, dt: float) -> np.ndarray:
         """(nstep, m) rows :meth:`input_at` ``(k dt)``, ``k = 0 .. nstep − 1``: the same floats.
 
-        The signals are evaluated at each time as there; the draw's factors once, and
-        the lead-in envelope ``min(1, max(0, t / T))`` elementwise, multiplied in the
-        same order.
+        The signals are evaluated at all times at once (their ``on``: the same arithmetic,
+        elementwise; a signal without it one time after the other); the draw's factors
+        once, and the lead-in envelope ``min(1, max(0, t / T))`` elementwise, multiplied in
+        the same order.
         """
-        times = [k * dt for k in range(nstep)]
-        u = np.array([[s(t) for s in self.inputs] for t in times], float)
-        u = u.reshape(nstep, len(self.inputs))
+        times = np.arange(nstep) * dt  # k Δt, each one product as there
+        u = np.empty((nstep, len(self.inputs)))
+        for j, signal in enumerate(self.inputs):
+            u[:, j] = signal.on(times) if hasattr(signal, "on") else [signal(t) for t in times]
         if not self.draw:
             return u
         ramp = self.draw.get(LEAD_IN)

@@ -6,6 +6,8 @@ import itertools
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 
 @dataclass(frozen=True)
 class Piecewise:
@@ -32,6 +34,21 @@ class Piecewise:
                 return float(u0 + (u1 - u0) * (t - t0) / (t1 - t0)) if t1 > t0 else float(u1)
         return float(knots[-1][1])
 
+    def on(self, times: np.ndarray) -> np.ndarray:
+        """Values at every time of ``times``: the floats of ``__call__``, elementwise.
+
+        Each time takes the first segment ``(t0, t1)`` with ``t < t1`` (the segments are
+        filled last to first, so the first one wins), the same arithmetic per element.
+        """
+        t = np.asarray(times, float)
+        knots = self.knots
+        out = np.full(t.shape, float(knots[-1][1]))
+        for (t0, u0), (t1, u1) in reversed(list(itertools.pairwise(knots))):
+            hit = t < t1
+            out[hit] = u0 + (u1 - u0) * (t[hit] - t0) / (t1 - t0) if t1 > t0 else float(u1)
+        out[t <= knots[0][0]] = float(knots[0][1])
+        return out
+
 
 @dataclass(frozen=True)
 class Sine:
@@ -51,6 +68,12 @@ class Sine:
         return self.offset + self.amplitude * math.sin(2 * math.pi * t / self.period
                                                        + self.phase)
 
+    def on(self, times: np.ndarray) -> np.ndarray:
+        """Values at every time of ``times`` (``__call__``'s arithmetic, elementwise)."""
+        t = np.asarray(times, float)
+        return self.offset + self.amplitude * np.sin(2 * math.pi * t / self.period
+                                                     + self.phase)
+
 
 @dataclass(frozen=True)
 class Held:
@@ -66,6 +89,10 @@ class Held:
     def __call__(self, t: float) -> float:
         """Value at time ``t``."""
         return self.signal(min(t, self.until))
+
+    def on(self, times: np.ndarray) -> np.ndarray:
+        """Values at every time of ``times``."""
+        return self.signal.on(np.minimum(np.asarray(times, float), self.until))
 
 
 Signal = Piecewise | Sine | Held

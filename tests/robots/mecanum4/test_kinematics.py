@@ -114,3 +114,30 @@ def test_a_ramped_runs_exact_step_is_what_rk4_on_its_rhs_approximates():
         y = adapter.exact_step(y, u * min(1.0, k / 500), 0.00125)
     np.testing.assert_allclose(y, x, rtol=0, atol=1e-12)
     assert np.linalg.norm(y[:2]) > 0.3  # it moved: the comparison is not of zeros
+
+
+@pytest.mark.parametrize("name", ["translate 45° (step)", "rotate (step)",
+                                  "translate+rotate (ramp)"])
+def test_trajectory_is_the_schedule_step_after_step(name):
+    """All steps at once = RK4 on rhs (a step run) or the exact arcs (a ramped run).
+
+    Same arithmetic in the same order; 1e-13 relative allows NumPy's and libm's sin/cos
+    to differ in the last bit on some CPUs (bit for bit on the reference machine).
+    """
+    import wmr_mujoco
+    from wmr_mujoco.analytic.integrate import rk4_step
+    from wmr_mujoco.validation.runner import make_adapter
+
+    s = run(name).members(0, 1)[0]  # a drawn member: scaled speeds
+    model = wmr_mujoco.load("mecanum4")
+    adapter = make_adapter(SPEC, s, model)
+    dt = model.opt.timestep
+    inputs = s.inputs_on(round(s.duration / dt), dt)
+    x = np.r_[0.1, -0.2, 0.3, 0.1, -0.2, 0.3, 0.1, -0.2, 0.3, 0.0][:len(adapter.state_names)]
+    ref = [x]
+    for u in inputs:
+        x = (adapter.exact_step(x, u, dt) if adapter.exact_step is not None
+             else rk4_step(adapter.rhs, x, u, dt))
+        ref.append(x)
+    np.testing.assert_allclose(adapter.trajectory(ref[0], inputs, dt), ref, rtol=1e-13,
+                               atol=1e-13)

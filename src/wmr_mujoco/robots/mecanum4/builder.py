@@ -189,6 +189,9 @@ def build(params: MecanumParams) -> mjcf.RootElement:
     R = p.wheel_radius
     root = common.new_root("mecanum4", p.sim)
     root.option.solver = p.solver
+    if p.jacobian != "auto":  # MuJoCo's default: the file says nothing
+        root.option.jacobian = p.jacobian
+    root.option.cone = p.cone
     if p.floor_impedance > 0.0:
         root.option.impratio = common.sliding_impratio(p.floor_impedance)
     roller = common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic.planar import twist_step, wrap_angle
+from wmr_mujoco.analytic.planar import twist_step, twist_steps, wrap_angle
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots.mecanum4 import collider, traction
@@ -136,6 +136,54 @@ class MecanumKinematics:
         nu = np.asarray(u, float)
         return np.concatenate([twist_step(x[:3], self.realised(nu), dt),
                                twist_step(x[3:6], nu, dt)])
+
+    def trajectory(self, x0: np.ndarray, inputs: np.ndarray, dt: float) -> np.ndarray:
+        """Every step's state at once: the floats of :attr:`exact_step` or RK4 on :meth:`rhs`.
+
+        A ramped run: :func:`~wmr_mujoco.analytic.planar.twist_steps` of ``ν̄(u_k)`` and
+        ``u_k``. A step run: the RK4 step of :meth:`rhs` written out over all steps. Its
+        right-hand side does not depend on the positions, and the headings and the clock
+        only on the clock, so every stage is elementwise arithmetic on the stage clocks
+        ``t``, ``t + Δt/2``, ``t + Δt/2``, ``t + Δt``, and each state the running sum
+        ``x_k + Δt/6 (k₁ + 2k₂ + 2k₃ + k₄)`` (one sequential ``np.cumsum``).
+
+        Returns:
+            (N + 1, n) states, ``x0`` first.
+        """
+        x0 = np.asarray(x0, float)
+        nu = np.asarray(inputs, float).reshape(-1, 3)
+        realised = np.array([self.realised(row) for row in nu]).reshape(-1, 3)
+        if self.step is None:
+            return np.concatenate([twist_steps(x0[:3], realised, dt),
+                                   twist_steps(x0[3:6], nu, dt)], axis=1)
+        n = len(nu)
+        h = dt / 6.0
+        ones = np.ones(n)
+        clock = np.cumsum(np.concatenate([[x0[-1]], h * (ones + 2.0 * ones + 2.0 * ones
+                                                         + ones)]))
+        stages = (clock[:-1], clock[:-1] + 0.5 * dt * ones, clock[:-1] + 0.5 * dt * ones,
+                  clock[:-1] + dt * ones)
+        step_twists = [np.stack([np.interp(t, self.step.time, self.step.twist[:, j])
+                                 for j in range(3)], axis=1) for t in stages]
+        out = np.empty((n + 1, len(x0)))
+        out[:, -1] = clock
+        for i, twists in enumerate((step_twists, [realised] * 4, [nu] * 4)):
+            rates = [tw[:, 2] for tw in twists]
+            heading = np.cumsum(np.concatenate([[x0[3 * i + 2]], h * (
+                rates[0] + 2.0 * rates[1] + 2.0 * rates[2] + rates[3])]))
+            psi = heading[:-1]
+            stage_psi = (psi, psi + 0.5 * dt * rates[0], psi + 0.5 * dt * rates[1],
+                         psi + dt * rates[2])
+            for j in range(2):
+                k = []
+                for ps, tw in zip(stage_psi, twists, strict=True):
+                    c, sn = np.cos(ps), np.sin(ps)
+                    k.append(c * tw[:, 0] - sn * tw[:, 1] if j == 0
+                             else sn * tw[:, 0] + c * tw[:, 1])
+                out[:, 3 * i + j] = np.cumsum(np.concatenate(
+                    [[x0[3 * i + j]], h * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3])]))
+            out[:, 3 * i + 2] = heading
+        return out
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """The ``base`` site's pose, once for each model (and the clock of a step run)."""

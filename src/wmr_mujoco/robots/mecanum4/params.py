@@ -61,6 +61,14 @@ class MecanumParams:
             shortens the traction-limited lag of a step; ``docs/mecanum.md`` §6), so it
             is not the default; the cost table in ``models/mecanum4/README.md``
             measures both.
+        jacobian: MuJoCo's constraint Jacobian and Newton Hessian storage, ``"auto"``
+            (MuJoCo's choice: sparse from 60 DoF, so sparse here), ``"dense"`` or
+            ``"sparse"``. Not a physics parameter (the same equations in another
+            storage); :mod:`wmr_mujoco.bench.solver_cost` times each.
+        cone: friction cone, ``"elliptic"`` (the default, no pyramidal creep) or
+            ``"pyramidal"``. A physics change: the pyramid's ``condim`` 3 square of
+            edges lets a tangential force reach ``μ f_n`` along the contact frame's
+            axes but only ``μ f_n / √2`` along their diagonals.
         drive: actuator settings (no steering).
         sim: simulation settings.
         floor_impedance: impedance ``d`` of the roller-floor pairs: 0 (the collision
@@ -96,6 +104,8 @@ class MecanumParams:
     roller_armature: float = 0.0
     roller_damping: float = 0.0
     solver: str = "Newton"
+    jacobian: str = "auto"
+    cone: str = "elliptic"
     drive: DriveParams = DriveParams(
         wheel_kv=2.0, wheel_armature=0.004, wheel_torque_limit=3.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.00125, contact_timeconst=0.005, floor_dampratio=0.5)
@@ -103,6 +113,8 @@ class MecanumParams:
 
     ROLLER_SHAPES = ("ellipsoid", "profile", "capsule", "sphere")
     SOLVERS = ("Newton", "PGS", "CG")
+    JACOBIANS = ("auto", "dense", "sparse")
+    CONES = ("elliptic", "pyramidal")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "sim.floor_impedance",
                                          *PAIRS_SET_IMPRATIO)
@@ -125,6 +137,8 @@ class MecanumParams:
         _check_count(self, "rollers_per_wheel", 6, 24)
         _check_choice(self, "roller_shape", self.ROLLER_SHAPES)
         _check_choice(self, "solver", self.SOLVERS)
+        _check_choice(self, "jacobian", self.JACOBIANS)
+        _check_choice(self, "cone", self.CONES)
         if self.roller_half_span >= math.pi / 3.0:
             raise ValueError(f"MecanumParams.roller_overlap = {self.roller_overlap!r} gives a "
                              f"roller half-span of {math.degrees(self.roller_half_span):.1f}°; "

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wmr_mujoco.analytic.planar import twist_step
+from wmr_mujoco.analytic.planar import twist_step, twist_steps
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams, params_or_default
 from wmr_mujoco.robots import requirements as req
@@ -104,6 +104,17 @@ class OmniKinematics:
         if self.world_frame:
             return x + dt * np.asarray(u, float)
         return twist_step(x, u, dt)
+
+    def trajectory(self, x0: np.ndarray, inputs: np.ndarray, dt: float) -> np.ndarray:
+        """Every step's pose at once: the floats of :meth:`exact_step` step after step.
+
+        World rates: the running sum ``x + Δt u_k`` (one sequential ``np.cumsum``); a body
+        twist: :func:`~wmr_mujoco.analytic.planar.twist_steps`.
+        """
+        u = np.asarray(inputs, float).reshape(-1, 3)
+        if self.world_frame:
+            return np.cumsum(np.concatenate([np.asarray(x0, float)[None], dt * u]), axis=0)
+        return twist_steps(x0, u, dt)
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """Pose of the ``base`` site."""

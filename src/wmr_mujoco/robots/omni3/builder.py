@@ -179,6 +179,11 @@ def build(params: OmniParams) -> mjcf.RootElement:
     p = params
     r = p.wheel_radius
     root = common.new_root("omni3", p.sim)
+    if p.solver != "Newton":  # MuJoCo's default: the file says nothing
+        root.option.solver = p.solver
+    if p.jacobian != "auto":  # MuJoCo's default: the file says nothing
+        root.option.jacobian = p.jacobian
+    root.option.cone = p.cone
     roller = common.add_roller_default(root, p.sim, p.roller_damping, p.roller_armature)
     if p.floor_impedance > 0.0:
         # The scene's explicit pairs (floor_pairs) make the roller contacts, and with no

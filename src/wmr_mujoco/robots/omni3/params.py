@@ -48,6 +48,19 @@ class OmniParams:
             of the roller half-thickness b.
         roller_armature: rotor inertia added to each roller joint, kg·m².
         roller_damping: viscous damping of each roller joint, N·m·s/rad.
+        solver: MuJoCo constraint solver, ``"Newton"`` (default), ``"PGS"`` or ``"CG"``
+            (PGS and CG stop at their own iteration limits short of Newton's solution;
+            :mod:`wmr_mujoco.bench.solver_cost` times and validates them).
+        jacobian: MuJoCo's constraint Jacobian and Newton Hessian storage, ``"sparse"``
+            (the default), ``"dense"`` or ``"auto"`` (MuJoCo's choice: dense below 60
+            DoF, so dense for omni3's 45). Not a physics parameter: the same equations in
+            another storage (the motion agrees to round-off); sparse is the cheaper at
+            this model's sparse mass matrix (a tree of 40 single hinges on one free
+            body): :mod:`wmr_mujoco.bench.solver_cost` times each and validates it.
+        cone: friction cone, ``"elliptic"`` (the default, no pyramidal creep) or
+            ``"pyramidal"``. A physics change: the pyramid's ``condim`` 3 square of
+            edges lets a tangential force reach ``μ f_n`` along the contact frame's
+            axes but only ``μ f_n / √2`` along their diagonals.
         drive: actuator settings (no steering).
         sim: simulation settings.
         floor_impedance: 0 (contact bits, the collision class's contact) or, in
@@ -69,6 +82,9 @@ class OmniParams:
     row_offset_ratio: float = 0.8
     roller_armature: float = 0.0
     roller_damping: float = 0.0
+    solver: str = "Newton"
+    jacobian: str = "sparse"
+    cone: str = "elliptic"
     drive: DriveParams = DriveParams(wheel_kv=2.0, wheel_armature=0.004,
                                      wheel_torque_limit=1.0, wheel_rate_limit=60.0)
     sim: SimParams = SimParams(timestep=0.00125, contact_timeconst=0.00375,
@@ -76,6 +92,9 @@ class OmniParams:
     floor_impedance: float = 0.001
 
     ROLLER_SHAPES = ("barrel", "ellipsoid", "capsule", "sphere")
+    SOLVERS = ("Newton", "PGS", "CG")
+    JACOBIANS = ("auto", "dense", "sparse")
+    CONES = ("elliptic", "pyramidal")
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "sim.floor_impedance",
                                          *PAIRS_SET_IMPRATIO)
@@ -92,6 +111,9 @@ class OmniParams:
         _check_range(self, "row_offset_ratio", 0.0, 3.0, low_inclusive=True)
         _check_count(self, "rollers_per_row", 2, 20)
         _check_choice(self, "roller_shape", self.ROLLER_SHAPES)
+        _check_choice(self, "solver", self.SOLVERS)
+        _check_choice(self, "jacobian", self.JACOBIANS)
+        _check_choice(self, "cone", self.CONES)
         max_r = self.wheel_distance * 0.9
         if self.wheel_radius >= max_r:
             raise ValueError(f"OmniParams.wheel_radius = {self.wheel_radius!r} is too large for "

@@ -21,6 +21,7 @@ class OmniReducedParams(OmniParams):
 
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "roller_shape", "roller_armature",
                                          "roller_damping", "sim.floor_impedance",
+                                         "solver", "jacobian", "cone",
                                          *PAIRS_SET_IMPRATIO)
     #: The step and contact time constant its tests derive their tolerances for (the
     #: capsule pairs' remedy keeps t_c at least ``builder.CAPSULE_PAIR_STEPS`` steps).
