@@ -43,7 +43,8 @@ def _same(a, b):
 @pytest.mark.parametrize("env_id", ["wmr/Disc-FollowPath-v0", "wmr/Whipple-StayUpright-v0",
                                     "wmr/DiffDrive-GoToGoal-v0", "wmr/Bicycle-FollowPath-v0",
                                     "wmr/Mecanum4-GoToGoal-v0",
-                                    "wmr/Omni3Reduced-FollowPath-v0"])
+                                    "wmr/Omni3Reduced-FollowPath-v0",
+                                    "wmr/SingleSteer-GoToGoal-v0", "wmr/Tricycle-GoToGoal-v0"])
 def test_native_equals_n_single_envs_with_the_same_seeds(env_id, mode):
     # Exact equality (no tolerance): world i's physics is the single environment's own
     # (its stepper's command map and mj_step calls on its own model), and the batched
@@ -51,7 +52,9 @@ def test_native_equals_n_single_envs_with_the_same_seeds(env_id, mode):
     # floating-point operations in the same order, so every observation (float32), reward,
     # flag and info must be bit for bit those of Gymnasium's SyncVectorEnv over n single
     # environments seeded alike. Light and heavy robots, each task kind, every autoreset
-    # mode, randomisation on, episodes ending (0.3 s) and so resets mixed with steps.
+    # mode, randomisation on, episodes ending (0.3 s) and so resets mixed with steps;
+    # steering servos batched (bicycle, single steer) or each world's own controller
+    # (tricycle).
     n = 3
     native = gym.make_vec(env_id, num_envs=n, autoreset_mode=mode, randomize=True, **SHORT)
     sync = gym.make_vec(env_id, num_envs=n, vectorization_mode="sync", randomize=True,

@@ -29,6 +29,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.envs.episode import Episode
+from wmr_mujoco.validation.command import RateCommand
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 
@@ -48,6 +49,30 @@ def each(fn: Callable[..., float], a: np.ndarray, b: np.ndarray | float | None =
     else:
         it = map(fn, a.tolist(), repeat(b, len(a)))
     return np.fromiter(it, float, len(a))
+
+
+def _servo(episode: Episode) -> tuple[np.ndarray, list[int], list[tuple[int, float]], float
+                                      ] | None:
+    """The servo channels and ``W`` of a steering robot's command map, or None.
+
+    ``(W, act rows, (channel, ω_max) per servo, T)`` where the command map is one that
+    :class:`~wmr_mujoco.validation.command.RateCommand`'s ``bind`` runs as servo channels
+    then ``ctrl = W u`` (no adjustment, a linear map); None for any other.
+    """
+    robot, st = episode.robot, episode.stepper
+    cmap = robot.spec.command
+    if robot.mode != "command" or st.controller is None or not isinstance(cmap, RateCommand) \
+            or type(cmap).bind is not RateCommand.bind or not cmap.servo \
+            or cmap.adjust is not None:
+        return None
+    w = cmap.matrix(cmap.analytic(robot.params))
+    if w is None:
+        return None
+    model = robot.model
+    acts = [int(model.actuator_actadr[model.actuator(s.actuator).id]) for s in cmap.servo]
+    channels = [(s.channel, limit) for s, limit in
+                zip(cmap.servo, cmap.rate_limits(model).tolist(), strict=True)]
+    return w, acts, channels, st.period
 
 
 class States(NamedTuple):
@@ -87,8 +112,10 @@ class Worlds:
         #: world's ``(W, model, data, ctrl)``; None: each stepper's own ``advance``.
         st0 = first.stepper
         self._inline = None
-        if st0._w is not None and st0.split and st0.nstep > 1:
-            self._inline = [(s._w, s.model, s.data, s._ctrl) for s in self.steppers]
+        self._servo = _servo(first)
+        w = st0._w if self._servo is None else self._servo[0]
+        if w is not None and st0.split and st0.nstep > 1:
+            self._inline = [(w, s.model, s.data, s._ctrl) for s in self.steppers]
             self._nstep = st0.nstep
         self._c, self._h = np.array(first._c), np.array(first._h)
         st = self.steppers
@@ -116,6 +143,16 @@ class Worlds:
     def push(self, actions: np.ndarray, active: np.ndarray | None = None) -> None:
         """Hold the command of ``actions`` (n, m), checked, in every world (or ``active``)."""
         commands = self._c + self._h * actions
+        if active is None and self._inline is not None and self._servo is not None:
+            # RateCommand.bind's servo channels: ω = clip((φ_cmd − φ_target) / T, ±ω_max),
+            # the targets φ_target read from each world's ``act``
+            _, acts, channels, period = self._servo
+            targets = np.array([d.act for d in self._datas])[:, acts]
+            u = commands.copy()
+            for k, (channel, limit) in enumerate(channels):
+                u[:, channel] = np.minimum(limit, np.maximum(
+                    -limit, (commands[:, channel] - targets[:, k]) / period))
+            commands = u
         if active is None and self._inline is not None:  # Stepper.advance, inlined
             matmul, step1, step, step2 = np.matmul, mujoco.mj_step1, mujoco.mj_step, \
                 mujoco.mj_step2
