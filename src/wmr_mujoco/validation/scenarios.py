@@ -245,7 +245,8 @@ class Scenario:
         times = np.arange(nstep) * dt  # k Δt, each one product as there
         u = np.empty((nstep, len(self.inputs)))
         for j, signal in enumerate(self.inputs):
-            u[:, j] = signal.on(times) if hasattr(signal, "on") else [signal(t) for t in times]
+            u[:, j] = (signal.on(times) if hasattr(signal, "on")
+                       else [signal(t) for t in times.tolist()])  # Python floats, as f(t) had
         if not self.draw:
             return u
         ramp = self.draw.get(LEAD_IN)
