@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.bench import solver_cost, solver_fidelity
-from wmr_mujoco.bench.default_speed import Rounds, _prepare
+from wmr_mujoco.bench.default_speed import Rounds, prepare_timed
 from wmr_mujoco.bench.solver_cost import DEFAULT, SETTINGS, Setting
 from wmr_mujoco.bench.solver_profile import run_drive
 from wmr_mujoco.models.loading import load
@@ -64,7 +64,7 @@ def test_sparse_and_dense_jacobians_give_the_same_motion():
     spec = get_spec("omni3")
     runs = []
     for jac in (mujoco.mjtJacobian.mjJAC_DENSE, mujoco.mjtJacobian.mjJAC_SPARSE):
-        t = _prepare(spec, None, 0.25)
+        t = prepare_timed(spec, None, 0.25)
         t.model.opt.jacobian = jac
         run_drive(t)
         runs.append(t.data.qvel[:6].copy())

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from wmr_mujoco.bench import solver_profile
-from wmr_mujoco.bench.default_speed import _prepare
+from wmr_mujoco.bench.default_speed import prepare_timed
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.robots.omni3.params import OmniParams
 
@@ -19,7 +19,7 @@ def test_profile_counts_the_cones_rows_per_contact(cone, rows):
     the collision class's contact (``floor_impedance`` 0, impratio 10): the floor pairs'
     impratio 1e4 throws a pyramidal robot off the floor (test_solver_cost)."""
     spec = get_spec("omni3")
-    t = _prepare(spec, OmniParams(cone=cone, floor_impedance=0.0), 0.2)
+    t = prepare_timed(spec, OmniParams(cone=cone, floor_impedance=0.0), 0.2)
     p = solver_profile.profile(t)
     assert p.ncon > 1.0  # rollers touch
     assert p.nefc == pytest.approx(rows * p.ncon, rel=1e-12)

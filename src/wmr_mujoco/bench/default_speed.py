@@ -86,7 +86,7 @@ def previous(spec: RobotSpec) -> RobotParams | None:
 
 
 @dataclasses.dataclass
-class _Timed:
+class Timed:
     """A robot settled at one setting, ready to be timed."""
 
     model: mujoco.MjModel
@@ -95,7 +95,7 @@ class _Timed:
     controls: np.ndarray  # one row per control period
 
 
-def _prepare(spec: RobotSpec, params: RobotParams | None, seconds: float) -> _Timed:
+def prepare_timed(spec: RobotSpec, params: RobotParams | None, seconds: float) -> Timed:
     """Load, settle and precompute the controls of the first ``seconds`` of a run.
 
     The controls are the adapter's for the schedule of member 0 of the family (seed 0)
@@ -117,10 +117,10 @@ def _prepare(spec: RobotSpec, params: RobotParams | None, seconds: float) -> _Ti
     controls = np.array([adapter.controls(u, x) for u in inputs])
     state = np.empty(mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_INTEGRATION))
     mujoco.mj_getState(model, data, state, mujoco.mjtState.mjSTATE_INTEGRATION)
-    return _Timed(model, data, state, controls)
+    return Timed(model, data, state, controls)
 
 
-def _wall(t: _Timed) -> float:
+def wall_seconds(t: Timed) -> float:
     """Wall time, s, of the prepared run in a bare one-thread ``mj_step`` loop."""
     m, d = t.model, t.data
     mujoco.mj_setState(m, d, t.state, mujoco.mjtState.mjSTATE_INTEGRATION)
@@ -138,11 +138,11 @@ def _wall(t: _Timed) -> float:
 def real_time_factors(spec: RobotSpec, settings: Sequence[RobotParams | None],
                       how: Rounds) -> list[float]:
     """Real-time factor of each setting, timed in alternating rounds; median of rounds."""
-    prepared = [_prepare(spec, p, how.seconds) for p in settings]
+    prepared = [prepare_timed(spec, p, how.seconds) for p in settings]
     walls: list[list[float]] = [[] for _ in settings]
     for _ in range(how.rounds):
         for k, t in enumerate(prepared):
-            walls[k].append(_wall(t))
+            walls[k].append(wall_seconds(t))
     return [len(t.controls) * CONTROL_PERIOD / float(np.median(w))
             for t, w in zip(prepared, walls, strict=True)]
 

@@ -46,7 +46,7 @@ from collections.abc import Sequence
 import mujoco
 import numpy as np
 
-from wmr_mujoco.bench.default_speed import RTF_GOAL, Rounds, _prepare, _Timed, _wall
+from wmr_mujoco.bench.default_speed import RTF_GOAL, Rounds, Timed, prepare_timed, wall_seconds
 from wmr_mujoco.bench.solver_profile import profile, profile_text, run_drive
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.robots import get_spec
@@ -172,7 +172,7 @@ def _options(model: mujoco.MjModel) -> tuple[float, ...]:
             model.opt.disableflags)
 
 
-def contacts(t: _Timed) -> float:
+def contacts(t: Timed) -> float:
     """Mean contacts per step over the prepared drive (untimed; a divergence raises)."""
     n: list[int] = []
     run_drive(t, lambda d: n.append(d.ncon))
@@ -185,10 +185,10 @@ def costs(spec: RobotSpec, settings: Sequence[Setting], how: Rounds) -> list[Cos
 
     A setting whose run diverges is dropped from the later rounds and reported.
     """
-    prepared: list[_Timed | None] = []
+    prepared: list[Timed | None] = []
     touching, errors = [], [""] * len(settings)
     for k, s in enumerate(settings):
-        t = _prepare(spec, None, how.seconds)
+        t = prepare_timed(spec, None, how.seconds)
         before = _options(t.model)
         s.apply(t.model)
         if k and _options(t.model) == before:  # e.g. "jacobian auto" where auto is sparse
@@ -212,7 +212,7 @@ def costs(spec: RobotSpec, settings: Sequence[Setting], how: Rounds) -> list[Cos
             if t is None or errors[k]:
                 continue
             try:
-                walls[k].append(_wall(t))
+                walls[k].append(wall_seconds(t))
             except Exception as err:  # a diverging setting is a row of the table
                 errors[k], prepared[k] = f"{type(err).__name__}: {err}", None
     if errors[0]:
@@ -230,7 +230,7 @@ def costs(spec: RobotSpec, settings: Sequence[Setting], how: Rounds) -> list[Cos
     return out
 
 
-def spec_dt(t: _Timed | None) -> float:
+def spec_dt(t: Timed | None) -> float:
     """The prepared model's timestep."""
     assert t is not None
     return float(t.model.opt.timestep)
@@ -297,7 +297,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     how = Rounds(1.0, 2) if args.quick else Rounds(2.0, 5)
     sections, table, ceilings = [], [HEADER], []
     for spec in specs:
-        prof = profile(_prepare(spec, None, how.seconds), how.rounds)
+        prof = profile(prepare_timed(spec, None, how.seconds), how.rounds)
         sections.append(profile_text(spec.name, prof))
         print(sections[-1], flush=True)
         cs = costs(spec, SETTINGS, how)

@@ -16,7 +16,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from wmr_mujoco.bench.default_speed import _Timed
+from wmr_mujoco.bench.default_speed import Timed
 from wmr_mujoco.sim.stepped_inputs import CONTROL_PERIOD
 
 #: MuJoCo's timers of one step's stages, in the order of ``mj_step``.
@@ -55,7 +55,7 @@ class Profile:
         return self.us["STEP"] / (self.us["STEP"] - self.us["CONSTRAINT"])
 
 
-def run_drive(t: _Timed, per_step: Any = None) -> int:
+def run_drive(t: Timed, per_step: Any = None) -> int:
     """Run the prepared drive from its settled state; ``per_step(data)`` after each step."""
     m, d = t.model, t.data
     mujoco.mj_setState(m, d, t.state, mujoco.mjtState.mjSTATE_INTEGRATION)
@@ -69,7 +69,7 @@ def run_drive(t: _Timed, per_step: Any = None) -> int:
     return per * len(t.controls)
 
 
-def profile(t: _Timed, rounds: int = 1) -> Profile:
+def profile(t: Timed, rounds: int = 1) -> Profile:
     """MuJoCo's timers and solver counts over the prepared drive.
 
     The drive runs ``rounds`` times from the same settled state; each stage's µs per step
