@@ -44,6 +44,16 @@ def _states(fakes):
                   np.zeros((len(fakes), 0)), extra)
 
 
+def _reset(tasks, arrays, starts):
+    """Each world at rest at its start: the scalar task's first observation (a full
+    search, as at a reset) and the arrays loaded from the same state."""
+    states = [Fake(tuple(s.tolist()), (0.0, 0.0, 0.0), {}) for s in starts]
+    for i, task in enumerate(tasks):
+        task.observe(states[i])
+        arrays.load(i, states[i])
+    return states
+
+
 def _compare(tasks, arrays, prev, new, actions, dt):
     out = np.zeros((len(tasks), tasks[0].size))
     terms, success, failure = arrays.step(_states(new), actions, dt, out)
@@ -68,10 +78,7 @@ def test_follow_path_arrays_equal_the_scalar_task_far_walks_included(robot):
     tasks, starts = _tasks("FollowPath", robot, n, 3)
     arrays = ARRAYS["FollowPath"](tasks)
     rng = np.random.default_rng(4)
-    prev = [Fake(tuple(s.tolist()), (0.0, 0.0, 0.0), {}) for s in starts]
-    for i, task in enumerate(tasks):
-        task.observe(prev[i])  # the first projection (a full search), as at a reset
-        arrays.load(i, prev[i])
+    prev = _reset(tasks, arrays, starts)
     # Arc-length jumps per step: small, many segments forward (past the first pass's
     # four segments), backward, and beyond the path's end (the look-ahead clipped).
     s_now = np.array([task.project(p).s for task, p in zip(tasks, prev, strict=True)])
@@ -87,10 +94,7 @@ def test_go_to_goal_arrays_equal_the_scalar_task():
     n, dt = 6, 0.02
     tasks, starts = _tasks("GoToGoal", "diffdrive", n, 5)
     arrays = ARRAYS["GoToGoal"](tasks)
-    prev = [Fake(tuple(s.tolist()), (0.0, 0.0, 0.0), {}) for s in starts]
-    for i, task in enumerate(tasks):
-        task.observe(prev[i])
-        arrays.load(i, prev[i])
+    prev = _reset(tasks, arrays, starts)
     rng = np.random.default_rng(6)
     for k in range(6):
         # last steps: at the goal (success), then far outside the arena (failure)
