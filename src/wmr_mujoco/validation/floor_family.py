@@ -69,6 +69,7 @@ STEP_WINDOW = CONTROL_PERIOD
 #: Its judged metrics' names (a robot's entry may declare one open, ``RobotSpec.open_targets``).
 AFTER_STEP = f"wheel samples off the floor, first {STEP_WINDOW:g} s after the step from rest"
 OVER_RUN = f"wheel samples off the floor, {DURATION:g} s of random steps"
+DEPTH = "deepest wheel penetration into the floor"
 #: Members judged per seed (issue 24: at least 20 for a dynamic family).
 DRAWS = 20
 #: Varied: radians added to every wheel joint's start angle (a full turn).
@@ -252,8 +253,7 @@ def measure(spec: RobotSpec, s: Scenario, params: RobotParams | None = None
     return MeasurementResult(
         [Metric(AFTER_STEP, after_step, "%", STEP_TARGET),
          Metric(OVER_RUN, whole, "%", RUN_TARGET),
-         Metric("deepest wheel penetration into the floor", 1e3 * reading.max_depth, "mm",
-                DEPTH_TARGET),
+         Metric(DEPTH, 1e3 * reading.max_depth, "mm", DEPTH_TARGET),
          Metric("largest tilt of the chassis", tilt, "deg",
                 note="reported: a robot that tips over lifts its wheels for real")],
         [Series("wheels off the floor", t, off, "s", "%")])

@@ -101,11 +101,23 @@ COMMAND = RateCommand(("v", "front_steer", "rear_steer"), ("m/s", "rad", "rad"),
                       kinematics=lambda p: DoubleSteerKinematics(
                           params_or_default(p, DoubleSteerParams)))
 
-#: Over its random steps a draw rolls the robot over (the chassis tilt reported beside
-#: reaches a half turn): its wheels leave the floor for real, not by a contact artefact.
-FLOOR_OPEN = {floor_family.NAME: {floor_family.OVER_RUN: (
-    "a draw tips the robot over under a full steering step at speed (chassis tilt, "
-    "reported beside): its wheels leave the floor for real")}}
+#: Over its random steps a draw may roll the robot over (the chassis tilt reported beside
+#: reaches a half turn). The random steering rates walk the rear steering to its joint
+#: limit, where one ICR asks the rear wheel for ``v₁ cos β₁ / cos β₂``, several times the
+#: front's speed, reversed from one control period to the next; the chassis, whose CoM
+#: lies between the wheels' line and the caster, rolls over about that line on the side
+#: away from the caster. Physics, not a contact artefact: its wheels leave the floor for
+#: real, and the robot, upside down, lands on its wheels' tops, an impact that presses a
+#: wheel deeper than the driving contact does (the draws that stay upright keep within
+#: the bound: tests/robots/double_steer/test_double_steer.py).
+ROLL_OVER = ("a draw rolls the robot over (chassis tilt, reported beside): the rear "
+             "steering at its limit, one ICR asks the rear wheel for several times the "
+             "front's speed, reversed every control period")
+FLOOR_OPEN = {floor_family.NAME: {
+    floor_family.OVER_RUN: f"{ROLL_OVER}; its wheels leave the floor for real",
+    floor_family.DEPTH: f"{ROLL_OVER}; upside down, it lands on its wheels' tops, an "
+                        "impact, not the driving contact (draws that stay upright keep "
+                        "within the bound)"}}
 
 SPEC = RobotSpec(
     name=NAME,
