@@ -191,7 +191,7 @@ SCENARIOS = (
     # wmr_mujoco.bench.family_spread omni3): 20 draws.
     Scenario(NAME, "rotate", twist_inputs((0.0, 0.0, YAW_RATE)), family=WIDE_FAMILY),
     Scenario(NAME, "translate+rotate", twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE)),
-             family=KINEMATIC_FAMILY),
+             family=WIDE_FAMILY),
     Scenario(NAME, "square with rotation", square_with_rotation(), world_frame=True,
              family=WIDE_FAMILY, open_targets=SQUARE_OPEN),
     *(Scenario(NAME, s.name, kind=ScenarioKind.MEASUREMENT, evaluate=dynamics.evaluate_step,
