@@ -111,6 +111,15 @@ RAMP_OPEN = {"worst position error": "at the default floor pairs the ramped diag
 ROTATE_STEP_OPEN = {"worst heading error": "the family's worst draws start near a roller "
                     "hand-over at the higher yaw rates; the step model averages the roller "
                     "contact over the pitch (spread in the families table)"}
+#: So is the ramped rotation's: the ramp does not remove it. Its draws at the higher yaw
+#: rates that start just past a roller hand-over drift in heading all run long (a small
+#: steady yaw-rate deficit against the model), while their neighbours a few milliradians
+#: of start angle away keep within half the target; the family's worst thus crosses 1°
+#: at some seeds and not at others (tests/robots/mecanum4/test_rotation_family.py).
+ROTATE_RAMP_OPEN = {"worst heading error": "draws at the higher yaw rates that start just "
+                    "past a roller hand-over drift in heading all run long, which the "
+                    "kinematic model, averaging the roller contact over the pitch, leaves "
+                    "out; the family's worst draws miss it (spread in the families table)"}
 
 
 def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
@@ -131,11 +140,12 @@ def turning(ramp: float, tag: str) -> tuple[Scenario, ...]:
     return (Scenario(NAME, f"translate+rotate ({tag})",
                      twist_inputs((SPEED, 0.0, 0.5 * YAW_RATE), ramp), duration=TURN_DURATION,
                      family=KINEMATIC_FAMILY),
-            # Its spread is not small (bench.family_spread): 20 draws; stepped, its
-            # heading requirement is open over them (ROTATE_STEP_OPEN).
+            # Its spread is not small (bench.family_spread): 20 draws; stepped or ramped,
+            # its heading requirement is open over them (ROTATE_STEP_OPEN,
+            # ROTATE_RAMP_OPEN).
             Scenario(NAME, f"rotate ({tag})", twist_inputs((0.0, 0.0, YAW_RATE), ramp),
                      duration=TURN_DURATION, family=GROUP_FAMILY,
-                     open_targets={} if ramp else ROTATE_STEP_OPEN))
+                     open_targets=ROTATE_RAMP_OPEN if ramp else ROTATE_STEP_OPEN))
 
 
 def kinematic_runs() -> tuple[Scenario, ...]:
