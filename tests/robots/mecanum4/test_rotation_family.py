@@ -1,7 +1,8 @@
 """The ramped rotation's heading target is open: its family's worst draws cross 1°.
 
-At 1.19 times the yaw rate, a start angle just past a roller hand-over (12.5 mrad into
-the 393 mrad pitch) drifts in heading all run long and ends beyond the 1° requirement
+At 1.19 times the yaw rate, a start angle 12.5 mrad into the 393 mrad roller pitch (at
+the zero angle a roller's middle is under each wheel) drifts in heading all run long
+and ends beyond the 1° requirement
 (``wmr validate mecanum4 --scenario "rotate (ramp)" --seed 1179`` judged such a draw,
 1.003°); 7.5 mrad earlier, the same yaw rate keeps within half of it. A family whose
 worst depends on whether a draw lands in that narrow band of start angles passes or
@@ -38,7 +39,7 @@ def test_the_ramped_rotation_opens_only_its_heading_target():
     assert set(s.open_targets) == {HEADING} == set(mecanum4.ROTATE_RAMP_OPEN)
 
 
-def test_a_start_just_past_a_hand_over_drifts_past_the_requirement():
+def test_a_start_just_past_a_pitch_multiple_drifts_past_the_requirement():
     near, before = _heading_runs([0.0125, 0.005])
     worst = {r.scenario.draw[WHEEL_PHASE]: next(x.value for x in r.rows if x.metric == HEADING)
              for r in (near, before)}

@@ -32,6 +32,7 @@ from wmr_mujoco.robots.roller_wheels import (
     twist_inputs,
 )
 from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.validation import floor_family
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation import variations as var
 from wmr_mujoco.validation.adapters import Adapter
@@ -112,14 +113,16 @@ ROTATE_STEP_OPEN = {"worst heading error": "the family's worst draws start near 
                     "hand-over at the higher yaw rates; the step model averages the roller "
                     "contact over the pitch (spread in the families table)"}
 #: So is the ramped rotation's: the ramp does not remove it. Its draws at the higher yaw
-#: rates that start just past a roller hand-over drift in heading all run long (a small
+#: rates that start a few milliradians past a multiple of the roller pitch (a roller's
+#: middle under each wheel at the zero angle) drift in heading all run long (a small
 #: steady yaw-rate deficit against the model), while their neighbours a few milliradians
 #: of start angle away keep within half the target; the family's worst thus crosses 1°
 #: at some seeds and not at others (tests/robots/mecanum4/test_rotation_family.py).
-ROTATE_RAMP_OPEN = {"worst heading error": "draws at the higher yaw rates that start just "
-                    "past a roller hand-over drift in heading all run long, which the "
-                    "kinematic model, averaging the roller contact over the pitch, leaves "
-                    "out; the family's worst draws miss it (spread in the families table)"}
+ROTATE_RAMP_OPEN = {"worst heading error": "draws at the higher yaw rates that start a few "
+                    "milliradians past a multiple of the roller pitch drift in heading all "
+                    "run long, which the kinematic model, averaging the roller contact over "
+                    "the pitch, leaves out; the family's worst draws miss it (spread in the "
+                    "families table)"}
 
 
 def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
@@ -194,6 +197,17 @@ COMMAND = RateCommand(("u", "v", "r"), ("m/s", "m/s", "rad/s"),
                       kinematics=lambda p: kinematics.MecanumKinematics(
                           params_or_default(p, MecanumParams)))
 
+#: The random steps' start-up requirement is open over its family: a draw whose wheels
+#: start at a roller hand-over (half a roller pitch from a roller's centre), where the
+#: contact passes from one roller to the next, may lift a wheel for a few milliseconds
+#: after a large step from rest; the same step a quarter pitch away keeps every wheel
+#: down (tests/robots/mecanum4/test_floor_start.py). Over the family's start angles the
+#: worst draws miss 1 % at some seeds, not at others.
+FLOOR_OPEN = {floor_family.NAME: {floor_family.AFTER_STEP: (
+    "a draw whose wheels start at a roller hand-over lifts a wheel for a few "
+    "milliseconds after a large step from rest; a quarter pitch away the same step "
+    "keeps every wheel down (spread in the families table)")}}
+
 SPEC = RobotSpec(
     name=NAME,
     description="four mecanum wheels (O layout), each with 16 passive ideal-profile "
@@ -206,7 +220,7 @@ SPEC = RobotSpec(
     probes=(ramp_probes,),
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="translate+rotate (ramp)",
     bench_scenario="translate+rotate (ramp)", render_scenario="translate+rotate (ramp)",
-    scene_extras=builder.floor_pairs, command=COMMAND,
+    scene_extras=builder.floor_pairs, command=COMMAND, open_targets=FLOOR_OPEN,
     # Its translations at SPEED in any direction, its turns at up to YAW_RATE.
     command_range=(SPEED, SPEED, YAW_RATE),
     learning=Learning("Mecanum4", scale=1.0, max_curvature=1.5, bands=NO_RADIUS_BANDS),
