@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from itertools import repeat
+from operator import add, sub
 from typing import NamedTuple
 
 import mujoco
@@ -32,6 +33,8 @@ from wmr_mujoco.envs.episode import Episode
 from wmr_mujoco.validation.command import RateCommand
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
+#: ``(u, v, r)``'s columns in ``mj_objectVelocity``'s ``(ω, v)``.
+_UVR = np.array([3, 4, 2])
 
 
 def each(fn: Callable[..., float], a: np.ndarray, b: np.ndarray | float | None = None
@@ -175,23 +178,25 @@ class Worlds:
         Raises:
             SimulationDivergedError: a world's physics diverged.
         """
-        warned = np.array(self._warnings).any(axis=1)
-        if warned.any():
-            for i in np.flatnonzero(warned).tolist():
-                self.steppers[i].reader.check()
+        if np.count_nonzero(np.concatenate(self._warnings)):
+            for i, w in enumerate(self._warnings):
+                if w.any():
+                    self.steppers[i].reader.check()
         objvel = mujoco.mj_objectVelocity
         for args in self._objvel:
             objvel(*args, 1)
         pos = np.array(self._xpos)
         mat = np.array(self._xmat)
-        h = self.heading
-        psi = h + each(math.remainder, each(math.atan2, mat[:, 3], mat[:, 0]) - h, math.tau)
+        # ψ = ψ₋ + remainder(atan2(R₁₀, R₀₀) − ψ₋, 2π) on floats, in one pass (a C loop)
+        h = self.heading.tolist()
+        psi = np.fromiter(map(add, h, map(math.remainder, map(sub, map(
+            math.atan2, mat[:, 3].tolist(), mat[:, 0].tolist()), h), repeat(math.tau))),
+            float, self.n)
         self.heading = psi
-        time = np.fromiter([d.time for d in self._datas], float, self.n) - self.t0
-        vel = self._vel
+        time = np.array([d.time for d in self._datas]) - self.t0
         extra: dict[str, np.ndarray] = {}
         if self._extras is not None:
             rows = [dict(self._extras(s.model, s.data)) for s in self.steppers]
             extra = {k: np.array([r[k] for r in rows]) for k in rows[0]}
-        return States(time, pos[:, 0], pos[:, 1], psi, vel[:, [3, 4, 2]],
+        return States(time, pos[:, 0], pos[:, 1], psi, self._vel[:, _UVR],
                       np.array(self._qvel)[:, self._rows], extra)
