@@ -49,9 +49,11 @@ S, X, Y, H, GX, GY, IDS, DS, DH = range(9)
 #: The walk's window: segments ``k − BACK … k + AHEAD`` of each world's last segment ``k``.
 BACK, AHEAD = 2, 5
 WINDOW = np.arange(-BACK, AHEAD + 1)
-#: Columns of a window where a walk may go on beyond it (its first and last).
-EDGE = np.zeros(BACK + AHEAD + 1, np.bool_)
-EDGE[[0, -1]] = True
+#: The walk's end column by ``(forward, backward)`` steps (backward only if no forward
+#: step), and whether it may go on beyond the window (its first or last column).
+END = np.array([[BACK + f if f else BACK - b for b in range(BACK + 1)]
+                for f in range(AHEAD + 1)], np.intp)
+EDGE = (END == 0) | (END == BACK + AHEAD)
 #: The look-ahead's window: samples ``g − 1 … g + 2`` of a guess ``g``; a count of samples
 #: ``≤ q`` of 0 or 4 leaves ``q`` outside it.
 LOOK = np.arange(4)
@@ -64,8 +66,8 @@ class PathArrays(TaskArrays):
     """:class:`~wmr_mujoco.envs.tasks.follow.FollowPath` over n worlds (module docstring).
 
     Per world: ``here`` (the flat column of its last segment), ``s`` (its last ``s*``),
-    ``base`` (the flat column of its sample 0), ``last`` (of its last segment), ``send``
-    (its path's last ``s``) and ``inv_spacing`` (samples per m: the look-ahead's guess).
+    ``base`` (the flat column of its sample 0), ``send`` (its path's last ``s``) and
+    ``inv_spacing`` (samples per m: the look-ahead's guess).
     """
 
     def __init__(self, tasks: Sequence[Task]) -> None:
@@ -77,10 +79,14 @@ class PathArrays(TaskArrays):
         self.here = np.zeros(n, np.intp)
         self.s = np.zeros(n)
         self.base = np.zeros(n, np.intp)
-        self.last = np.zeros(n, np.intp)
         self.send = np.zeros(n)
         self.inv_spacing = np.zeros(n)
         self._rows = np.arange(n)
+        #: Per world (a column each): the flat columns of sample −1, of the sample after the
+        #: last segment and of the last segment (the look-ahead's window and clip).
+        self._before = np.zeros((n, 1), np.intp)
+        self._after = np.zeros((n, 1), np.intp)
+        self._last = np.zeros((n, 1), np.intp)
         # the comparisons of neighbouring columns, each with a stop column preset True
         self._ge = np.ones((n, BACK + AHEAD + 1), np.bool_)
         self._le = np.ones((n, BACK + AHEAD + 1), np.bool_)
@@ -100,9 +106,10 @@ class PathArrays(TaskArrays):
             walk[:, :, old:] = walk[:, :, old - 1:old]  # the last segment's copies
             samples[:, :, :old] = self.samples.reshape(9, n, old)
             shift = self._rows * (width - old)
-            self.here += shift
-            self.base += shift
-            self.last += shift
+            for a in (self.here, self.base):
+                a += shift
+            for a in (self._before, self._after, self._last):
+                a += shift[:, None]
         self.width = width
         self.walk = walk.reshape(5, n * width)
         self.samples = samples.reshape(9, n * width)
@@ -135,9 +142,10 @@ class PathArrays(TaskArrays):
         self.here[i] = base + task._proj[2]
         self.s[i] = proj.s
         self.base[i] = base
-        self.last[i] = base + size - 2
         self.send[i] = s[-1]
         self.inv_spacing[i] = (size - 1) / s[-1] if s[-1] > 0 else 0.0
+        self._before[i], self._after[i] = base - 1, base + size - 1
+        self._last[i] = base + size - 2
 
     def _walk(self, x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``(flat column of the segment, t)`` per world: the scalar ``_walk`` (docstring)."""
@@ -145,7 +153,8 @@ class PathArrays(TaskArrays):
         ax, ay, dx, dy, inv = self.walk[:, cols]
         px, py = x[:, None], y[:, None]
         t = ((px - ax) * dx + (py - ay) * dy) * inv
-        t = np.where(t < 0.0, 0.0, np.where(t > 1.0, 1.0, t))
+        np.copyto(t, 0.0, where=t < 0.0)  # clip: 0 if t < 0, 1 if t > 1 (-0.0, NaN kept)
+        np.copyto(t, 1.0, where=t > 1.0)
         ex, ey = ax + t * dx - px, ay + t * dy - py
         d = ex * ex + ey * ey
         ge, le = self._ge, self._le
@@ -153,10 +162,10 @@ class PathArrays(TaskArrays):
         np.greater_equal(d[:, :-1], d[:, 1:], out=le[:, 1:])  # backward: stop before c
         forward = ge[:, BACK:].argmax(axis=1)
         backward = le[:, BACK::-1].argmax(axis=1)
-        col = np.where(forward, forward + BACK, BACK - backward)
+        col = END[forward, backward]
         rows = self._rows
         here, t = cols[rows, col], t[rows, col]
-        far = EDGE[col]
+        far = EDGE[forward, backward]
         if far.tobytes().count(1):  # walks that may go on: the scalar walk
             for w in np.flatnonzero(far).tolist():
                 i, t[w] = _walk(self.tasks[w]._segments, float(x[w]), float(y[w]),
@@ -168,14 +177,14 @@ class PathArrays(TaskArrays):
         """Flat columns of ``min(bisect_right(s, q) − 1, last segment)``, q (n, …) ≥ 0."""
         guess = (q * self.inv_spacing[:, None]).astype(np.intp)  # ≥ 0
         # the window's first sample, kept inside the table whatever the guess
-        lo = np.minimum(guess + (self.base[:, None] - 1), self.last[:, None] + 1)
+        lo = np.minimum(guess + self._before, self._after)
         count = (self.samples[S][lo[..., None] + LOOK] <= q[..., None]).sum(axis=-1)
         k = lo + count - 1
         outside = OUTSIDE[count]
         if outside.tobytes().count(1):
             for w, j in zip(*np.nonzero(outside), strict=True):
                 k[w, j] = self.base[w] + bisect_right(self.tasks[w]._s, float(q[w, j])) - 1
-        return np.minimum(k, self.last[:, None])
+        return np.minimum(k, self._last)
 
     def step(self, s: States, actions: np.ndarray, dt: float, out: np.ndarray) -> Step:
         """The reward terms and outcome of every world's step to ``s`` (block in ``out``)."""
