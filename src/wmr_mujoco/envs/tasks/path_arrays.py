@@ -48,7 +48,7 @@ AX, AY, DX, DY, INV = range(5)
 S, X, Y, H, GX, GY, IDS, DS, DH = range(9)
 #: The walk's window: segments ``k − BACK … k + AHEAD`` of each world's last segment ``k``.
 BACK, AHEAD = 2, 5
-WINDOW = np.arange(-BACK, AHEAD + 1)
+WINDOW = np.arange(-BACK, AHEAD + 1)[:, None]
 #: The walk's end column by ``(forward, backward)`` steps (backward only if no forward
 #: step), and whether it may go on beyond the window (its first or last column).
 END = np.array([[BACK + f if f else BACK - b for b in range(BACK + 1)]
@@ -56,7 +56,7 @@ END = np.array([[BACK + f if f else BACK - b for b in range(BACK + 1)]
 EDGE = (END == 0) | (END == BACK + AHEAD)
 #: The look-ahead's window: samples ``g − 1 … g + 2`` of a guess ``g``; a count of samples
 #: ``≤ q`` of 0 or 4 leaves ``q`` outside it.
-LOOK = np.arange(4)
+LOOK = np.arange(4).reshape(4, 1, 1)
 OUTSIDE = np.array([True, False, False, False, True])
 #: Padding columns before and after each world's samples.
 PAD, PAD_AFTER = BACK, AHEAD
@@ -88,8 +88,8 @@ class PathArrays(TaskArrays):
         self._after = np.zeros((n, 1), np.intp)
         self._last = np.zeros((n, 1), np.intp)
         # the comparisons of neighbouring columns, each with a stop column preset True
-        self._ge = np.ones((n, BACK + AHEAD + 1), np.bool_)
-        self._le = np.ones((n, BACK + AHEAD + 1), np.bool_)
+        self._ge = np.ones((BACK + AHEAD + 1, n), np.bool_)
+        self._le = np.ones((BACK + AHEAD + 1, n), np.bool_)
         self.width = 0  #: columns per world
         self.walk = np.zeros((5, 0))
         self.samples = np.zeros((9, 0))
@@ -148,23 +148,26 @@ class PathArrays(TaskArrays):
         self._last[i] = base + size - 2
 
     def _walk(self, x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(flat column of the segment, t)`` per world: the scalar ``_walk`` (docstring)."""
-        cols = self.here[:, None] + WINDOW
+        """``(flat column of the segment, t)`` per world: the scalar ``_walk`` (docstring).
+
+        Window first (rows: the window's segments, columns: the worlds), so that a world's
+        ``x`` and ``y`` broadcast along rows.
+        """
+        cols = WINDOW + self.here
         ax, ay, dx, dy, inv = self.walk[:, cols]
-        px, py = x[:, None], y[:, None]
-        t = ((px - ax) * dx + (py - ay) * dy) * inv
+        t = ((x - ax) * dx + (y - ay) * dy) * inv
         np.copyto(t, 0.0, where=t < 0.0)  # clip: 0 if t < 0, 1 if t > 1 (-0.0, NaN kept)
         np.copyto(t, 1.0, where=t > 1.0)
-        ex, ey = ax + t * dx - px, ay + t * dy - py
+        ex, ey = ax + t * dx - x, ay + t * dy - y
         d = ex * ex + ey * ey
         ge, le = self._ge, self._le
-        np.greater_equal(d[:, 1:], d[:, :-1], out=ge[:, :-1])  # forward: stop after c
-        np.greater_equal(d[:, :-1], d[:, 1:], out=le[:, 1:])  # backward: stop before c
-        forward = ge[:, BACK:].argmax(axis=1)
-        backward = le[:, BACK::-1].argmax(axis=1)
-        col = END[forward, backward]
-        rows = self._rows
-        here, t = cols[rows, col], t[rows, col]
+        np.greater_equal(d[1:], d[:-1], out=ge[:-1])  # forward: stop after row c
+        np.greater_equal(d[:-1], d[1:], out=le[1:])  # backward: stop before row c
+        forward = ge[BACK:].argmax(axis=0)
+        backward = le[BACK::-1].argmax(axis=0)
+        row = END[forward, backward]
+        worlds = self._rows
+        here, t = cols[row, worlds], t[row, worlds]
         far = EDGE[forward, backward]
         if far.tobytes().count(1):  # walks that may go on: the scalar walk
             for w in np.flatnonzero(far).tolist():
@@ -178,7 +181,8 @@ class PathArrays(TaskArrays):
         guess = (q * self.inv_spacing[:, None]).astype(np.intp)  # ≥ 0
         # the window's first sample, kept inside the table whatever the guess
         lo = np.minimum(guess + self._before, self._after)
-        count = (self.samples[S][lo[..., None] + LOOK] <= q[..., None]).sum(axis=-1)
+        below = (self.samples[S][LOOK + lo] <= q).view(np.uint8)  # window first
+        count = below[0] + below[1] + below[2] + below[3]
         k = lo + count - 1
         outside = OUTSIDE[count]
         if outside.tobytes().count(1):
