@@ -154,6 +154,7 @@ def test_check_actions_clips_and_keeps_good_batches():
                                        "SameStep, Disabled"),
     ({"colour": "red"}, r"unknown option\(s\) \['colour'\]"),
     ({"render_mode": "human"}, "one viewer per world"),
+    ({"batched": "yes"}, r"batched='yes'; valid: True"),
 ])
 def test_bad_arguments_are_named(kwargs, match):
     with pytest.raises((ValueError, TypeError), match=match):

@@ -120,7 +120,8 @@ class WmrVectorEnv(gym.vector.VectorEnv):
 
     Raises:
         ValueError: a bad ``num_envs``, ``autoreset_mode`` or ``render_mode="human"``
-            (before any world is built), or a bad option (:class:`WmrEnv`).
+            (before any world is built), a ``batched`` not a bool or None, or a bad option
+            (:class:`WmrEnv`).
     """
 
     def __init__(self, robot: str, task: str, num_envs: int = 1,
@@ -129,6 +130,9 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or \
                 not 1 <= num_envs <= MAX_ENVS:
             raise ValueError(f"num_envs={num_envs!r}; valid: an integer in [1, {MAX_ENVS}]")
+        if batched is not None and not isinstance(batched, bool):
+            raise ValueError(f"batched={batched!r}; valid: True (the batched path), False "
+                             "(world by world) or None (by the number of worlds)")
         if options.get("render_mode") == "human":
             raise ValueError("render_mode='human' opens one viewer per world; the vector "
                              "environment renders render_mode='rgb_array' (or None)")
