@@ -30,9 +30,9 @@ class OmniReducedParams(OmniParams):
     #: t_c²`` lowers the rolling radius and so the rotations' heading (``wmr validate``:
     #: worst rotate heading 0.73° at 1 ms, 4 ms, ζ = 1; 1.03° at 1.25 ms, ζ = 1, where the
     #: depth is (5/4)² deeper); ζ = 0.9 keeps it 0.81 · 1.5625 = 1.27× the 1 ms depth
-    #: (rotate 0.89°). At ζ = 0.8 (the 1 ms depth) a driven wheel's pair settled, in
-    #: some translations, in the elliptic cone's zero-force state while touching, 1.3 %
-    #: of path lost.
+    #: (rotate 0.89°). At ζ = 0.8 (the 1 ms depth) some translations settled into a
+    #: rocking in which the two driving wheels took turns at no load (their pairs
+    #: touching in the elliptic cone's zero-force state): 1.3 % of path lost.
     sim: SimParams = SimParams(timestep=0.00125, contact_timeconst=0.0025,
                                floor_dampratio=0.9)
 
