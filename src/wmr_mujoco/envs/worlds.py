@@ -32,7 +32,8 @@ import numpy as np
 from wmr_mujoco.envs.episode import Episode
 from wmr_mujoco.validation.command import RateCommand
 
-_SITE = mujoco.mjtObj.mjOBJ_SITE
+#: ``mjOBJ_SITE`` as a Python int (MuJoCo's bindings convert an int faster than the enum).
+_SITE = int(mujoco.mjtObj.mjOBJ_SITE)
 #: ``(u, v, r)``'s columns in ``mj_objectVelocity``'s ``(ω, v)``.
 _UVR = np.array([3, 4, 2])
 
@@ -112,13 +113,13 @@ class Worlds:
         self.steppers = [e.stepper for e in self.episodes]
         self._advance = [s.advance for s in self.steppers]
         #: The usual physics inlined (a command map ``ctrl = W u``, a split step): each
-        #: world's ``(W, model, data, ctrl)``; None: each stepper's own ``advance``.
+        #: world's ``(W.dot, model, data, ctrl)``; None: each stepper's own ``advance``.
         st0 = first.stepper
         self._inline = None
         self._servo = _servo(first)
         w = st0._w if self._servo is None else self._servo[0]
         if w is not None and st0.split and st0.nstep > 1:
-            self._inline = [(w, s.model, s.data, s._ctrl) for s in self.steppers]
+            self._inline = [(w.dot, s.model, s.data, s._ctrl) for s in self.steppers]
             self._nstep = st0.nstep
         self._c, self._h = np.array(first._c), np.array(first._h)
         st = self.steppers
@@ -157,11 +158,10 @@ class Worlds:
                     -limit, (commands[:, channel] - targets[:, k]) / period))
             commands = u
         if active is None and self._inline is not None:  # Stepper.advance, inlined
-            matmul, step1, step, step2 = np.matmul, mujoco.mj_step1, mujoco.mj_step, \
-                mujoco.mj_step2
+            step1, step, step2 = mujoco.mj_step1, mujoco.mj_step, mujoco.mj_step2
             n1 = self._nstep - 1
-            for (w, model, data, ctrl), u in zip(self._inline, commands, strict=True):
-                matmul(w, u, out=ctrl)
+            for (dot, model, data, ctrl), u in zip(self._inline, commands, strict=True):
+                dot(u, ctrl)  # ctrl = W u, as the stepper and the command map write it
                 step2(model, data)
                 step(model, data, n1)
                 step1(model, data)
