@@ -60,7 +60,7 @@ def test_native_equals_n_single_envs_with_the_same_seeds(env_id, mode, n):
     # (tricycle). Both paths: below BATCHED_FROM worlds each world through its single
     # environment (envs.serial), from it on the batched arrays (envs.batched).
     native = gym.make_vec(env_id, num_envs=n, autoreset_mode=mode, randomize=True, **SHORT)
-    assert isinstance(native.path, Batched if n >= BATCHED_FROM else Serial)
+    assert isinstance(native.engine, Batched if n >= BATCHED_FROM else Serial)
     sync = gym.make_vec(env_id, num_envs=n, vectorization_mode="sync", randomize=True,
                         vector_kwargs={"autoreset_mode": mode}, **SHORT)
     o1, i1 = native.reset(seed=11)

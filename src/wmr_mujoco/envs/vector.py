@@ -55,9 +55,12 @@ MAX_ENVS = 256
 
 #: The fewest worlds stepped by the batched path (:mod:`wmr_mujoco.envs.batched`); fewer go
 #: through their single environments (:mod:`wmr_mujoco.envs.serial`). Measured with
-#: ``python -m wmr_mujoco.bench.vector_paths`` (both paths' steps/s at 1 to 64 worlds, one
-#: process): the batched path's fixed cost per step (numpy calls) pays from the crossover
-#: it prints, worst over the robots and tasks measured.
+#: ``python -m wmr_mujoco.bench.vector_paths --paths --sizes 4,8,12,16,24,64 ID ...`` on the
+#: Disc, DiffDrive and Bicycle GoToGoal and FollowPath environments (both paths' steps/s at
+#: each size in one process, CPU time): the crossover it prints (the fewest worlds from
+#: which the batched path stays the faster) was 8 to 12 worlds, the latest for
+#: Disc-FollowPath (the cheapest physics, so the most Python per step); above it the
+#: batched path's fixed cost per step (a hundred numpy calls) is spread over more worlds.
 BATCHED_FROM = 12
 
 
@@ -159,7 +162,7 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         #: How the worlds step: one by one through their single environments, or batched.
         if batched is None:
             batched = n >= BATCHED_FROM
-        self.path = Batched(self.episodes) if batched else Serial(self.episodes)
+        self.engine = Batched(self.episodes) if batched else Serial(self.episodes)
         #: The worlds whose episode ended in the last step, and whether there is one.
         self._autoreset = np.zeros(n, np.bool_)
         self._ended = False
@@ -200,7 +203,7 @@ class WmrVectorEnv(gym.vector.VectorEnv):
     def _reset_world(self, i: int, seed: int | None = None) -> dict:
         """Reset world ``i`` (its single environment's reset) and load it into the arrays."""
         self._obs[i], info = self.envs[i].reset(seed=seed)
-        self.path.load(i)
+        self.engine.load(i)
         return info
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
@@ -227,10 +230,10 @@ class WmrVectorEnv(gym.vector.VectorEnv):
             active = ~self._autoreset
             resets = [(i, self._reset_world(i)) for i in
                       np.flatnonzero(self._autoreset).tolist()]
-        obs, reward, terms_, truncs, flags = self.path.step(a, active)
+        obs, reward, terms_, truncs, flags = self.engine.step(a, active)
         if active is not None:  # the reset worlds: first observation, reward 0, no flags
             for i, _ in resets:
-                self.path.load(i)
+                self.engine.load(i)
             obs[~active] = self._obs[~active]
             reward[~active] = 0.0
             terms_ &= active
