@@ -13,14 +13,15 @@ step, ``envs[i].episode.state`` stays at the world's last reset (its robot's ``d
 current).
 
 Per step: ``obs = (task block, u, v, r, wheel rates, a)`` in float32; ``reward = Σ terms``
-(added in the terms' order, from 0, as ``sum``); ``truncated = t ≥ T − 10⁻⁹ ∧ ¬(success ∨
+(as Python's ``sum`` adds them: :func:`total`); ``truncated = t ≥ T − 10⁻⁹ ∧ ¬(success ∨
 failure)`` (then ``success`` is the task's verdict at the time limit); ``terminated =
 (success ∨ failure) ∧ ¬truncated``.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import sys
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
@@ -28,6 +29,25 @@ from wmr_mujoco.envs.episode import Episode
 from wmr_mujoco.envs.serial import Result
 from wmr_mujoco.envs.tasks.arrays import ARRAYS
 from wmr_mujoco.envs.worlds import Worlds
+
+#: Whether Python's ``sum`` of floats is compensated (Neumaier's, from Python 3.12), so that
+#: the single environment's ``sum(terms.values())`` is not a plain sequence of additions.
+COMPENSATED = sys.version_info >= (3, 12)
+
+
+def total(terms: Mapping[str, np.ndarray], compensated: bool = COMPENSATED) -> np.ndarray:
+    """Per world ``sum(terms.values())`` as Python computes it: the reward.
+
+    Plain additions in the terms' order from 0 where ``sum`` adds plainly; else ``sum``
+    itself over each world's floats.
+    """
+    if compensated:
+        columns = [v.tolist() for v in terms.values()]
+        return np.fromiter(map(sum, zip(*columns, strict=True)), float, len(columns[0]))
+    reward = 0.0
+    for v in terms.values():
+        reward = reward + v
+    return reward
 
 
 class Batched:
@@ -72,9 +92,7 @@ class Batched:
         full[:, t0:t1] = s.uvr
         full[:, t1:t2] = s.wheel_rates
         full[:, t2:] = actions
-        reward = 0.0
-        for v in terms.values():
-            reward = reward + v
+        reward = total(terms)
         done = success | failure
         truncated = np.greater(s.time >= self._limit, done)  # t ≥ T ∧ ¬done
         if truncated.tobytes().count(1):
