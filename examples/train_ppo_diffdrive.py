@@ -178,7 +178,7 @@ def train(args: argparse.Namespace) -> dict[str, Any]:
         s, r = evaluate(evals, net, norm)
         for k, v in zip(("steps", "success", "return"), (steps, s, r), strict=True):
             curve[k].append(v)
-        curve["policy_std"].append(round(float(net.log_std.exp().mean()), 4))
+        curve["policy_std"].append(round(float(net.log_std.detach().exp().mean()), 4))
         curve["wall_s"].append(round(time.perf_counter() - t0, 1))
         curve["cpu_s"].append(round(time.process_time() - c0, 1))
         print(f"steps {steps:8d}  eval success {s:.2f}  return {r:6.2f}  "
