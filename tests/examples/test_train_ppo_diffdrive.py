@@ -42,6 +42,7 @@ def test_help_lists_every_range(example, capsys) -> None:
     (["--gamma", "nan"], "--gamma=nan", "valid: 0.0 to 0.9999"),
     (["--lr", "inf"], "--lr=inf", "valid: 1e-06 to 0.1"),
     (["--eval-episodes", "0"], "--eval-episodes=0", "valid: 1 to 256"),
+    (["--final-std", "0"], "--final-std=0.0", "valid: 0.01 to 0.6"),
     (["--seed", "999999"], "--seed=999999", "valid: 0 to 999743"),
     (["--envs", "2", "--horizon", "16", "--batch", "64"], "--batch=64", "valid: 16 to 32"),
     (["--out", "curve.jpg"], "--out='curve.jpg'", "a path ending in .png"),
