@@ -102,3 +102,15 @@ def test_the_registry_lists_the_kinds_the_law_drives():
     from wmr_mujoco.control.whipple_lean import WhippleLean
 
     assert SUPPORTS["whipple_lean"] == WhippleLean.kinds
+
+
+@pytest.mark.parametrize("value", [-250.0, -100.0, -3.5, -0.0, 0.0, 42.0, 100.0, 1e9,
+                                   float("nan")])
+def test_clip_is_numpys_clip(value):
+    """The law's scalar clip gives np.clip's float (the limit 100 N·m; NaN passes through)."""
+    from wmr_mujoco.robots.whipple.lean import _clip
+
+    want = float(np.clip(value, -100.0, 100.0))
+    got = _clip(value, 100.0)
+    assert (np.isnan(got) and np.isnan(want)) or (got == want and
+                                                  np.signbit(got) == np.signbit(want))
