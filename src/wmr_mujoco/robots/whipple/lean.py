@@ -35,6 +35,7 @@ discretisation ``[Φ Γ; 0 I] = exp([A B; 0 0] T)``).
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -80,7 +81,16 @@ def input_matrix(mats: whipple.WhippleMatrices) -> np.ndarray:
 
 def lqr_gain(speed: float, params: WhippleParams = DEFAULT_PARAMS,
              weights: BrysonWeights = BrysonWeights()) -> np.ndarray:
-    """``K`` (shape (4,)) of the LQR at ``speed`` (module docstring)."""
+    """``K`` (shape (4,)) of the LQR at ``speed`` (module docstring).
+
+    Solved once per (speed, parameters, weights): the laws of a family's members share it.
+    """
+    return _lqr_gain(positive("speed", speed), params, weights).copy()
+
+
+@functools.lru_cache(maxsize=256)
+def _lqr_gain(speed: float, params: WhippleParams, weights: BrysonWeights) -> np.ndarray:
+    """:func:`lqr_gain`, kept (``A(v)ᵀP + PA(v) − PBR⁻¹BᵀP + Q = 0``, ``K = R⁻¹BᵀP``)."""
     mats = whipple.matrices(params)
     a, b = whipple.state_matrix(positive("speed", speed), mats), input_matrix(mats)
     q, r = weights.matrices()
