@@ -168,8 +168,7 @@ class _Stepper:
     def deriv(self, x: np.ndarray, u_in: np.ndarray, geo: _Geometry
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """``ẋ`` of ``x = (X, Y, ψ, ν, θ, θ̇)`` (B, 12), with the torques, forces, ``θ̈``."""
-        model = self.model
-        v, w = x[:, 3:6], x[:, 9:]
+        model, v, w = self.model, x[:, 3:6], x[:, 9:]
         # np.clip's floats without its per-call cost
         tau = np.minimum(np.maximum(np.where(self.rate_mode, self.gain * (u_in - w), u_in),
                                     -self.limit_tau), self.limit_tau)
@@ -178,10 +177,8 @@ class _Stepper:
                                              self.loads if self.arc else None)
         c, s = np.cos(x[:, 2]), np.sin(x[:, 2])
         xdot = np.empty((len(x), 12))
-        xdot[:, 0] = c * v[:, 0] - s * v[:, 1]
-        xdot[:, 1] = s * v[:, 0] + c * v[:, 1]
-        xdot[:, 2] = v[:, 2]
-        xdot[:, 3:6], xdot[:, 6:9], xdot[:, 9:] = nudot, w, thdd
+        xdot[:, 0], xdot[:, 1] = c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]
+        xdot[:, 2], xdot[:, 3:6], xdot[:, 6:9], xdot[:, 9:] = v[:, 2], nudot, w, thdd
         return xdot, tau, forces, thdd
 
     def rk4(self, x: np.ndarray, k1: np.ndarray, u_in: np.ndarray, geo: _Geometry,
