@@ -134,8 +134,9 @@ def test_effort_and_each_are_the_scalar_sums_and_functions():
 
 @pytest.mark.parametrize("spacing", [1 / 3, 1.0, 3.0])
 def test_the_look_ahead_search_is_bisect_whatever_its_guess(spacing):
-    # The search starts from a guess (the path's mean sample spacing) and moves until
-    # s[k] <= q < s[k+1]: a wrong guess (the spacing scaled) must change nothing.
+    # The search guesses from the path's mean sample spacing and counts the samples <= q
+    # in a window of 4 around the guess; a query outside it goes to bisect. A wrong guess
+    # (the spacing scaled: most queries outside their window) must change nothing.
     import bisect
 
     tasks, starts = _tasks("FollowPath", "disc", 3, 11)
@@ -144,11 +145,13 @@ def test_the_look_ahead_search_is_bisect_whatever_its_guess(spacing):
         state = Fake(tuple(start.tolist()), (0.0, 0.0, 0.0), {})
         task.observe(state)
         arrays.load(i, state)
-    arrays.ds *= spacing
+    arrays.inv_spacing /= spacing
     rng = np.random.default_rng(12)
     i = np.array([rng.integers(0, len(t._s) - 1) for t in tasks])
     s_i = np.array([t._s[k] for t, k in zip(tasks, i, strict=True)])
     q = np.minimum(s_i[:, None] + rng.uniform(0, 3, (3, 5)), arrays.send[:, None])
-    k = arrays._search(q, i)
+    q[0, 0] = 0.0  # the path's first sample
+    k = arrays._search(q) - arrays.base[:, None]
     for w, task in enumerate(tasks):
-        assert k[w].tolist() == [bisect.bisect_right(task._s, v) - 1 for v in q[w].tolist()]
+        assert k[w].tolist() == [min(bisect.bisect_right(task._s, v) - 1, len(task._s) - 2)
+                                 for v in q[w].tolist()]

@@ -6,7 +6,9 @@ import pytest
 from gymnasium.vector import AutoresetMode
 
 import wmr_mujoco.envs  # noqa: F401  (registers the ids)
-from wmr_mujoco.envs.vector import WmrVectorEnv, check_actions
+from wmr_mujoco.envs.batched import Batched
+from wmr_mujoco.envs.serial import Serial
+from wmr_mujoco.envs.vector import BATCHED_FROM, WmrVectorEnv, check_actions
 
 #: Few-step episodes, so that the runs below end episodes (failures and time limits) and
 #: so exercise the autoreset paths.
@@ -39,13 +41,14 @@ def _same(a, b):
         assert a == b
 
 
+@pytest.mark.parametrize("n", [3, BATCHED_FROM])  # world by world, then batched
 @pytest.mark.parametrize("mode", list(AutoresetMode))
 @pytest.mark.parametrize("env_id", ["wmr/Disc-FollowPath-v0", "wmr/Whipple-StayUpright-v0",
                                     "wmr/DiffDrive-GoToGoal-v0", "wmr/Bicycle-FollowPath-v0",
                                     "wmr/Mecanum4-GoToGoal-v0",
                                     "wmr/Omni3Reduced-FollowPath-v0",
                                     "wmr/SingleSteer-GoToGoal-v0", "wmr/Tricycle-GoToGoal-v0"])
-def test_native_equals_n_single_envs_with_the_same_seeds(env_id, mode):
+def test_native_equals_n_single_envs_with_the_same_seeds(env_id, mode, n):
     # Exact equality (no tolerance): world i's physics is the single environment's own
     # (its stepper's command map and mj_step calls on its own model), and the batched
     # reading, task and bookkeeping (envs.worlds, envs.tasks.arrays) are the scalar code's
@@ -54,9 +57,10 @@ def test_native_equals_n_single_envs_with_the_same_seeds(env_id, mode):
     # environments seeded alike. Light and heavy robots, each task kind, every autoreset
     # mode, randomisation on, episodes ending (0.3 s) and so resets mixed with steps;
     # steering servos batched (bicycle, single steer) or each world's own controller
-    # (tricycle).
-    n = 3
+    # (tricycle). Both paths: below BATCHED_FROM worlds each world through its single
+    # environment (envs.serial), from it on the batched arrays (envs.batched).
     native = gym.make_vec(env_id, num_envs=n, autoreset_mode=mode, randomize=True, **SHORT)
+    assert isinstance(native.engine, Batched if n >= BATCHED_FROM else Serial)
     sync = gym.make_vec(env_id, num_envs=n, vectorization_mode="sync", randomize=True,
                         vector_kwargs={"autoreset_mode": mode}, **SHORT)
     o1, i1 = native.reset(seed=11)
@@ -150,6 +154,7 @@ def test_check_actions_clips_and_keeps_good_batches():
                                        "SameStep, Disabled"),
     ({"colour": "red"}, r"unknown option\(s\) \['colour'\]"),
     ({"render_mode": "human"}, "one viewer per world"),
+    ({"batched": "yes"}, r"batched='yes'; valid: True"),
 ])
 def test_bad_arguments_are_named(kwargs, match):
     with pytest.raises((ValueError, TypeError), match=match):

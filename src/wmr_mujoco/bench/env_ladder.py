@@ -55,7 +55,8 @@ def vector_loops(env_id: str, worlds: int) -> dict[str, Callable[[int], float]]:
     """The timed loops of :data:`VECTOR_LAYERS` at ``worlds`` worlds, each its own envs."""
     rec = record(gym.make(env_id))
     off = gym.vector.AutoresetMode.DISABLED
-    vecs = {name: gym.make_vec(env_id, num_envs=worlds, autoreset_mode=off)
+    # The batched path at any world count (the layers below are its own).
+    vecs = {name: gym.make_vec(env_id, num_envs=worlds, autoreset_mode=off, batched=True)
             for name in VECTOR_LAYERS}
     for v in vecs.values():
         v.reset(seed=[SEED] * worlds)
@@ -73,15 +74,15 @@ def vector_loops(env_id: str, worlds: int) -> dict[str, Callable[[int], float]]:
         return False
 
     def read_step(k: int) -> bool:
-        w = vecs["read"].worlds
+        w = vecs["read"].engine.worlds
         w.push(batch[k])
         w.read()
         return False
 
     def task_step(k: int) -> bool:
-        v = vecs["task"]
+        v = vecs["task"].engine
         v.worlds.push(batch[k])
-        _, success, failure = v.tasks.step(v.worlds.read(), batch[k], v.dt, v._full_obs)
+        _, success, failure = v.tasks.step(v.worlds.read(), batch[k], v.dt, v._full)
         return bool(success.any() or failure.any())
 
     def vector_step(k: int) -> bool:
@@ -94,7 +95,7 @@ def vector_loops(env_id: str, worlds: int) -> dict[str, Callable[[int], float]]:
                             zip(bare, starts, strict=True)] and None
         return lambda: vecs[name].reset(seed=[SEED] * worlds) and None
 
-    steps = {"bare": bare_step, "physics": lambda k: vecs["physics"].worlds.push(batch[k])
+    steps = {"bare": bare_step, "physics": lambda k: vecs["physics"].engine.worlds.push(batch[k])
              or False, "read": read_step, "task": task_step, "vector": vector_step}
     return {name: replayer(steps[name], restart(name), len(batch)) for name in VECTOR_LAYERS}
 

@@ -8,9 +8,11 @@ and the Whipple bicycle's StayUpright; ``--all``: every id), the steps/s of
   registers), which steps the physics through the environments' recording-free loop
   (:mod:`wmr_mujoco.envs.stepping`);
 * ``vector``, ``vector16``, ``vector64``: ``gymnasium.make_vec`` of ``--vector``, 16 and 64
-  worlds, the native vector environment (:mod:`wmr_mujoco.envs.vector`: every world's
-  physics, then the reading, task and bookkeeping of all worlds at once on arrays), counting
-  every world's steps. The goal (:data:`GOAL`) is judged on 16 worlds (:data:`JUDGED`);
+  worlds, the native vector environment (:mod:`wmr_mujoco.envs.vector`: below
+  ``BATCHED_FROM`` worlds each world through its single environment, from it on every
+  world's physics, then the reading, task and bookkeeping of all worlds at once on arrays),
+  counting every world's steps. The goal (:data:`GOAL`) is judged on 16 worlds
+  (:data:`JUDGED`); ``python -m wmr_mujoco.bench.vector_paths`` gives every world count;
 * ``sync``: the same through Gymnasium's generic ``"sync"`` vectorisation (n single
   environments stepped one after the other by :class:`gymnasium.vector.SyncVectorEnv`);
 * ``drive``: the stepping API, ``robot.step(command)`` (:mod:`wmr_mujoco.drive`, the same

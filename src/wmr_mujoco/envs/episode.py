@@ -137,6 +137,7 @@ class Episode:
         self.stepper = Stepper(self.robot)
         self.state: Snapshot | None = None
         self._shape = (self.n_action,)
+        self._channels = range(self.n_action)
         self.last_action = [0.0] * self.n_action
         self.factors: dict[str, np.ndarray] = {}
 
@@ -195,7 +196,8 @@ class Episode:
 
     def push(self, a: list[float]) -> None:
         """The physics of :meth:`advance` (the command of ``a`` held for one period)."""
-        self.stepper.advance([c + h * v for c, h, v in zip(self._c, self._h, a, strict=False)])
+        c, h = self._c, self._h  # indexed: faster than a zip of three for a few channels
+        self.stepper.advance([c[i] + h[i] * a[i] for i in self._channels])
         self.last_action = a
 
     def pull(self) -> tuple[np.ndarray, float, bool, bool, dict]:

@@ -32,7 +32,8 @@ import numpy as np
 from wmr_mujoco.loop.readout import NO_EXTRAS
 from wmr_mujoco.validation.command import RateCommand
 
-_SITE = mujoco.mjtObj.mjOBJ_SITE
+#: ``mjOBJ_SITE`` as a Python int (MuJoCo's bindings convert an int faster than the enum).
+_SITE = int(mujoco.mjtObj.mjOBJ_SITE)
 
 
 class Snapshot(NamedTuple):
@@ -104,7 +105,7 @@ class Stepper:
         self.controller = None
         #: ``W`` of a command map that is ``ctrl = W u`` (:meth:`RateCommand.matrix`, no
         #: steering servo, no adjustment): applied here as ``bind``'s controller applies
-        #: it, ``np.matmul(W, u, out=ctrl)``, without the call around it.
+        #: it, ``W.dot(u, out=ctrl)``, without the call around it.
         self._w: np.ndarray | None = None
         if robot.mode == "command":
             adapter = cmap.analytic(robot.params)
@@ -113,6 +114,7 @@ class Stepper:
             if self._w is None:
                 self.controller = cmap.bind(model, adapter)
         self._u = np.zeros(len(data.ctrl) if self._w is None else self._w.shape[1])
+        self._dot = None if self._w is None else self._w.dot
         self.split = model.opt.integrator != mujoco.mjtIntegrator.mjINT_RK4
         reader = robot.reader
         self.reader, self.site = reader, reader.site
@@ -146,10 +148,10 @@ class Stepper:
         world: the reading's Python code runs warm for all worlds but the first.)
         """
         model, data = self.model, self.data
-        if self._w is not None:
+        if self._dot is not None:
             u = self._u
             u[:] = command
-            np.matmul(self._w, u, out=self._ctrl)
+            self._dot(u, self._ctrl)
         elif self.controller is None:
             self._ctrl[:] = command
         else:
@@ -177,11 +179,10 @@ class Stepper:
         m = self._xmat.tolist()
         h = self._heading
         self._heading = psi = h + math.remainder(math.atan2(m[3], m[0]) - h, math.tau)
-        vel = self._vel
-        mujoco.mj_objectVelocity(self.model, self.data, _SITE, self.site, vel, 1)
+        vel, model, data = self._vel, self.model, self.data
+        mujoco.mj_objectVelocity(model, data, _SITE, self.site, vel, 1)
         _, _, r, u, v, _ = vel.tolist()
-        extra = (dict(self.extras(self.model, self.data)) if self.extras is not None
-                 else NO_EXTRAS)
+        extra = dict(self.extras(model, data)) if self.extras is not None else NO_EXTRAS
         self.serial = serial = self.serial + 1
-        return _new(Snapshot, (self.data.time - self._t0, (x, y, psi), (u, v, r),
+        return _new(Snapshot, (data.time - self._t0, (x, y, psi), (u, v, r),
                                self._qvel[self._rows].tolist(), extra, serial, self))

@@ -5,19 +5,17 @@ Each environment id registers :class:`WmrVectorEnv` as its ``vector_entry_point`
 ``"sync"`` and ``"async"`` still wrap n single environments. The n worlds are n
 :class:`~wmr_mujoco.envs.env.WmrEnv`, each with its own model and data (so that each draws
 its own domain randomisation) and its own reset (task draw, randomisation, settling). A
-step is batched: the whole batch of actions is checked once (a bad action of any world
-raises before any world steps); each world's physics runs (:class:`~wmr_mujoco.envs.
-worlds.Worlds`: its own command map and ``mj_step`` calls, the only per-world Python); then
-every world's state is read into arrays with a leading world axis, the task's observation
-block, reward terms and outcome are computed once for all worlds
-(:mod:`wmr_mujoco.envs.tasks.arrays`), and the observations, rewards, flags and infos are
-assembled as arrays. Worlds whose episode ended are reset one by one (their single
-environment's reset) and loaded into the arrays. The batched code performs the single
-environment's floating-point operations in the same order, so world ``i`` gives bit for bit
-the observations, rewards, flags and infos of a single environment reset with its seed
-(``tests/envs/test_vector.py``). The worlds' single environments are not stepped: after a
-step, ``envs[i].episode.state`` stays at the world's last reset (its robot's ``data`` is
-current).
+step checks the whole batch of actions once (a bad action of any world raises before any
+world steps), then steps the worlds by one of two paths, which give the same results:
+
+* below :data:`BATCHED_FROM` worlds, each world through its single environment's step
+  (:mod:`wmr_mujoco.envs.serial`), the batch assembled from their results;
+* from :data:`BATCHED_FROM` on, every world's physics, then the reading, the task and the
+  bookkeeping once for all worlds on arrays (:mod:`wmr_mujoco.envs.batched`).
+
+Worlds whose episode ended are reset one by one (their single environment's reset). World
+``i`` gives bit for bit the observations, rewards, flags and infos of a single environment
+reset with its seed (``tests/envs/test_vector.py``, both paths).
 
 Semantics are Gymnasium 1.x's (:class:`gymnasium.vector.SyncVectorEnv`, whose results this
 class reproduces, infos included):
@@ -46,14 +44,27 @@ import numpy as np
 from gymnasium.vector import AutoresetMode
 from gymnasium.vector.utils import batch_space
 
+from wmr_mujoco.envs.batched import Batched
 from wmr_mujoco.envs.env import WmrEnv
-from wmr_mujoco.envs.tasks.arrays import ARRAYS
-from wmr_mujoco.envs.worlds import Worlds
+from wmr_mujoco.envs.serial import Serial
 
 #: Most worlds in one vector environment: each holds its own compiled model and data
 #: (measured: about 1.6 MB for the disc, 6 MB for the mecanum platform), so 256 worlds stay
 #: under 2 GB whatever a user types; more worlds belong in more processes.
 MAX_ENVS = 256
+
+#: The fewest worlds stepped by the batched path (:mod:`wmr_mujoco.envs.batched`); fewer go
+#: through their single environments (:mod:`wmr_mujoco.envs.serial`). Measured with
+#: ``python -m wmr_mujoco.bench.vector_paths --paths --sizes 4,8,12,16,24,64 ID ...`` on the
+#: Disc, DiffDrive and Bicycle GoToGoal and FollowPath environments (both paths' steps/s at
+#: each size in one process, CPU time): the crossover it prints (the fewest worlds from
+#: which the batched path stays the faster) was 8 to 12 worlds, the latest for
+#: Disc-FollowPath (the cheapest physics, so the most Python per step); above it the
+#: batched path's fixed cost per step (a hundred numpy calls) is spread over more worlds.
+BATCHED_FROM = 12
+
+
+_max, _abs = np.maximum.reduce, np.abs
 
 
 def check_actions(actions: Any, shape: tuple[int, int]) -> np.ndarray:
@@ -64,6 +75,8 @@ def check_actions(actions: Any, shape: tuple[int, int]) -> np.ndarray:
     """
     if type(actions) is np.ndarray and actions.shape == shape and actions.dtype.kind == "f":
         a = actions.astype(float)
+        if _max(_abs(a), axis=None) <= 1.0:  # the usual batch: nothing to clip (NaN fails)
+            return a
     else:
         try:
             a = np.asarray(actions)
@@ -104,19 +117,25 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         task: the task's name.
         num_envs: number of worlds, 1 to :data:`MAX_ENVS`.
         autoreset_mode: an :class:`~gymnasium.vector.AutoresetMode` or its value.
+        batched: step by the batched path (True) or world by world (False); None: batched
+            from :data:`BATCHED_FROM` worlds on (the faster one; the results are the same).
         **options: the single environment's options (:class:`WmrEnv`).
 
     Raises:
         ValueError: a bad ``num_envs``, ``autoreset_mode`` or ``render_mode="human"``
-            (before any world is built), or a bad option (:class:`WmrEnv`).
+            (before any world is built), a ``batched`` not a bool or None, or a bad option
+            (:class:`WmrEnv`).
     """
 
     def __init__(self, robot: str, task: str, num_envs: int = 1,
                  autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP,
-                 **options: Any) -> None:
+                 batched: bool | None = None, **options: Any) -> None:
         if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or \
                 not 1 <= num_envs <= MAX_ENVS:
             raise ValueError(f"num_envs={num_envs!r}; valid: an integer in [1, {MAX_ENVS}]")
+        if batched is not None and not isinstance(batched, bool):
+            raise ValueError(f"batched={batched!r}; valid: True (the batched path), False "
+                             "(world by world) or None (by the number of worlds)")
         if options.get("render_mode") == "human":
             raise ValueError("render_mode='human' opens one viewer per world; the vector "
                              "environment renders render_mode='rgb_array' (or None)")
@@ -140,14 +159,10 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         self._shape = (n, first.episode.n_action)
         #: Every world's latest observation (a masked reset returns the others' too).
         self._obs = np.zeros((n, first.episode.size), np.float32)
-        #: The worlds' physics and reading, and their task, on arrays (the batched path).
-        self.worlds = Worlds(self.episodes)
-        self.tasks = ARRAYS[task](tuple(e.task for e in self.episodes))
-        #: The step's observations in float64 (the task's block, twist, wheel rates, action)
-        #: and where the robot's blocks start.
-        self._full_obs = np.zeros((n, first.episode.size))
-        t0 = first.task.size
-        self._cols = (t0, t0 + 3, t0 + 3 + len(first.robot.wheel_names))
+        #: How the worlds step: one by one through their single environments, or batched.
+        if batched is None:
+            batched = n >= BATCHED_FROM
+        self.engine = Batched(self.episodes) if batched else Serial(self.episodes)
         #: The worlds whose episode ended in the last step, and whether there is one.
         self._autoreset = np.zeros(n, np.bool_)
         self._ended = False
@@ -188,9 +203,7 @@ class WmrVectorEnv(gym.vector.VectorEnv):
     def _reset_world(self, i: int, seed: int | None = None) -> dict:
         """Reset world ``i`` (its single environment's reset) and load it into the arrays."""
         self._obs[i], info = self.envs[i].reset(seed=seed)
-        episode = self.episodes[i]
-        self.worlds.load(i)
-        self.tasks.load(i, episode.state)
+        self.engine.load(i)
         return info
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
@@ -217,35 +230,17 @@ class WmrVectorEnv(gym.vector.VectorEnv):
             active = ~self._autoreset
             resets = [(i, self._reset_world(i)) for i in
                       np.flatnonzero(self._autoreset).tolist()]
-        # Every (active) world's physics, then every world's reading, task and bookkeeping
-        # at once on arrays (modules worlds and tasks.arrays).
-        self.worlds.push(a, active)
-        s = self.worlds.read()
-        full, (t0, t1, t2) = self._full_obs, self._cols
-        terms, success, failure = self.tasks.step(s, a, self.dt, full)
-        full[:, t0:t1] = s.uvr
-        full[:, t1:t2] = s.wheel_rates
-        full[:, t2:] = a
-        obs = full.astype(np.float32)
-        reward = 0.0
-        for v in terms.values():
-            reward = reward + v
-        truncs = ~(success | failure) & (s.time >= self.tasks.time_limit - 1e-9)
-        if truncs.any():
-            success = np.where(truncs, self.tasks.succeeded_at_time_limit(s), success)
-        terms_ = (success | failure) & ~truncs
-        flags = (terms, success, failure, s.time)
+        obs, reward, terms_, truncs, flags = self.engine.step(a, active)
         if active is not None:  # the reset worlds: first observation, reward 0, no flags
             for i, _ in resets:
-                self.worlds.load(i)
-                self.tasks.load(i, self.episodes[i].state)
+                self.engine.load(i)
             obs[~active] = self._obs[~active]
             reward[~active] = 0.0
             terms_ &= active
             truncs &= active
         ended = terms_ | truncs
         self._autoreset = ended
-        self._ended = bool(ended.any())
+        self._ended = ended.tobytes().count(1) > 0
         if self._ended and mode is AutoresetMode.SAME_STEP:
             return self._finish_same_step(obs, reward, terms_, truncs, flags)
         self._obs = obs
@@ -262,6 +257,11 @@ class WmrVectorEnv(gym.vector.VectorEnv):
         terms, success, failure, time = flags
         if stepped is None:
             mask = self._full
+            if not others:  # the usual step: every world stepped, no reset
+                return {"reward_terms": {k2: v2 for k, v in terms.items()
+                                         for k2, v2 in ((k, v), (f"_{k}", mask))},
+                        "_reward_terms": mask, "is_success": success, "_is_success": mask,
+                        "failed": failure, "_failed": mask, "time": time, "_time": mask}
         else:
             mask = stepped.copy()
             terms = {k: np.where(mask, v, 0.0) for k, v in terms.items()}

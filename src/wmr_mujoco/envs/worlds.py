@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from itertools import repeat
+from operator import add, sub
 from typing import NamedTuple
 
 import mujoco
@@ -31,7 +32,10 @@ import numpy as np
 from wmr_mujoco.envs.episode import Episode
 from wmr_mujoco.validation.command import RateCommand
 
-_SITE = mujoco.mjtObj.mjOBJ_SITE
+#: ``mjOBJ_SITE`` as a Python int (MuJoCo's bindings convert an int faster than the enum).
+_SITE = int(mujoco.mjtObj.mjOBJ_SITE)
+#: ``(u, v, r)``'s columns in ``mj_objectVelocity``'s ``(ω, v)``.
+_UVR = np.array([3, 4, 2])
 
 
 def each(fn: Callable[..., float], a: np.ndarray, b: np.ndarray | float | None = None
@@ -109,13 +113,13 @@ class Worlds:
         self.steppers = [e.stepper for e in self.episodes]
         self._advance = [s.advance for s in self.steppers]
         #: The usual physics inlined (a command map ``ctrl = W u``, a split step): each
-        #: world's ``(W, model, data, ctrl)``; None: each stepper's own ``advance``.
+        #: world's ``(W.dot, model, data, ctrl)``; None: each stepper's own ``advance``.
         st0 = first.stepper
         self._inline = None
         self._servo = _servo(first)
         w = st0._w if self._servo is None else self._servo[0]
         if w is not None and st0.split and st0.nstep > 1:
-            self._inline = [(w, s.model, s.data, s._ctrl) for s in self.steppers]
+            self._inline = [(w.dot, s.model, s.data, s._ctrl) for s in self.steppers]
             self._nstep = st0.nstep
         self._c, self._h = np.array(first._c), np.array(first._h)
         st = self.steppers
@@ -154,11 +158,10 @@ class Worlds:
                     -limit, (commands[:, channel] - targets[:, k]) / period))
             commands = u
         if active is None and self._inline is not None:  # Stepper.advance, inlined
-            matmul, step1, step, step2 = np.matmul, mujoco.mj_step1, mujoco.mj_step, \
-                mujoco.mj_step2
+            step1, step, step2 = mujoco.mj_step1, mujoco.mj_step, mujoco.mj_step2
             n1 = self._nstep - 1
-            for (w, model, data, ctrl), u in zip(self._inline, commands, strict=True):
-                matmul(w, u, out=ctrl)
+            for (dot, model, data, ctrl), u in zip(self._inline, commands, strict=True):
+                dot(u, ctrl)  # ctrl = W u, as the stepper and the command map write it
                 step2(model, data)
                 step(model, data, n1)
                 step1(model, data)
@@ -175,23 +178,25 @@ class Worlds:
         Raises:
             SimulationDivergedError: a world's physics diverged.
         """
-        warned = np.array(self._warnings).any(axis=1)
-        if warned.any():
-            for i in np.flatnonzero(warned).tolist():
-                self.steppers[i].reader.check()
+        if np.count_nonzero(np.concatenate(self._warnings)):
+            for i, w in enumerate(self._warnings):
+                if w.any():
+                    self.steppers[i].reader.check()
         objvel = mujoco.mj_objectVelocity
         for args in self._objvel:
             objvel(*args, 1)
         pos = np.array(self._xpos)
         mat = np.array(self._xmat)
-        h = self.heading
-        psi = h + each(math.remainder, each(math.atan2, mat[:, 3], mat[:, 0]) - h, math.tau)
+        # ψ = ψ₋ + remainder(atan2(R₁₀, R₀₀) − ψ₋, 2π) on floats, in one pass (a C loop)
+        h = self.heading.tolist()
+        psi = np.fromiter(map(add, h, map(math.remainder, map(sub, map(
+            math.atan2, mat[:, 3].tolist(), mat[:, 0].tolist()), h), repeat(math.tau))),
+            float, self.n)
         self.heading = psi
-        time = np.fromiter([d.time for d in self._datas], float, self.n) - self.t0
-        vel = self._vel
+        time = np.array([d.time for d in self._datas]) - self.t0
         extra: dict[str, np.ndarray] = {}
         if self._extras is not None:
             rows = [dict(self._extras(s.model, s.data)) for s in self.steppers]
             extra = {k: np.array([r[k] for r in rows]) for k in rows[0]}
-        return States(time, pos[:, 0], pos[:, 1], psi, vel[:, [3, 4, 2]],
+        return States(time, pos[:, 0], pos[:, 1], psi, self._vel[:, _UVR],
                       np.array(self._qvel)[:, self._rows], extra)

@@ -292,7 +292,7 @@ class RateCommand(CommandMap):
                 u = self._inputs(adapter, command.tolist(), [act[i] for i in acts_list],
                                  period, channels)
             if w is not None:
-                np.matmul(w, u, out=ctrl)  # W u, written in place
+                w.dot(u, out=ctrl)  # W u, written in place (faster than np.matmul, same bits)
                 return
             x = rest
             if self.state_dependent:

@@ -45,3 +45,26 @@ def test_rollout_needs_one_start_per_sequence():
     model, _ = settled(ActuationMode.RATE, COLLISION_CLASS)
     with pytest.raises(ValueError, match="one start per"):
         rollout_from(model, np.zeros((2, 5)), [np.zeros((3, 3))])
+
+
+def test_contact_wheels_names_the_wheel_of_each_floor_contact():
+    """Resting on its three wheels, each floor contact is a roller of one of them (the
+    roller body's parent is that wheel), every wheel has one, and no contact is assigned
+    that is not a floor contact: checked contact by contact against the model's bodies."""
+    from wmr_mujoco.robots.omni3.physics import contact_wheels
+
+    model, _ = settled(ActuationMode.RATE, None)
+    start = settle_at_phases(model, WHEELS, [math.radians(10.0)], SETTLE)[0]
+    data = mujoco.MjData(model)
+    mujoco.mj_setState(model, data, start, STATE_SPEC)
+    mujoco.mj_fwdPosition(model, data)
+    got = contact_wheels(model, data)
+    floor = model.geom("floor").id
+    wheel_ids = [model.body(w).id for w in WHEELS]
+    assert got.shape == (data.ncon,) and set(got[got >= 0]) == {0, 1, 2}
+    for c, wheel in zip(data.contact[:data.ncon], got, strict=True):
+        if floor not in (c.geom1, c.geom2):
+            assert wheel == -1
+            continue
+        geom = c.geom2 if c.geom1 == floor else c.geom1
+        assert wheel >= 0 and wheel_ids[wheel] == model.body_parentid[model.geom_bodyid[geom]]

@@ -35,8 +35,10 @@ def test_the_site_actuator_drives_the_spin_about_the_chassis_axle(model):
     assert model.nv == 6 + 3 * 3 and model.nu == 3
     assert [model.actuator(i).name for i in range(3)] == ["wheel1", "wheel2", "wheel3"]
     data = mujoco.MjData(model)
-    for k in range(2000):
-        data.ctrl[:] = (6.0, -2.0, 1.0) if k < 1000 else (4.0, 0.0, 0.0)
+    # 1 s of one command, then 1 s of another (in seconds: the same motion at any step).
+    per_second = round(1.0 / model.opt.timestep)
+    for k in range(2 * per_second):
+        data.ctrl[:] = (6.0, -2.0, 1.0) if k < per_second else (4.0, 0.0, 0.0)
         mujoco.mj_step(model, data)
     platform = model.body("platform").id
     for i in range(3):

@@ -63,3 +63,38 @@ def test_overlap_impulse_stays_finite_where_the_wheel_turns_back():
     assert m.overlap_impulse(nu, modes, th, 0, 8.0, 3.6) == pytest.approx(fast, rel=1e-2)
     # Yaw-rate change of that impulse: far below the rate (the collapse took all of it).
     assert at_rest / m.planar_mass(modes, th)[2, 2] < 0.05 * nu[2]
+
+
+def test_constraint_rows_put_the_contact_point_in_the_omega_columns():
+    """Row d of wheel i reads d·(V + Ω×p) = d·V + (p×d)·Ω: its Ω columns are p × d, p the
+    contact point of :meth:`contact_point`; the z-row's θ̇ entry is −x_c(φ_i). Rounding
+    tolerance: a few ulps of |p| |d| ≈ 0.15 m."""
+    thetas = np.array([0.1, 1.3, -2.2])
+    modes = MODEL.modes(thetas)
+    A = MODEL.constraint_rows(modes, thetas)
+    for i, (m, th) in enumerate(zip(modes, thetas, strict=True)):
+        p = MODEL.contact_point(i, m, float(th))
+        for row, d in enumerate((MODEL.drive_dirs[i], np.array([0.0, 0.0, 1.0]),
+                                 -MODEL.radial[i])):
+            np.testing.assert_allclose(A[3 * i + row, 3:6], np.cross(p, d), rtol=0, atol=1e-15)
+        phi = float(GEOM.phases(float(th))[m])
+        assert A[3 * i + 1, 6 + i] == -GEOM.contact_ahead(phi)
+
+
+def test_jacobian_is_kept_per_mode_and_read_only():
+    """H(σ) rows (t_x, t_y, L − y_σ)/r; the same array for the same modes however typed."""
+    modes = (0, 7, 3)
+    H = MODEL.jacobian(modes)
+    assert MODEL.jacobian(tuple(np.array(modes))) is H
+    assert not H.flags.writeable
+    lever = MODEL.distance - GEOM.offsets[list(modes)]
+    np.testing.assert_allclose(H[:, 2], lever / R_WHEEL, rtol=1e-15)
+    np.testing.assert_allclose(H[:, :2], MODEL.drive_dirs[:, :2] / R_WHEEL, rtol=1e-15)
+
+
+def test_planar_mass_with_known_rows_is_the_same_matrix():
+    """Passing the rows k_i already computed changes nothing (the same floats)."""
+    thetas = np.array([0.4, -0.9, 2.5])
+    modes = MODEL.modes(thetas)
+    ks, _ = MODEL.roller_rows(modes, thetas)
+    assert np.array_equal(MODEL.planar_mass(modes, thetas, ks), MODEL.planar_mass(modes, thetas))

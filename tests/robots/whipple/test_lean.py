@@ -102,3 +102,26 @@ def test_the_registry_lists_the_kinds_the_law_drives():
     from wmr_mujoco.control.whipple_lean import WhippleLean
 
     assert SUPPORTS["whipple_lean"] == WhippleLean.kinds
+
+
+@pytest.mark.parametrize("value", [-250.0, -100.0, -3.5, -0.0, 0.0, 42.0, 100.0, 1e9,
+                                   float("nan")])
+def test_clip_is_numpys_clip(value):
+    """The law's scalar clip gives np.clip's float (the limit 100 N·m; NaN passes through)."""
+    from wmr_mujoco.robots.whipple.lean import _clip
+
+    want = float(np.clip(value, -100.0, 100.0))
+    got = _clip(value, 100.0)
+    assert (np.isnan(got) and np.isnan(want)) or (got == want and
+                                                  np.signbit(got) == np.signbit(want))
+
+
+def test_lqr_gain_is_kept_per_speed_and_handed_out_as_a_copy():
+    """The kept gain is the one solved afresh (the same floats), and a caller changing its
+    copy changes no later law's gain."""
+    from wmr_mujoco.robots.whipple.lean import DEFAULT_PARAMS, _lqr_gain, lqr_gain
+
+    k = lqr_gain(4.5)
+    assert np.array_equal(k, _lqr_gain.__wrapped__(4.5, DEFAULT_PARAMS, BrysonWeights()))
+    k[:] = 0.0
+    assert np.any(lqr_gain(4.5) != 0.0)

@@ -96,13 +96,12 @@ def contact_wheels(model: mujoco.MjModel, data: mujoco.MjData,
     ``floor`` in it; −1 for any other contact.
     """
     floor = model.geom("floor").id
-    wheel_of = {int(model.body(w).id): i for i, w in enumerate(wheels)}
-    out = np.full(data.ncon, -1)
-    for ci, c in enumerate(data.contact[:data.ncon]):
-        if floor in (c.geom1, c.geom2):
-            geom = c.geom2 if c.geom1 == floor else c.geom1
-            out[ci] = wheel_of.get(int(model.body_parentid[model.geom_bodyid[geom]]), -1)
-    return out
+    wheel_of = np.full(model.nbody, -1)
+    wheel_of[[model.body(w).id for w in wheels]] = np.arange(len(wheels))
+    g1, g2 = data.contact.geom1[:data.ncon], data.contact.geom2[:data.ncon]
+    other = np.where(g1 == floor, g2, g1)  # the geom that is not the floor
+    wheel = wheel_of[model.body_parentid[model.geom_bodyid[other]]]
+    return np.where((g1 == floor) | (g2 == floor), wheel, -1)
 
 
 def wheels_off_floor(model: mujoco.MjModel, states: np.ndarray,

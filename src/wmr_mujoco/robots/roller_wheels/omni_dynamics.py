@@ -68,10 +68,12 @@ class OmniDynamics:
         """``diag(M, M, I_z)``."""
         return np.diag([self.mass, self.mass, self.yaw_inertia])
 
-    @property
+    @functools.cached_property
     def mass_matrix(self) -> np.ndarray:
-        """Reduced mass matrix ``diag(M, M, I_z) + I_w HᵀH``."""
-        return self.platform_matrix + self.wheel_inertia * self.H.T @ self.H
+        """Reduced mass matrix ``diag(M, M, I_z) + I_w HᵀH`` (computed once, read-only)."""
+        m = self.platform_matrix + self.wheel_inertia * self.H.T @ self.H
+        m.setflags(write=False)
+        return m
 
     def velocity_term(self, nu: np.ndarray) -> np.ndarray:
         """``r [−M v, M u, 0]``: the body-frame rigid-body term."""

@@ -143,10 +143,20 @@ class OmniHybrid(HybridImpacts):
                 - np.array([0.0, 0.0, g.rolling_radius(phi)]))
 
     def jacobian(self, modes: tuple[int, ...]) -> np.ndarray:
-        """``H(σ)``: row i = (t_i,x, t_i,y, L − y_σi) / r."""
-        t = self.drive_dirs
-        lever = self.distance - self.rollers.offsets[list(modes)]
-        return np.column_stack([t[:, 0], t[:, 1], lever]) / self.radius
+        """``H(σ)``: row i = (t_i,x, t_i,y, L − y_σi) / r (read-only, one per mode σ)."""
+        key = tuple(int(m) for m in modes)
+        H = self._jacobians.get(key)
+        if H is None:
+            t = self.drive_dirs
+            lever = self.distance - self.rollers.offsets[list(key)]
+            H = np.column_stack([t[:, 0], t[:, 1], lever]) / self.radius
+            H.setflags(write=False)
+            self._jacobians[key] = H
+        return H
+
+    @functools.cached_property
+    def _jacobians(self) -> dict[tuple[int, ...], np.ndarray]:
+        return {}
 
     def roller_rows(self, modes: tuple[int, ...], thetas: np.ndarray
                     ) -> tuple[np.ndarray, np.ndarray]:
@@ -160,10 +170,12 @@ class OmniHybrid(HybridImpacts):
         """I_w = wheel subtree axial inertia + armature."""
         return self.wheel_axial + self.wheel_armature
 
-    def planar_mass(self, modes: tuple[int, ...], thetas: np.ndarray) -> np.ndarray:
-        """``P + I_w HᵀH + I_r Σ k kᵀ``."""
+    def planar_mass(self, modes: tuple[int, ...], thetas: np.ndarray,
+                    ks: np.ndarray | None = None) -> np.ndarray:
+        """``P + I_w HᵀH + I_r Σ k kᵀ`` (``ks``: the rows ``k_i`` where already known)."""
         H = self.jacobian(modes)
-        ks, _ = self.roller_rows(modes, thetas)
+        if ks is None:
+            ks, _ = self.roller_rows(modes, thetas)
         P = np.diag([self.mass, self.mass, self.inertia[2, 2]])
         return P + self.wheel_inertia * H.T @ H + self.roller_axial * ks.T @ ks
 

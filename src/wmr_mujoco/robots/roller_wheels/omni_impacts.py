@@ -114,6 +114,10 @@ class OmniPlatform(Protocol):
 
 # The mixin's methods read the host's members: type checkers see the protocol as its base;
 # at run time it has none (a protocol's properties would shadow the host's fields).
+#: ẑ, the floor normal (body frame; read-only).
+_UP = np.array([0.0, 0.0, 1.0])
+_UP.setflags(write=False)
+
 if TYPE_CHECKING:
     _Host = OmniPlatform
 else:
@@ -165,11 +169,14 @@ class HybridImpacts(_Host):
         g = self.rollers
         for i, (m, th) in enumerate(zip(modes, thetas, strict=True)):
             phi = float(g.phases(float(th))[m])
-            p = self.contact_point(i, m, float(th))
+            rolling, ahead = g.rolling_radius(phi), g.contact_ahead(phi)
+            # contact_point(i, m, θ), its terms evaluated once
+            p = (self.distance * self.radial[i] + ahead * self.drive_dirs[i]
+                 - g.offsets[m] * self.radial[i] - np.array([0.0, 0.0, rolling]))
             skew_p = np.array([[0, -p[2], p[1]], [p[2], 0, -p[0]], [-p[1], p[0], 0]])
             for row, (d, coef, col) in enumerate((
-                    (self.drive_dirs[i], -g.rolling_radius(phi), 6 + i),
-                    (np.array([0.0, 0.0, 1.0]), -g.contact_ahead(phi), 6 + i),
+                    (self.drive_dirs[i], -rolling, 6 + i),
+                    (_UP, -ahead, 6 + i),
                     (-self.radial[i], -g.contact_radius(phi), 9 + i))):
                 A[3 * i + row, :3] = d
                 A[3 * i + row, 3:6] = -d @ skew_p  # d·(Ω × p) = −d·(p × Ω)
@@ -223,12 +230,23 @@ class HybridImpacts(_Host):
         Metric ``blockdiag(P, I_w 1, I_r 1)``; before: ``θ̇ = H_old ν`` and ``β̇`` = the
         contacting rollers' spins ``spins``. Returns ``ν⁺``.
         """
-        H_old, H_new = self.jacobian(old), self.jacobian(new)
-        ks, _ = self.roller_rows(new, thetas)
+        return self._inplane(nu, old, new, self.roller_rows(new, thetas)[0], spins)
+
+    @functools.cached_property
+    def _inplane_metric(self) -> np.ndarray:
+        """``blockdiag(P, I_w 1, I_r 1)`` of :meth:`inplane_impact` (read-only)."""
         Mw = np.zeros((9, 9))
         Mw[:3, :3] = np.diag([self.mass, self.mass, self.inertia[2, 2]])
         Mw[3:6, 3:6] = self.wheel_inertia * np.eye(3)
         Mw[6:, 6:] = self.roller_axial * np.eye(3)
+        Mw.setflags(write=False)
+        return Mw
+
+    def _inplane(self, nu: np.ndarray, old: tuple[int, ...], new: tuple[int, ...],
+                 ks: np.ndarray, spins: np.ndarray) -> np.ndarray:
+        """:meth:`inplane_impact` with the new mode's rows ``k_i`` given."""
+        H_old, H_new = self.jacobian(old), self.jacobian(new)
+        Mw = self._inplane_metric
         w = np.concatenate([nu, H_old @ nu, spins])
         A = np.hstack([np.vstack([H_new, ks]), -np.eye(6)])
         if self.roller_axial == 0.0:  # massless rollers: no spin to project
@@ -250,9 +268,7 @@ class HybridImpacts(_Host):
         cols, rows = self._massive(A)
         Ar = A[np.ix_(rows, cols)]
         impulse = np.linalg.solve(Ar @ self._full_mass_inv(cols.size) @ Ar.T, Ar @ q[cols])
-        g = self.rollers
-        xc = np.array([g.contact_ahead(float(g.phases(float(th))[m]))
-                       for m, th in zip(new, thetas, strict=True)])
+        xc = -A[[1, 4, 7], [6, 7, 8]]  # the z-rows' θ̇ entries: −x_c(φ_i)
         step = 3 if cols.size == 12 else 2
         return xc * impulse[1::step]
 
@@ -325,10 +341,11 @@ class HybridImpacts(_Host):
            of the continuous phase at the hand-over; None: zero).
         """
         accels = np.zeros(3) if wheel_accels is None else np.asarray(wheel_accels, float)
-        nu_plus = self.inplane_impact(nu, old, new, thetas, spins)
+        ks, _ = self.roller_rows(new, thetas)  # the new mode's rows, shared by the steps
+        nu_plus = self._inplane(nu, old, new, ks, spins)
         J = self.vertical_impulses(nu, old, new, thetas, spins)
         H_new = self.jacobian(new)
-        m_red = self.planar_mass(new, thetas)
+        m_red = self.planar_mass(new, thetas, ks)
         nu_plus = nu_plus + np.linalg.solve(m_red, H_new.T @ J)
         if self.penetration > 0:
             for i in range(3):
@@ -342,7 +359,6 @@ class HybridImpacts(_Host):
                     if abs(dnu[2]) >= abs(nu_plus[2]):  # friction stops, never reverses
                         dnu *= abs(nu_plus[2]) / max(abs(dnu[2]), 1e-300)
                     nu_plus = nu_plus - math.copysign(1.0, nu_plus[2]) * dnu
-        ks, _ = self.roller_rows(new, thetas)
         lost = (self.kinetic_energy(nu, old, thetas) + 0.5 * self.roller_axial * (
             spins @ spins - (ks @ nu) @ (ks @ nu)) - 0.5 * nu_plus @ m_red @ nu_plus)
         return nu_plus, float(lost)

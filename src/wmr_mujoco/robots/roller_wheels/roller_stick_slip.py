@@ -36,6 +36,7 @@ from __future__ import annotations
 import functools
 import itertools
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -136,8 +137,9 @@ class RollerPlatform:
 
     def servo_torques(self, rates: np.ndarray, commanded: np.ndarray) -> np.ndarray:
         """``clip(k_v (ω_cmd − ω), ±τ_max)``."""
-        return np.clip(self.servo_gain * (commanded - rates), -self.torque_limit,
-                       self.torque_limit)
+        # np.clip's floats (NaN kept) without its per-call cost: a step calls this
+        return np.minimum(np.maximum(self.servo_gain * (commanded - rates), -self.torque_limit),
+                          self.torque_limit)
 
     def free_forces(self, q_dot: np.ndarray, commanded: np.ndarray) -> np.ndarray:
         """Generalised forces other than the contacts: ``(−c(ν), τ)``."""
@@ -153,6 +155,18 @@ def _states(n: int) -> tuple[tuple[int, ...], ...]:
     return tuple(sorted(states, key=lambda s: sum(map(abs, s))))
 
 
+class _ActiveSet(NamedTuple):
+    """One contact state of :class:`BoxLcp`: its signs, ``W_FF⁻¹``, ``W_FB`` and indices."""
+
+    st: np.ndarray
+    inv: np.ndarray | None
+    w_fa: np.ndarray | None
+    free: np.ndarray
+    bound: np.ndarray
+    upper: np.ndarray
+    lower: np.ndarray
+
+
 class BoxLcp:
     """Coulomb impulses along fixed directions: the box-constrained LCP of one ``W``.
 
@@ -165,20 +179,19 @@ class BoxLcp:
 
     def __init__(self, delassus: np.ndarray) -> None:
         self.w = np.asarray(delassus, float)
-        self._sets: dict[tuple[int, ...], tuple[np.ndarray, np.ndarray | None,
-                                                  np.ndarray | None]] = {}
+        self._sets: dict[tuple[int, ...], _ActiveSet] = {}
 
-    def _set(self, state: tuple[int, ...]) -> tuple[np.ndarray, np.ndarray | None,
-                                                    np.ndarray | None]:
+    def _set(self, state: tuple[int, ...]) -> _ActiveSet:
         got = self._sets.get(state)
         if got is None:
             st = np.asarray(state)
             free = st == 0
+            inv = w_fa = None
             if np.any(free):
                 inv = np.linalg.inv(self.w[np.ix_(free, free)])
-                got = (st, inv, self.w[np.ix_(free, ~free)])
-            else:
-                got = (st, None, None)
+                w_fa = self.w[np.ix_(free, ~free)]
+            got = _ActiveSet(st, inv, w_fa, np.flatnonzero(free), np.flatnonzero(~free),
+                             np.flatnonzero(st > 0), np.flatnonzero(st < 0))
             self._sets[state] = got
         return got
 
@@ -194,15 +207,15 @@ class BoxLcp:
         candidates = _states(n) if guess is None else (guess, *_states(n))
         scale = tol * (1.0 + float(np.max(np.abs(slip_free))))
         for state in candidates:
-            st, inv, w_fa = self._set(state)
-            p = st * bounds
-            if inv is not None:
-                free = st == 0
-                p[free] = -inv @ (slip_free[free] + w_fa @ p[~free])
-                if np.any(np.abs(p[free]) > bounds[free] * (1.0 + 1e-9) + 1e-15):
+            a = self._set(state)
+            p = a.st * bounds
+            if a.inv is not None:
+                free = a.free
+                p[free] = -a.inv @ (slip_free[free] + a.w_fa @ p[a.bound])
+                if (np.abs(p[free]) > bounds[free] * (1.0 + 1e-9) + 1e-15).any():
                     continue
             s = slip_free + self.w @ p
-            if np.all(s[st > 0] <= scale) and np.all(s[st < 0] >= -scale):
+            if (s[a.upper] <= scale).all() and (s[a.lower] >= -scale).all():
                 return p, state
         raise ValueError("box_lcp: no contact state satisfies the Coulomb conditions")
 

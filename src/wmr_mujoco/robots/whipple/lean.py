@@ -35,6 +35,7 @@ discretisation ``[Φ Γ; 0 I] = exp([A B; 0 0] T)``).
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -80,7 +81,16 @@ def input_matrix(mats: whipple.WhippleMatrices) -> np.ndarray:
 
 def lqr_gain(speed: float, params: WhippleParams = DEFAULT_PARAMS,
              weights: BrysonWeights = BrysonWeights()) -> np.ndarray:
-    """``K`` (shape (4,)) of the LQR at ``speed`` (module docstring)."""
+    """``K`` (shape (4,)) of the LQR at ``speed`` (module docstring).
+
+    Solved once per (speed, parameters, weights): the laws of a family's members share it.
+    """
+    return _lqr_gain(positive("speed", speed), params, weights).copy()
+
+
+@functools.lru_cache(maxsize=256)
+def _lqr_gain(speed: float, params: WhippleParams, weights: BrysonWeights) -> np.ndarray:
+    """:func:`lqr_gain`, kept (``A(v)ᵀP + PA(v) − PBR⁻¹BᵀP + Q = 0``, ``K = R⁻¹BᵀP``)."""
     mats = whipple.matrices(params)
     a, b = whipple.state_matrix(positive("speed", speed), mats), input_matrix(mats)
     q, r = weights.matrices()
@@ -129,7 +139,7 @@ class WhippleLean(Controller):
 
     def torque(self, x: np.ndarray) -> float:
         """``T_δ = −K x``, clipped to the limit."""
-        return float(np.clip(-self.gain @ x, -self.max_torque, self.max_torque))
+        return _clip(float(-self.gain @ x), self.max_torque)
 
     def __call__(self, state: StateLike, reference: None, t: float) -> np.ndarray:
         """``(T_r, T_δ)`` from the speed, lean and steer (``state.twist``, ``state.extra``).
@@ -142,8 +152,13 @@ class WhippleLean(Controller):
             raise ValueError(f"state.extra lacks {missing}; the Whipple law reads {STATE_KEYS}")
         x = np.array([state.extra[k] for k in STATE_KEYS], float)
         rear = self.speed_gain * (self.speed - float(state.twist[0]))
-        return np.array([float(np.clip(rear, -self.max_torque, self.max_torque)),
+        return np.array([_clip(rear, self.max_torque),
                          self.torque(x)])
+
+
+def _clip(value: float, limit: float) -> float:
+    """``value`` clipped to ``[−limit, limit]``: ``np.clip``'s float without its per-call cost."""
+    return min(max(value, -limit), limit)
 
 
 def law(speed: float, params: WhippleParams | None) -> WhippleLean:
