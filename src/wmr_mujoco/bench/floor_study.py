@@ -10,10 +10,11 @@ metrics (median and worst over the members):
 * the share of wheel samples with no floor contact in the first 0.1 s after the step from
   rest, and over the whole run;
 * the deepest penetration of a wheel into the floor;
-* the real-time factor of bare ``mj_step`` loops on random inputs, one thread, at the
-  robot's timestep and at 2× and 4× it (the same model with ``opt.timestep`` scaled;
-  MuJoCo keeps each contact's time constant at least twice the step), the settings timed
-  in alternating rounds of one run, median of the rounds.
+* the real-time factor (simulated time over this process's CPU time) of bare ``mj_step``
+  loops on random inputs, one thread, at the robot's timestep and at 2× and 4× it (the
+  same model with ``opt.timestep`` scaled; MuJoCo keeps each contact's time constant at
+  least twice the step), the settings timed in alternating rounds of one run, median of
+  the rounds.
 
 Each robot gets a row at its defaults and, where they differ, one at main's defaults
 before issue 24 § 4 (:data:`~wmr_mujoco.bench.default_speed.PREVIOUS_DEFAULTS`: contact
@@ -107,7 +108,7 @@ def _settings(robot: str) -> list[tuple[str, RobotParams | None]]:
 
 
 def _loop(run: Settled, inputs: np.ndarray, factor: int, seconds: float) -> float:
-    """Wall time, s, of ``seconds`` of the run of ``drive`` at ``factor`` × the step.
+    """CPU time of this process, s, of ``seconds`` of the run of ``drive`` at ``factor`` × the step.
 
     The same controls as :func:`~wmr_mujoco.bench.floor_runs.drive`, without its reading.
 
@@ -122,14 +123,14 @@ def _loop(run: Settled, inputs: np.ndarray, factor: int, seconds: float) -> floa
         mujoco.mj_setState(m, d, run.state, STATE)
         mujoco.mj_forward(m, d)
         per = max(1, round(CONTROL_PERIOD / m.opt.timestep))
-        start = time.perf_counter()
+        start = time.process_time()  # CPU time: a shared machine's load is not counted
         for u in inputs[:round(seconds / CONTROL_PERIOD)]:
             d.ctrl[:] = ad.controls(u, np.asarray(ad.sim_state(m, d), float))
             for _ in range(per):
                 mujoco.mj_step(m, d)
-        wall = time.perf_counter() - start
+        cpu = time.process_time() - start
         check_healthy(m, d)
-        return wall
+        return cpu
     finally:
         m.opt.timestep = base
 
