@@ -163,14 +163,17 @@ class BenchRun:
         return cls(prep.model, prep.data, prep.controls)
 
     def seconds(self) -> float:
-        """Wall time of one ``mujoco.rollout`` of the whole run on one thread."""
+        """CPU time of one ``mujoco.rollout`` of the whole run on one thread.
+
+        This process's CPU time: a shared machine's load is not counted.
+        """
         from wmr_mujoco.sim.engine import Engine, simulate
 
         data = mujoco.MjData(self.model)
         mujoco.mj_copyData(data, self.model, self.start)
-        t0 = time.perf_counter()
+        t0 = time.process_time()
         simulate(self.model, data, self.controls, Engine.ROLLOUT)
-        return time.perf_counter() - t0
+        return time.process_time() - t0
 
     def contacts(self) -> float:
         """Mean contacts per step over the first :data:`CONTACT_STEPS` steps."""
