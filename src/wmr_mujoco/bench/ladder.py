@@ -163,10 +163,7 @@ class BenchRun:
         return cls(prep.model, prep.data, prep.controls)
 
     def seconds(self) -> float:
-        """CPU time of one ``mujoco.rollout`` of the whole run on one thread.
-
-        This process's CPU time: a shared machine's load is not counted.
-        """
+        """CPU time (this process's) of one ``mujoco.rollout`` of the run on one thread."""
         from wmr_mujoco.sim.engine import Engine, simulate
 
         data = mujoco.MjData(self.model)
