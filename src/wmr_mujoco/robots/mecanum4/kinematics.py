@@ -152,7 +152,7 @@ class MecanumKinematics:
         """
         x0 = np.asarray(x0, float)
         nu = np.asarray(inputs, float).reshape(-1, 3)
-        realised = np.array([self.realised(row) for row in nu]).reshape(-1, 3)
+        realised = self._realised_rows(nu)
         if self.step is None:
             return np.concatenate([twist_steps(x0[:3], realised, dt),
                                    twist_steps(x0[3:6], nu, dt)], axis=1)
@@ -184,6 +184,22 @@ class MecanumKinematics:
                     [[x0[3 * i + j]], h * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3])]))
             out[:, 3 * i + 2] = heading
         return out
+
+    def _realised_rows(self, nu: np.ndarray) -> np.ndarray:
+        """(N, 3) :meth:`realised` of each row of ``nu``, once per distinct row.
+
+        Rows are told apart by their bytes (a −0.0 is not a 0.0) and each distinct row
+        is computed in order of first appearance, as row-by-row calls would.
+        """
+        rows = np.ascontiguousarray(nu, float)
+        if not len(rows):
+            return np.empty((0, 3))
+        keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * 3))).ravel()
+        _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+        values = np.empty((len(first), 3))
+        for j in np.argsort(first, kind="stable"):
+            values[j] = self.realised(rows[first[j]])
+        return values[inverse.ravel()]
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """The ``base`` site's pose, once for each model (and the clock of a step run)."""
