@@ -175,7 +175,8 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     is known before MuJoCo runs: ``u_k = u(k Δt)``, ``ctrl_k = controls(u_k, x_k)`` and
     ``x_{k+1} = RK4(x_k, u_k)``, or ``adapter.exact_step(x_k, u_k, Δt)`` where the adapter has
     an exact step for a held input; ``adapter.trajectory(x_0, inputs, Δt)`` where it has
-    one (the same states, all steps at once).
+    one (the same states, all steps at once), and then ``adapter.controls_on(inputs,
+    states)`` where it has one (the same controls, all steps at once).
 
     Returns:
         ``(inputs (N, m), controls (N, nu), analytic (N + 1, n))``.
@@ -185,6 +186,9 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     trajectory = getattr(adapter, "trajectory", None)  # every step at once, where it has one
     if trajectory is not None:
         states = np.asarray(trajectory(x, inputs, dt), float)
+        controls_on = getattr(adapter, "controls_on", None)  # all at once, where it has one
+        if controls_on is not None:
+            return inputs, np.asarray(controls_on(inputs, states[:-1]), float), states
         controls = [adapter.controls(u, xk) for u, xk in zip(inputs, states, strict=False)]
         return inputs, np.asarray(controls), states
     step = getattr(adapter, "exact_step", None)  # where the adapter has one

@@ -34,7 +34,7 @@ from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
 from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.roller_wheels.roller_stick_slip import StepResponse, step_response
-from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose, per_distinct_row
 from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking, rms
 from wmr_mujoco.validation.scenarios import Scenario
 
@@ -186,20 +186,12 @@ class MecanumKinematics:
         return out
 
     def _realised_rows(self, nu: np.ndarray) -> np.ndarray:
-        """(N, 3) :meth:`realised` of each row of ``nu``, once per distinct row.
+        """(N, 3) :meth:`realised` of each row of ``nu``, once per distinct row."""
+        return per_distinct_row(self.realised, nu, 3)
 
-        Rows are told apart by their bytes (a −0.0 is not a 0.0) and each distinct row
-        is computed in order of first appearance, as row-by-row calls would.
-        """
-        rows = np.ascontiguousarray(nu, float)
-        if not len(rows):
-            return np.empty((0, 3))
-        keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * 3))).ravel()
-        _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
-        values = np.empty((len(first), 3))
-        for j in np.argsort(first, kind="stable"):
-            values[j] = self.realised(rows[first[j]])
-        return values[inverse.ravel()]
+    def controls_on(self, inputs: np.ndarray, states: np.ndarray) -> np.ndarray:
+        """(N, 4) :meth:`controls` of every step, once per distinct input (they read no state)."""
+        return per_distinct_row(lambda u: self.controls(u, None), inputs, self.jacobian.shape[0])
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """The ``base`` site's pose, once for each model (and the clock of a step run)."""
