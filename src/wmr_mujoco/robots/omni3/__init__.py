@@ -249,5 +249,7 @@ SPEC = RobotSpec(
     clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
     peer=peer.peer_comparison, command=COMMAND,
     scene_extras=builder.floor_pairs, prepare=families.prepare, open_targets=STEP_OPEN,
+    # The step and torque runs (2 s each): one batch, the hybrid model's cost per step.
+    prepared_together=tuple(s.name for s in (*dynamics.STEP_SPECS, *dynamics.TORQUE_SPECS)),
     learning=Learning("Omni3", scale=0.5, max_curvature=3.0, bands=NO_RADIUS_BANDS),
 )
