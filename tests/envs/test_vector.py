@@ -56,8 +56,8 @@ def test_native_equals_n_single_envs_with_the_same_seeds(env_id, mode, n):
     # flag and info must be bit for bit those of Gymnasium's SyncVectorEnv over n single
     # environments seeded alike. Light and heavy robots, each task kind, every autoreset
     # mode, randomisation on, episodes ending (0.3 s) and so resets mixed with steps;
-    # steering servos batched (bicycle, single steer) or each world's own controller
-    # (tricycle). Both paths: below BATCHED_FROM worlds each world through its single
+    # steering servos batched (bicycle, single steer; the tricycle's with its command map's
+    # adjustment, world by world). Both paths: below BATCHED_FROM worlds each world through its single
     # environment (envs.serial), from it on the batched arrays (envs.batched).
     native = gym.make_vec(env_id, num_envs=n, autoreset_mode=mode, randomize=True, **SHORT)
     assert isinstance(native.engine, Batched if n >= BATCHED_FROM else Serial)

@@ -2,7 +2,8 @@
 
 Runs :mod:`wmr_mujoco.bench.env_success` on every environment (100 seeded episodes each,
 10 with ``--quick``) and :mod:`wmr_mujoco.bench.env_throughput` on every environment
-(medians of 3 runs of 1 s; 1 run of 0.2 s with ``--quick``), and writes both tables
+(5 rounds of 1 s runs, each ratio the median of the rounds' paired ratios; 1 round of
+0.2 s with ``--quick``), and writes both tables
 with the worst figures and the goals beside them. Without Gymnasium (the ``rl`` extra)
 the section says so and is left out.
 """
@@ -23,7 +24,7 @@ def env_section(quick: bool) -> tuple[dict[str, object] | None, str]:
     from wmr_mujoco.bench import env_success, env_throughput
 
     episodes = 10 if quick else 100
-    seconds, repeats = (0.2, 1) if quick else (1.0, 3)
+    seconds, repeats = (0.2, 1) if quick else (1.0, 5)
     success = {}
     for env_id in wenvs.ENV_IDS:
         print(f"  scripted {env_id} ...", file=sys.stderr, flush=True)
@@ -44,7 +45,9 @@ def env_section(quick: bool) -> tuple[dict[str, object] | None, str]:
         env_success.HEADER + "\n" + "\n".join(env_success.row(i, r) for i, r in success.items()),
         f"Steps per second in one process against a bare `mj_step` loop with the same frame "
         f"skip, replaying a scripted episode (`python -m wmr_mujoco.bench.env_throughput`; "
-        f"medians of {repeats} runs of {seconds:g} s; resets timed apart): worst env / bare "
+        f"{repeats} rounds of {seconds:g} s runs, each ratio the median of the ratios within "
+        f"a round, the bare loop timed first and last in it; resets timed apart): worst "
+        f"env / bare "
         f"{100 * worst_env:.0f} % (single env); worst native vector environment "
         f"(`gymnasium.make_vec`, batched step) / bare at {env_throughput.JUDGED} worlds "
         f"{100 * worst_vec:.0f} % (goal >= {100 * env_throughput.GOAL:.0f} %), at 64 worlds "

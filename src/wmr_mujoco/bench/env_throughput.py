@@ -30,8 +30,10 @@ within half a second). Each loop starts the episode again at its end; the time o
 resets is left out of the steps/s (a reset settles the robot on the floor for half a
 simulated second: physics that the bare loop does not do) and printed apart as
 ``reset ms``. All run in this one process and are timed in its CPU time (:data:`CLOCK`):
-steps per second of one core. Each figure is the median of ``--repeats`` timed runs of
-``--seconds`` after a warm-up, the loops taking turns.
+steps per second of one core. Each steps/s figure is the median of ``--repeats`` rounds of
+timed runs of ``--seconds`` after a warm-up, the loops taking turns; each ratio is the
+median over the rounds of the ratio within a round (the bare loop timed first and last in
+it), so that a load that changes from round to round cancels out of the ratio.
 """
 
 from __future__ import annotations
@@ -202,24 +204,36 @@ def loops(env_id: str, vector: int
 
 
 def measure(env_id: str, seconds: float, repeats: int, vector: int = 4) -> dict[str, float]:
-    """Median steps/s of the five loops (module docstring) and their ratios to bare."""
+    """Median steps/s of the five loops (module docstring) and their ratios to bare.
+
+    Each round times the bare loop first and last and the other loops between; a loop's
+    ratio is the median over rounds of its steps/s over the mean of its round's two bare
+    runs (paired within a round, so that a load that changes between rounds cancels).
+    """
     runs, skip, reset = loops(env_id, vector)
     sizes = {**vector_sizes(vector), "sync": vector}
     for run in runs.values():
         run(10)
+    others = [name for name in runs if name != "bare"]
     samples: dict[str, list[float]] = {name: [] for name in (*runs, "reset_ms")}
+    ratios: dict[str, list[float]] = {name: [] for name in others}
     for _ in range(repeats):
-        for name, run in runs.items():
-            samples[name].append(rate(run, seconds) * sizes.get(name, 1))
+        first = rate(runs["bare"], seconds)
+        here = {name: rate(runs[name], seconds) * sizes.get(name, 1) for name in others}
+        last = rate(runs["bare"], seconds)
+        samples["bare"].append(0.5 * (first + last))
+        for name, value in here.items():
+            samples[name].append(value)
+            ratios[name].append(value / samples["bare"][-1])
         t0 = CLOCK()
         reset()
         samples["reset_ms"].append(1e3 * (CLOCK() - t0))
     out: dict[str, float] = {name: statistics.median(x) for name, x in samples.items()}
+    for name in others:
+        out[f"{name}_ratio"] = statistics.median(ratios[name])
     for name in vector_sizes(vector):
         if name not in out:  # the --vector loop's size
-            out[name] = out["vector"]
-    for name in ("env", *vector_sizes(vector), "sync", "drive"):
-        out[f"{name}_ratio"] = out[name] / out["bare"]
+            out[name], out[f"{name}_ratio"] = out["vector"], out["vector_ratio"]
     out["frame_skip"] = skip
     return out
 
@@ -297,7 +311,8 @@ def summary(rows: dict[str, dict[str, float]], vector: int, repeats: int,
             f"{low('vector64_ratio')}, at {vector} worlds {low('vector_ratio')}; single env / "
             f"bare {low('env_ratio')}; sync / bare {low('sync_ratio')} (Gymnasium's sync "
             f"vectorisation of {vector}, for comparison). "
-            f"Medians of {repeats} runs of {seconds:g} s, one process, CPU time.")
+            f"{repeats} rounds of {seconds:g} s runs, ratios paired within a round (medians), "
+            "one process, CPU time.")
 
 if __name__ == "__main__":
     raise SystemExit(main())

@@ -55,28 +55,47 @@ def each(fn: Callable[..., float], a: np.ndarray, b: np.ndarray | float | None =
     return np.fromiter(it, float, len(a))
 
 
-def _servo(episode: Episode) -> tuple[np.ndarray, list[int], list[tuple[int, float]], float
-                                      ] | None:
-    """The servo channels and ``W`` of a steering robot's command map, or None.
+class Servo(NamedTuple):
+    """A steering robot's command map as :class:`RateCommand`'s ``bind`` runs it.
 
-    ``(W, act rows, (channel, ω_max) per servo, T)`` where the command map is one that
-    :class:`~wmr_mujoco.validation.command.RateCommand`'s ``bind`` runs as servo channels
-    then ``ctrl = W u`` (no adjustment, a linear map); None for any other.
+    Servo channels ``ω = clip((φ_cmd − φ_target) / T, ±ω_max)``, then ``adjust`` (if any)
+    on each world's inputs, then ``ctrl = W u``.
+
+    Attributes:
+        w: ``W``; acts: the servos' ``act`` rows (the targets ``φ_target``);
+        channels: ``(channel, ω_max)`` per servo; period: ``T``, s;
+        adjust: the command map's ``adjust`` or None; adapter: its kinematic adapter.
+    """
+
+    w: np.ndarray
+    acts: list[int]
+    channels: list[tuple[int, float]]
+    period: float
+    adjust: Callable[..., np.ndarray] | None
+    adapter: object
+
+
+def _servo(episode: Episode) -> Servo | None:
+    """The :class:`Servo` of a steering robot's command map, or None.
+
+    None unless the command map is one that
+    :class:`~wmr_mujoco.validation.command.RateCommand`'s ``bind`` runs as servo channels,
+    ``adjust``, then ``ctrl = W u`` (a linear, state-independent map).
     """
     robot, st = episode.robot, episode.stepper
     cmap = robot.spec.command
     if robot.mode != "command" or st.controller is None or not isinstance(cmap, RateCommand) \
-            or type(cmap).bind is not RateCommand.bind or not cmap.servo \
-            or cmap.adjust is not None:
+            or type(cmap).bind is not RateCommand.bind or not cmap.servo:
         return None
-    w = cmap.matrix(cmap.analytic(robot.params))
+    adapter = cmap.analytic(robot.params)
+    w = cmap.matrix(adapter)
     if w is None:
         return None
     model = robot.model
     acts = [int(model.actuator_actadr[model.actuator(s.actuator).id]) for s in cmap.servo]
     channels = [(s.channel, limit) for s, limit in
                 zip(cmap.servo, cmap.rate_limits(model).tolist(), strict=True)]
-    return w, acts, channels, st.period
+    return Servo(w, acts, channels, st.period, cmap.adjust, adapter)
 
 
 class States(NamedTuple):
@@ -124,6 +143,9 @@ class Worlds:
         self._c, self._h = np.array(first._c), np.array(first._h)
         st = self.steppers
         self._datas = [s.data for s in st]
+        #: Each world's ``act`` (the servo targets): a view per world, taken once (each
+        #: attribute read makes a new one), as the stepper keeps its ``ctrl``.
+        self._act = [d.act for d in self._datas]
         self._xpos = [s._xpos for s in st]
         self._xmat = [s._xmat for s in st]
         self._qvel = [s._qvel for s in st]
@@ -150,12 +172,15 @@ class Worlds:
         if active is None and self._inline is not None and self._servo is not None:
             # RateCommand.bind's servo channels: ω = clip((φ_cmd − φ_target) / T, ±ω_max),
             # the targets φ_target read from each world's ``act``
-            _, acts, channels, period = self._servo
-            targets = np.array([d.act for d in self._datas])[:, acts]
+            _, acts, channels, period, adjust, adapter = self._servo
+            targets = np.array(self._act)[:, acts]
             u = commands.copy()
             for k, (channel, limit) in enumerate(channels):
                 u[:, channel] = np.minimum(limit, np.maximum(
                     -limit, (commands[:, channel] - targets[:, k]) / period))
+            if adjust is not None:  # on each world's inputs and targets (floats), as bind
+                u = np.array([adjust(adapter, row, phi)
+                              for row, phi in zip(u, targets.tolist(), strict=True)])
             commands = u
         if active is None and self._inline is not None:  # Stepper.advance, inlined
             step1, step, step2 = mujoco.mj_step1, mujoco.mj_step, mujoco.mj_step2
