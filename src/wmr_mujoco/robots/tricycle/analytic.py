@@ -73,7 +73,9 @@ def midpoint_speeds(v_left: np.ndarray, steer: np.ndarray, track: float, wheelba
     """
     c = float(track) / (2.0 * float(wheelbase))
     k = np.array([c * math.tan(s) for s in np.asarray(steer, float).tolist()])
-    return np.where(np.abs(1.0 - k) < 1e-12, np.nan, np.asarray(v_left, float) / (1.0 - k))
+    with np.errstate(divide="ignore", invalid="ignore"):  # those entries are NaN below
+        v = np.asarray(v_left, float) / (1.0 - k)
+    return np.where(np.abs(1.0 - k) < 1e-12, np.nan, v)
 
 
 def differential_speeds(v_carrier: float, steer: float, track: float, wheelbase: float
