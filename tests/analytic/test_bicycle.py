@@ -42,3 +42,37 @@ def test_straight_ahead_has_no_icr():
 def test_bad_wheelbase_is_refused(ell):
     with pytest.raises(ValueError, match="wheelbase"):
         bicycle.rates([0, 0, 0, 0.1], [1.0, 0.0], ell)
+
+
+def _stepwise(q0, inputs, dt, ell, speed=None):
+    from wmr_mujoco.analytic.integrate import rk4_states
+
+    def rhs(q, u):
+        v = u[0] if speed is None else speed(np.array([u[0]]), np.array([q[3]]))[0]
+        return bicycle.rates(q, np.array([v, u[1]]), ell)
+    return rk4_states(rhs, q0, inputs, dt)
+
+
+def test_rk4_trajectory_is_rk4_step_bit_for_bit():
+    # A steering ramp and hold, the speed changing every 100 steps, through a full turn
+    # (cos ψ and sin ψ of every sign): each state is the step-by-step RK4's, to the bit.
+    rng = np.random.default_rng(5)
+    n, dt, ell = 3000, 2e-3, 0.9
+    steer_rate = np.where(np.arange(n) < 400, 1.0, 0.0) * 0.6
+    inputs = np.column_stack([np.repeat(rng.uniform(0.5, 2.0, n // 100), 100), steer_rate])
+    q0 = np.array([0.2, -0.1, 2.5, 0.0])
+    want = _stepwise(q0, inputs, dt, ell)
+    np.testing.assert_array_equal(bicycle.rk4_trajectory(q0, inputs, dt, ell), want)
+    # With a stage speed that reads φ (the tricycle's): the same.
+    speed = lambda v, phi: v / (1.0 - 0.3 * np.tan(phi))  # noqa: E731
+    np.testing.assert_array_equal(bicycle.rk4_trajectory(q0, inputs, dt, ell, speed),
+                                  _stepwise(q0, inputs, dt, ell, speed))
+
+
+def test_rk4_trajectory_declines_what_it_cannot_give():
+    q0 = np.zeros(4)
+    inputs = np.tile([1.0, 0.0], (10, 1))
+    assert bicycle.rk4_trajectory(q0, np.array([[1.0, np.nan]]), 1e-3, 1.0) is None
+    assert bicycle.rk4_trajectory(np.array([0, 0, 0, np.inf]), inputs, 1e-3, 1.0) is None
+    assert bicycle.rk4_trajectory(q0, inputs, 1e-3, 1.0, lambda v, p: v * np.nan) is None
+    assert bicycle.rk4_trajectory(q0, inputs[:, :1], 1e-3, 1.0) is None

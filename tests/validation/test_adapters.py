@@ -52,3 +52,38 @@ def test_twist_is_the_site_velocity_in_the_body_frame():
     arm = rot @ np.array([0.1, 0.05])
     world = vel[:2] + rate * np.array([-arm[1], arm[0]])
     np.testing.assert_allclose(body_twist(model, data), [*(rot.T @ world), rate], atol=1e-12)
+
+
+def test_per_distinct_row_calls_once_per_row_in_first_appearance_order():
+    from wmr_mujoco.validation.adapters import per_distinct_row
+
+    rows = np.array([[1.0, 2.0], [0.0, 1.0], [1.0, 2.0], [-0.0, 1.0], [0.0, 1.0]])
+    calls = []
+
+    def fn(r):
+        calls.append(r.tolist())
+        return [r[0] + r[1], np.copysign(1.0, r[0])]
+
+    got = per_distinct_row(fn, rows, 2)
+    np.testing.assert_array_equal(got, [[3, 1], [1, 1], [3, 1], [1, -1], [1, 1]])
+    assert calls == [[1.0, 2.0], [0.0, 1.0], [-0.0, 1.0]]  # -0.0 is its own row
+    assert per_distinct_row(fn, np.empty((0, 2)), 2).shape == (0, 2)
+
+
+@pytest.mark.parametrize("robot, name", [("omni3", "translate+rotate"),
+                                         ("omni3", "square with rotation"),
+                                         ("mecanum4", "rotate (ramp)")])
+def test_controls_on_are_the_controls_of_each_step(robot, name):
+    from wmr_mujoco import load
+    from wmr_mujoco.robots import get_spec
+    from wmr_mujoco.validation.runner import make_adapter
+
+    spec = get_spec(robot)
+    s = next(x for x in spec.scenarios if x.name == name).members(0, 1)[0]
+    model = load(robot)
+    adapter = make_adapter(spec, s, model)
+    inputs = s.inputs_on(3000, model.opt.timestep)
+    states = adapter.trajectory(np.zeros(len(adapter.state_names)), inputs,
+                                model.opt.timestep)
+    want = [adapter.controls(u, x) for u, x in zip(inputs, states, strict=False)]
+    np.testing.assert_array_equal(adapter.controls_on(inputs, states[:-1]), want)

@@ -252,3 +252,59 @@ def test_a_step_is_redone_only_for_what_reads_it_and_records_the_same():
     assert out[0][0] == out[1][0]
     for key in ("time", "sim", "analytic"):
         np.testing.assert_array_equal(out[0][1][key], out[1][1][key])
+
+
+def test_a_probe_with_after_is_resampled_only_after_it():
+    """A probe's ``after`` spares the re-steps up to it; the probe sees the same samples.
+
+    One probe reads every sample, the other ignores those at t <= 0.3 s (its ``after``):
+    the second run redoes only the steps after 0.3 s (counted at MuJoCo's step), and the
+    samples it is given after 0.3 s are those the first saw there.
+    """
+    import dataclasses
+
+    import mujoco
+
+    from wmr_mujoco.sim.engine import simulate
+    from wmr_mujoco.validation.metrics import Trace
+    from wmr_mujoco.validation.runner import first_read, measure_metrics, prepare
+
+    class Recording:
+        def __init__(self, after=None):
+            self.seen = []
+            if after is not None:
+                self.after = after
+
+        def observe(self, sample):
+            if sample.t > getattr(self, "after", -1.0):
+                self.seen.append((sample.k, sample.data.qacc.copy()))
+
+        def metrics(self):
+            return []
+
+    spec = get_spec("omni3_reduced")
+    s = dataclasses.replace(next(x for x in spec.scenarios if x.name == "translate+rotate"),
+                            duration=0.6)
+    runs = []
+    for probe in (Recording(), Recording(after=0.3)):
+        sp = dataclasses.replace(spec, probes=(lambda *a, p=probe: p,))
+        prep = prepare(sp, s)
+        assert first_read([probe], prep.adapter) == getattr(probe, "after", -np.inf)
+        states = simulate(prep.model, prep.data, prep.controls)
+        steps = []
+        original = mujoco.mj_step
+        try:
+            mujoco.mj_step = lambda m, d, *a, s=steps, f=original: (s.append(d.time),
+                                                                    f(m, d, *a))[1]
+            measure_metrics(prep, states, Trace())
+        finally:
+            mujoco.mj_step = original
+        runs.append((probe.seen, steps, prep))
+    (every, steps_all, prep), (late, steps_late, _) = runs
+    dt, settle = prep.model.opt.timestep, s.settle
+    assert len(steps_late) < len(steps_all)
+    assert all(t - settle > 0.3 - dt for t in steps_late)  # each redone step starts after 0.3 s
+    assert [k for k, _ in late] == [k for k, _ in every if k * dt > 0.3]
+    for (_, a), (_, b) in zip(late, [x for x in every if x[0] * dt > 0.3], strict=True):
+        np.testing.assert_array_equal(a, b)
+    assert first_read([], prep.adapter) == np.inf  # nothing reads: no re-step

@@ -29,6 +29,20 @@ def rk4_step(rhs: Rhs, x: np.ndarray, u: np.ndarray, dt: float) -> np.ndarray:
     return x + dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
 
 
+def rk4_states(rhs: Rhs, x0: np.ndarray, inputs: np.ndarray, dt: float) -> np.ndarray:
+    """(N + 1, n) states of :func:`rk4_step` with ``inputs[k]`` held over step k, ``x0`` first.
+
+    The validation runner's step-by-step schedule (no checks beyond ``rhs``'s own): what
+    an adapter's faster ``trajectory`` falls back to where it cannot give the same floats.
+    """
+    x = np.asarray(x0, float)
+    out = [x]
+    for u in inputs:
+        x = rk4_step(rhs, x, u, dt)
+        out.append(x)
+    return np.asarray(out)
+
+
 def integrate(rhs: Rhs, x0: np.ndarray, inputs: np.ndarray, dt: float,
               substeps: int = 1) -> np.ndarray:
     """Integrate ``ẋ = rhs(x, u_k)`` over ``len(inputs)`` intervals of length ``dt``.

@@ -95,3 +95,25 @@ def body_twist(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
     vel = np.zeros(6)
     mujoco.mj_objectVelocity(model, data, mujoco.mjtObj.mjOBJ_SITE, site, vel, 1)
     return np.array([vel[3], vel[4], vel[2]])
+
+
+def per_distinct_row(fn: Callable[[np.ndarray], object], rows: np.ndarray,
+                     width: int) -> np.ndarray:
+    """``np.array([fn(r) for r in rows])`` with ``fn`` called once per distinct row.
+
+    Rows are told apart by their bytes (a −0.0 is not a 0.0), and each distinct row's
+    ``fn`` is called in order of first appearance, as the row-by-row calls would
+    (``fn`` must be a function of the row alone). ``width``: entries of ``fn``'s value.
+
+    Returns:
+        (len(rows), width).
+    """
+    rows = np.ascontiguousarray(rows, float)
+    if not len(rows):
+        return np.empty((0, width))
+    keys = rows.reshape(len(rows), -1).view(np.dtype((np.void, rows[0].nbytes))).ravel()
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    values = np.empty((len(first), width))
+    for j in np.argsort(first, kind="stable"):
+        values[j] = fn(rows[first[j]])
+    return values[inverse.ravel()]

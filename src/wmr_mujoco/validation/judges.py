@@ -137,12 +137,30 @@ def lateral_slip(model: mujoco.MjModel, data: mujoco.MjData,
     if not wheels or data.ncon == 0:
         return out
     jacp = np.zeros((3, model.nv))
-    contact_bodies = model.geom_bodyid[data.contact.geom[:data.ncon]]
-    positions = data.contact.pos[:data.ncon]
-    for i, name in enumerate(wheels):
-        jid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, name)
-        body = int(model.jnt_bodyid[jid])
-        for c in np.flatnonzero((contact_bodies == body).any(axis=1)):
-            mujoco.mj_jac(model, data, jacp, None, positions[c], body)
-            out[i] = float(data.xaxis[jid] @ (jacp @ data.qvel))
+    con = data.contact
+    contact_bodies = model.geom_bodyid[con.geom[:data.ncon]].tolist()
+    positions = con.pos[:data.ncon]
+    for i, (jid, body) in enumerate(_wheel_joints(model, tuple(wheels))):
+        for c, pair in enumerate(contact_bodies):
+            if body in pair:  # the contacts of this wheel's body, in order
+                mujoco.mj_jac(model, data, jacp, None, positions[c], body)
+                out[i] = float(data.xaxis[jid] @ (jacp @ data.qvel))
     return out
+
+
+def _wheel_joints(model: mujoco.MjModel, wheels: tuple[str, ...]
+                  ) -> list[tuple[int, int]]:
+    """``(joint id, body id)`` of each named wheel hinge (kept per model and names)."""
+    key = (id(model), wheels)
+    got = _WHEEL_JOINTS.get(key)
+    if got is None or got[0] is not model:
+        if len(_WHEEL_JOINTS) > 64:
+            _WHEEL_JOINTS.clear()
+        ids = [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, n) for n in wheels]
+        got = _WHEEL_JOINTS[key] = (model, [(j, int(model.jnt_bodyid[j])) for j in ids])
+    return got[1]
+
+
+#: :func:`_wheel_joints` per (model, wheel names); the model is kept with its entry so that
+#: an id reused by a later model is not mistaken for it.
+_WHEEL_JOINTS: dict[tuple[int, tuple[str, ...]], tuple[mujoco.MjModel, list]] = {}

@@ -14,7 +14,6 @@ member's own result is kept (``ScenarioResult.members``) for the report's spread
 
 from __future__ import annotations
 
-import time
 import traceback
 from collections.abc import Callable, Mapping, Sequence
 
@@ -38,6 +37,7 @@ from wmr_mujoco.validation.runner import (
 )
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.spec import RobotSpec
+from wmr_mujoco.validation.units import run_unit, units
 from wmr_mujoco.validation.worst import worst_member, worst_rows
 
 #: Threads of a family's batched rollout (the machines this runs on have two cores).
@@ -142,7 +142,8 @@ def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = N
     ``progress`` gets one line ``"[k/n] robot/scenario"`` as the k-th result is there
     (numbered by completion), besides the tracebacks of failed runs; ``on_result`` sees
     each result as soon as it is there. Each result's ``seconds`` is its family's wall
-    time.
+    time. A robot's families prepared together run as one unit
+    (:mod:`wmr_mujoco.validation.units`).
 
     Raises:
         ValueError: a bad ``seed``, ``draws`` or ``jobs``, before anything runs.
@@ -153,14 +154,14 @@ def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = N
     check_jobs(jobs)
     if jobs > 1 and len(work) > 1 and can_fork():
         return run_pooled(work, jobs, seed, draws, progress, on_result, hints)
-    results = []
-    for spec, s in work:
-        start = time.perf_counter()
-        result = run_family(spec, s, seed, draws, progress)
-        result.seconds = time.perf_counter() - start
-        results.append(result)
-        if progress:
-            progress(f"[{len(results)}/{len(work)}] {s.key}")
-        if on_result:
-            on_result(result)
-    return results
+    results: list[ScenarioResult | None] = [None] * len(work)
+    done = 0
+    for unit in units(work):  # a robot's families prepared together run together
+        for i, result in run_unit(work, unit, seed, draws, progress):
+            results[i] = result
+            done += 1
+            if progress:
+                progress(f"[{done}/{len(work)}] {result.scenario.key}")
+            if on_result:
+                on_result(result)
+    return results  # type: ignore[return-value]

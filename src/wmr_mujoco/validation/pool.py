@@ -3,7 +3,8 @@
 The families of a validation are independent: each loads its own model, draws its own
 members from ``(seed, scenario key)`` and runs them (:func:`~wmr_mujoco.validation.members.
 run_family`). :func:`run_pooled` hands them to ``N`` worker processes, each running whole
-families one after the other, and puts the results back in the declared order, so that
+units one after the other (a family, or a robot's families prepared together:
+:mod:`wmr_mujoco.validation.units`), and puts the results back in the declared order, so that
 everything printed and written after the run is what one process gives (the same
 figures, bit for bit: a family's result does not depend on which process ran it or what
 ran before it there). What comes back in completion order is only the progress line
@@ -29,7 +30,6 @@ from __future__ import annotations
 import json
 import multiprocessing
 import signal
-import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -39,6 +39,7 @@ from wmr_mujoco.validation.metrics import Trace
 from wmr_mujoco.validation.runner import Job, ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
 from wmr_mujoco.validation.targets import Row
+from wmr_mujoco.validation.units import run_unit, unit_hint, units
 
 
 def can_fork() -> bool:
@@ -88,11 +89,17 @@ def time_hints(folder: Path) -> dict[str, float]:
 
 
 def hand_out_order(work: Sequence[Job], hints: Mapping[str, float] | None) -> list[int]:
-    """Indices of ``work``: those without a hint in declared order, then longest first."""
+    """Indices of the units of ``work``: those without a hint first, then longest first.
+
+    Units: :func:`~wmr_mujoco.validation.units.units` (in declared order); a unit's hint
+    is the sum of its families'.
+    """
     hints = hints or {}
-    unknown = [i for i, (_, s) in enumerate(work) if s.key not in hints]
-    known = sorted((i for i, (_, s) in enumerate(work) if s.key in hints),
-                   key=lambda i: (-hints[work[i][1].key], i))
+    groups = units(work)
+    times = [unit_hint(work, u, hints) for u in groups]
+    unknown = [j for j, t in enumerate(times) if t is None]
+    known = sorted((j for j, t in enumerate(times) if t is not None),
+                   key=lambda j: (-times[j], j))  # type: ignore[operator]
     return unknown + known
 
 
@@ -106,17 +113,12 @@ def _init_worker() -> None:
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
-def _run_one(i: int) -> tuple[int, Detached, list[str]]:
-    """Family ``i`` of the shared jobs, timed; its progress notes (tracebacks) kept."""
-    from wmr_mujoco.validation.members import run_family
-
-    spec, s = _SHARED["work"][i]  # type: ignore[index]
+def _run_one(j: int) -> tuple[list[tuple[int, Detached]], list[str]]:
+    """Unit ``j`` of the shared jobs, each family timed; the progress notes kept."""
     notes: list[str] = []
-    start = time.perf_counter()
-    result = run_family(spec, s, _SHARED["seed"], _SHARED["draws"],  # type: ignore[arg-type]
-                        notes.append)
-    result.seconds = time.perf_counter() - start
-    return i, detach(result), notes
+    done = run_unit(_SHARED["work"], _SHARED["units"][j], _SHARED["seed"],  # type: ignore
+                    _SHARED["draws"], notes.append)  # type: ignore[arg-type]
+    return [(i, detach(result)) for i, result in done], notes
 
 
 def _call(i: int) -> object:
@@ -165,20 +167,24 @@ def run_pooled(work: Sequence[Job], jobs: int, seed: int, draws: int | None,
         raise ValueError("worker processes need the 'fork' start method, which this "
                          "platform lacks; use jobs=1")
     results: list[ScenarioResult | None] = [None] * len(work)
-    _SHARED.update(work=list(work), seed=seed, draws=draws)
-    pool = multiprocessing.get_context("fork").Pool(min(jobs, len(work)), _init_worker)
+    groups = units(work)
+    _SHARED.update(work=list(work), units=groups, seed=seed, draws=draws)
+    pool = multiprocessing.get_context("fork").Pool(min(jobs, len(groups)), _init_worker)
     try:
         order = hand_out_order(work, hints)
-        for done, (i, detached, notes) in enumerate(
-                pool.imap_unordered(_run_one, order, chunksize=1), 1):
-            result = attach(detached, work[i][1])
-            results[i] = result
+        done = 0
+        for batch, notes in pool.imap_unordered(_run_one, order, chunksize=1):
             if progress:
                 for note in notes:
                     progress(note)
-                progress(f"[{done}/{len(work)}] {result.scenario.key}")
-            if on_result:
-                on_result(result)
+            for i, detached in batch:
+                result = attach(detached, work[i][1])
+                results[i] = result
+                done += 1
+                if progress:
+                    progress(f"[{done}/{len(work)}] {result.scenario.key}")
+                if on_result:
+                    on_result(result)
         pool.close()
     finally:
         pool.terminate()

@@ -25,6 +25,7 @@ probes).
 
 from __future__ import annotations
 
+import math
 import traceback
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -174,7 +175,8 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     is known before MuJoCo runs: ``u_k = u(k Δt)``, ``ctrl_k = controls(u_k, x_k)`` and
     ``x_{k+1} = RK4(x_k, u_k)``, or ``adapter.exact_step(x_k, u_k, Δt)`` where the adapter has
     an exact step for a held input; ``adapter.trajectory(x_0, inputs, Δt)`` where it has
-    one (the same states, all steps at once).
+    one (the same states, all steps at once), and then ``adapter.controls_on(inputs,
+    states)`` where it has one (the same controls, all steps at once).
 
     Returns:
         ``(inputs (N, m), controls (N, nu), analytic (N + 1, n))``.
@@ -184,6 +186,9 @@ def schedule(s: Scenario, adapter: Adapter, x0: np.ndarray, dt: float, nstep: in
     trajectory = getattr(adapter, "trajectory", None)  # every step at once, where it has one
     if trajectory is not None:
         states = np.asarray(trajectory(x, inputs, dt), float)
+        controls_on = getattr(adapter, "controls_on", None)  # all at once, where it has one
+        if controls_on is not None:
+            return inputs, np.asarray(controls_on(inputs, states[:-1]), float), states
         controls = [adapter.controls(u, xk) for u, xk in zip(inputs, states, strict=False)]
         return inputs, np.asarray(controls), states
     step = getattr(adapter, "exact_step", None)  # where the adapter has one
@@ -281,9 +286,10 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
 
     Every :data:`RECORD_EVERY`-th step is redone from its stored start, so that contacts
     and frames belong to the configuration whose constraints produced the new
-    velocities; the robot's probes and the lateral-slip measurement see it there (a
-    robot without either has nothing to read there, and the step is not redone: the
-    simulation's own data were checked for warnings, its states for NaN), and the
+    velocities; the robot's probes and the lateral-slip measurement see it there (where
+    neither reads it, before every probe's ``after`` (:func:`first_read`) or without
+    either, the step is not redone: the simulation's own data were checked for
+    warnings, its states for NaN), and the
     pose at the step's end is recorded beside the analytic state at the same time (its
     frames and velocities from :func:`sync_kinematics`).
 
@@ -299,11 +305,12 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
                            if (p := factory(s, model, adapter, spec.targets)) is not None]
     trace.state_names, trace.state_units = adapter.state_names, adapter.state_units
     nstep = len(prep.controls)
-    restep = bool(probes or adapter.lateral_wheels)  # else nothing reads the redone step
+    read_after = first_read(probes, adapter)
+    dt = model.opt.timestep
     for k in range(nstep):
         if k % RECORD_EVERY != RECORD_EVERY - 1 and k != nstep - 1:
             continue
-        if restep:
+        if k * dt > read_after:  # else nothing reads the redone step
             _restep(prep, states, k, trace, probes)
         else:
             trace.slip.append(np.zeros(0))
@@ -318,6 +325,19 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     for probe in probes:
         metrics += probe.metrics()
     return s.opened(metrics)
+
+
+def first_read(probes: Sequence[Probe], adapter: Adapter) -> float:
+    """The time after which a redone step is read: the probes' earliest ``after``, s.
+
+    A probe with an ``after`` attribute ignores the samples at ``t <= after``
+    (:class:`~wmr_mujoco.validation.traces.Probe`); one without it reads every sample, as
+    does the lateral slip of an adapter's ``lateral_wheels`` (``-inf``). ``inf``: nothing
+    reads a redone step.
+    """
+    if adapter.lateral_wheels:
+        return -math.inf
+    return min((getattr(p, "after", -math.inf) for p in probes), default=math.inf)
 
 
 def _restep(prep: Prepared, states: np.ndarray, k: int, trace: Trace,

@@ -110,6 +110,10 @@ class RobotSpec(Generic[P]):
             families at once (batched) before they are evaluated one by one, so that each
             ``evaluate`` finds its run ready (None: each member runs on its own; a member
             not prepared still evaluates correctly, only slower).
+        prepared_together: names of measurement scenarios whose families' members
+            ``prepare`` best runs in one call (runs of one length: a batched model's
+            cost is per step); ``wmr validate`` runs those families as one unit of work
+            (:mod:`wmr_mujoco.validation.units`), with the same results.
     """
 
     name: str
@@ -136,6 +140,7 @@ class RobotSpec(Generic[P]):
     command_range: tuple[float, ...] | None = None
     prepare: Callable[[Sequence[Scenario], P | None], None] | None = None
     open_targets: Mapping[str, Mapping[str, str]] = field(default_factory=dict)
+    prepared_together: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         if self.open_targets:  # also for scenarios appended later (dataclasses.replace)
@@ -146,6 +151,12 @@ class RobotSpec(Generic[P]):
         names = [s.name for s in self.scenarios]
         if len(set(names)) != len(names):
             raise ValueError(f"robot {self.name!r}: scenario names repeat: {names}")
+        measured = {s.name for s in self.scenarios if s.kind is ScenarioKind.MEASUREMENT}
+        if self.prepared_together and (self.prepare is None or not set(
+                self.prepared_together) <= measured):
+            raise ValueError(f"robot {self.name!r}: prepared_together "
+                             f"{sorted(set(self.prepared_together) - measured)} are not its "
+                             "measurement scenarios, or it has no prepare")
         wrong = [s.key for s in self.scenarios if s.robot != self.name]
         if wrong:
             raise ValueError(f"robot {self.name!r} lists scenarios of other robots: {wrong}")

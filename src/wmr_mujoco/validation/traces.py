@@ -95,7 +95,12 @@ class Sample:
 
 
 class Probe(Protocol):
-    """A per-robot measurement taken during a run (e.g. a free wheel's rate)."""
+    """A per-robot measurement taken during a run (e.g. a free wheel's rate).
+
+    A probe may have an ``after`` attribute (s): it ignores the samples at ``t <= after``,
+    and the runner need not redo those steps for it
+    (:func:`~wmr_mujoco.validation.runner.first_read`); without it, every sample is read.
+    """
 
     def observe(self, sample: Sample) -> None:
         """Take what it needs from one recorded step."""

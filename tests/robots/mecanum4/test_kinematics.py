@@ -141,3 +141,15 @@ def test_trajectory_is_the_schedule_step_after_step(name):
         ref.append(x)
     np.testing.assert_allclose(adapter.trajectory(ref[0], inputs, dt), ref, rtol=1e-13,
                                atol=1e-13)
+
+
+def test_trajectory_computes_each_distinct_input_once_with_its_own_floats():
+    # A ramp (every row new), a hold (one row many times) and a 0.0 beside a -0.0 (told
+    # apart by their bytes): the realised twists are those of row-by-row calls.
+    kin = MecanumKinematics(MecanumParams())
+    ramp = np.linspace(0.0, 1.0, 7)[:, None] * np.array([0.3, 0.1, 0.5])
+    rows = np.concatenate([ramp, np.repeat(ramp[-1:], 5, axis=0),
+                           [[0.2, 0.0, 0.0], [0.2, -0.0, 0.0]]])
+    want = np.array([kin.realised(r) for r in rows])
+    np.testing.assert_array_equal(kin._realised_rows(rows), want)
+    assert kin._realised_rows(np.empty((0, 3))).shape == (0, 3)

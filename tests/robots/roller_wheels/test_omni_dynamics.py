@@ -78,3 +78,29 @@ def test_psi_dot_cross_term_sign_newton_euler(flip, steady_turn_off_circle):
     off = steady_turn_off_circle(model.body_acceleration, model.H, model.velocity_term,
                                  model.mass, flip)
     assert off > 0.01 if flip else off < 1e-6
+
+
+def test_rk4_trajectory_is_rk4_step_bit_for_bit():
+    # Torques that change every 50 steps (one Hᵀτ per distinct τ) while the platform
+    # turns (the r-term and the heading's cos/sin in play): each state is rk4_step's.
+    from wmr_mujoco.analytic.integrate import rk4_step
+    from wmr_mujoco.robots.roller_wheels.omni_dynamics import rk4_trajectory
+
+    rng = np.random.default_rng(3)
+    torques = np.repeat(rng.uniform(-0.2, 0.2, (8, 3)), 50, axis=0)
+    x = np.array([0.1, -0.2, 0.4, 0.3, -0.1, 1.2])
+    want = [x]
+    for tau in torques:
+        x = rk4_step(lambda s, u: OMNI.state_derivative(s, u), x, tau, 1e-3)
+        want.append(x)
+    np.testing.assert_array_equal(rk4_trajectory(OMNI, want[0], torques, 1e-3),
+                                  np.asarray(want))
+
+
+def test_rk4_trajectory_refuses_what_state_derivative_refuses():
+    from wmr_mujoco.robots.roller_wheels.omni_dynamics import rk4_trajectory
+
+    with pytest.raises(ValueError, match="torques contains non-finite"):
+        rk4_trajectory(OMNI, np.zeros(6), np.array([[0.1, np.nan, 0.0]]), 1e-3)
+    with pytest.raises(ValueError, match="state contains non-finite"):
+        rk4_trajectory(OMNI, np.array([0, 0, 0, np.inf, 0, 0]), np.zeros((2, 3)), 1e-3)

@@ -405,3 +405,26 @@ def test_relax_outside_its_range_is_refused(relax):
     with pytest.raises(ValueError, match="relax"):
         simulate(MODEL, Drive("torque", 1.0), np.zeros((3, 3)), 0.004, np.zeros(3),
                  np.zeros(3), np.zeros(3), relax=relax)
+
+
+def test_batch_members_are_their_single_runs_to_the_bit():
+    """With the settings ``wmr validate`` uses (slip, arc, heave, relaxed hand-overs) a
+    member of a batch is its run alone, float for float: the hand-over's RK4 and the rest
+    of the step are taken by the runs that hand over, and the others keep their step
+    (what lets omni3 batch its families together, :mod:`wmr_mujoco.validation.units`)."""
+    drives = [Drive("rate", 0.5, gain=0.5), Drive("torque", 0.5), Drive("rate", 0.5, gain=0.5)]
+    inputs = np.stack([np.tile([6.0, -3.0, 2.0], (150, 1)),
+                       np.tile([0.02, 0.0, -0.02], (150, 1)),
+                       np.tile([-4.0, 5.0, 1.0], (150, 1))])
+    th0 = np.array([[0.1, 0.2, 0.3], [1.0, 2.0, 3.0], [0.5, -0.4, 2.2]])
+    kw = {"substeps": 2, "arc": True, "heave": True, "relax": 0.3}
+    both = simulate_batch(MODEL, drives, inputs, 0.004, np.zeros((3, 3)), np.zeros((3, 3)),
+                          th0, **kw)
+    for b in range(3):
+        alone = simulate_batch(MODEL, drives[b:b + 1], inputs[b:b + 1], 0.004,
+                               np.zeros((1, 3)), np.zeros((1, 3)), th0[b:b + 1], **kw)[0]
+        for field in ("t", "pose", "twist", "thetas", "torques"):
+            np.testing.assert_array_equal(getattr(both[b], field), getattr(alone, field))
+        assert both[b].switches == alone.switches
+    steps = [{round(t / 0.004) for t, _, _ in run.switches} for run in both]
+    assert steps[0] and steps[2] and steps[0] != steps[2]  # hand-overs at other steps

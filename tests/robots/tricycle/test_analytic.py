@@ -33,3 +33,18 @@ def test_driven_wheel_on_the_icr_is_an_error():
 def test_bad_track_is_refused(track):
     with pytest.raises(ValueError, match="track"):
         tricycle.rear_wheel_speeds(1.0, 0.2, track, 0.5)
+
+
+def test_midpoint_speeds_are_the_scalar_ones():
+    import numpy as np
+
+    from wmr_mujoco.robots.tricycle.analytic import midpoint_speed_from_left, midpoint_speeds
+
+    steer = np.linspace(-0.9, 0.9, 41)
+    v_left = np.linspace(0.2, 1.5, 41)
+    want = [midpoint_speed_from_left(v, s, 0.4, 0.6) for v, s in
+            zip(v_left, steer, strict=True)]
+    np.testing.assert_array_equal(midpoint_speeds(v_left, steer, 0.4, 0.6), want)
+    # The ICR on the driven wheel (tan φ = 2ℓ/w): NaN, where the scalar one raises.
+    on_wheel = np.arctan(2 * 0.6 / 0.4)
+    assert np.isnan(midpoint_speeds(np.array([1.0]), np.array([on_wheel]), 0.4, 0.6)[0])

@@ -79,3 +79,24 @@ def test_the_drawn_push_strength_is_the_runs():
     lin = {k: next(x for x in m.evaluate(m, None).series if x.label == "linear benchmark")
            for k, m in (("nominal", s), ("strong", strong))}
     np.testing.assert_allclose(lin["strong"].y[:50], 1.2 * lin["nominal"].y[:50], rtol=1e-9)
+
+
+def test_push_response_samples_the_step_by_step_run(model):
+    # The steps between samples run in C (mj_step with nstep): the same states as one
+    # mj_step at a time, so the same sampled leans, to the bit (and the same fall time).
+    import mujoco
+
+    for speed in (3.0, 5.0):  # one that falls, one that recovers
+        got = st.push_response(None, speed, model=model)
+        data = mujoco.MjData(model)
+        st.pushed_start(model, data, None, speed, st.PUSH_LEAN_RATE)
+        dt = model.opt.timestep
+        every = max(1, round(st.SAMPLE / dt))
+        leans = []
+        for k in range(round(st.PUSH_DURATION / dt) + 1):
+            if k % every == 0:
+                leans.append(st.lean_angle(data.qpos[3:7]))
+                if abs(leans[-1]) > st.FALLEN:
+                    break
+            mujoco.mj_step(model, data)
+        np.testing.assert_array_equal(got.lean, leans)

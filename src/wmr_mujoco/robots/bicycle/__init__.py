@@ -13,6 +13,7 @@ import mujoco
 import numpy as np
 
 from wmr_mujoco.analytic import bicycle
+from wmr_mujoco.analytic.integrate import rk4_states
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.wheel_pairs import wheel_floor_pairs
 from wmr_mujoco.models.params import RobotParams, params_or_default
@@ -50,6 +51,15 @@ class BicycleKinematics:
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
         """Bicycle kinematics (:func:`wmr_mujoco.analytic.bicycle.rates`)."""
         return bicycle.rates(x, u, self.params.wheelbase)
+
+    def trajectory(self, x0: np.ndarray, inputs: np.ndarray, dt: float) -> np.ndarray:
+        """RK4 on :meth:`rhs` over every step at once (the floats of step after step).
+
+        :func:`wmr_mujoco.analytic.bicycle.rk4_trajectory`, or the steps one by one where
+        it declines (a stage that is not finite: they raise there).
+        """
+        out = bicycle.rk4_trajectory(x0, inputs, dt, self.params.wheelbase)
+        return rk4_states(self.rhs, x0, inputs, dt) if out is None else out
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """Pose of the ``base`` site and the steering angle."""

@@ -34,7 +34,7 @@ from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
 from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.roller_wheels.roller_stick_slip import StepResponse, step_response
-from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose, per_distinct_row
 from wmr_mujoco.validation.metrics import Metric, Target, Trace, pose_tracking, rms
 from wmr_mujoco.validation.scenarios import Scenario
 
@@ -152,7 +152,7 @@ class MecanumKinematics:
         """
         x0 = np.asarray(x0, float)
         nu = np.asarray(inputs, float).reshape(-1, 3)
-        realised = np.array([self.realised(row) for row in nu]).reshape(-1, 3)
+        realised = self._realised_rows(nu)
         if self.step is None:
             return np.concatenate([twist_steps(x0[:3], realised, dt),
                                    twist_steps(x0[3:6], nu, dt)], axis=1)
@@ -184,6 +184,14 @@ class MecanumKinematics:
                     [[x0[3 * i + j]], h * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3])]))
             out[:, 3 * i + 2] = heading
         return out
+
+    def _realised_rows(self, nu: np.ndarray) -> np.ndarray:
+        """(N, 3) :meth:`realised` of each row of ``nu``, once per distinct row."""
+        return per_distinct_row(self.realised, nu, 3)
+
+    def controls_on(self, inputs: np.ndarray, states: np.ndarray) -> np.ndarray:
+        """(N, 4) :meth:`controls` of every step, once per distinct input (they read no state)."""
+        return per_distinct_row(lambda u: self.controls(u, None), inputs, self.jacobian.shape[0])
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """The ``base`` site's pose, once for each model (and the clock of a step run)."""

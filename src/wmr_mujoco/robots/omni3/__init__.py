@@ -43,7 +43,7 @@ from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.spec import Clip, RobotSpec
 from wmr_mujoco.validation import metrics as mt
 from wmr_mujoco.validation import variations as var
-from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose
+from wmr_mujoco.validation.adapters import POSE_UNITS, base_pose, per_distinct_row
 from wmr_mujoco.validation.command import RateCommand
 from wmr_mujoco.validation.family import Family
 from wmr_mujoco.validation.metrics import Target
@@ -88,6 +88,13 @@ class OmniKinematics:
     def controls(self, u: np.ndarray, analytic_state: np.ndarray) -> np.ndarray:
         """Wheel rates ``θ̇ = H ν``."""
         return self.jacobian @ self.twist(u, analytic_state)
+
+    def controls_on(self, inputs: np.ndarray, states: np.ndarray) -> np.ndarray:
+        """(N, 3) :meth:`controls` of every step: once per distinct input for body rates."""
+        if self.world_frame:  # the twist turns with the analytic heading
+            return np.array([self.controls(u, x) for u, x in zip(inputs, states,
+                                                                strict=True)])
+        return per_distinct_row(lambda u: self.controls(u, None), inputs, 3)
 
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
         """``(Ẋ, Ẏ, ψ̇) = R(ψ) ν`` (scalar arithmetic: called four times per step)."""
@@ -242,5 +249,7 @@ SPEC = RobotSpec(
     clips=(Clip(), Clip("translate+rotate", "trails.png", width=480, height=360)),
     peer=peer.peer_comparison, command=COMMAND,
     scene_extras=builder.floor_pairs, prepare=families.prepare, open_targets=STEP_OPEN,
+    # The step and torque runs (2 s each): one batch, the hybrid model's cost per step.
+    prepared_together=tuple(s.name for s in (*dynamics.STEP_SPECS, *dynamics.TORQUE_SPECS)),
     learning=Learning("Omni3", scale=0.5, max_curvature=3.0, bands=NO_RADIUS_BANDS),
 )

@@ -14,7 +14,7 @@ import numpy as np
 
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
-from wmr_mujoco.robots.roller_wheels.omni_dynamics import OmniDynamics
+from wmr_mujoco.robots.roller_wheels.omni_dynamics import OmniDynamics, rk4_trajectory
 from wmr_mujoco.validation.adapters import POSE_UNITS, Adapter, base_pose, body_twist
 
 
@@ -61,6 +61,13 @@ class OmniDynamicsAdapter:
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:
         """Reduced Lagrange equations with the world pose."""
         return self.dynamics.state_derivative(x, u)
+
+    def trajectory(self, x0: np.ndarray, inputs: np.ndarray, dt: float) -> np.ndarray:
+        """Every step's state at once: the floats of RK4 on :meth:`rhs`.
+
+        :func:`~wmr_mujoco.robots.roller_wheels.omni_dynamics.rk4_trajectory`.
+        """
+        return rk4_trajectory(self.dynamics, x0, inputs, dt)
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """Pose and body twist of the ``base`` site."""

@@ -181,6 +181,12 @@ class _Stepper:
         xdot[:, 2], xdot[:, 3:6], xdot[:, 6:9], xdot[:, 9:] = v[:, 2], nudot, w, thdd
         return xdot, tau, forces, thdd
 
+    def rows(self, rows: np.ndarray) -> _Stepper:
+        """The stepper of the runs ``rows`` alone (their drive law, modes and loads now)."""
+        return _Stepper(self.model, self.rate_mode[rows], self.gain[rows],
+                        self.limit_tau[rows], self.arc, self.slipping[rows],
+                        self.slip_dir[rows], self.loads[rows])
+
     def rk4(self, x: np.ndarray, k1: np.ndarray, u_in: np.ndarray, geo: _Geometry,
             hv: np.ndarray) -> np.ndarray:
         """One RK4 step of per-run length ``hv`` (B, 1) in the modes of ``geo``."""
@@ -314,9 +320,11 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             new_modes = _lowest(model, x[:, 6:9])
             changed = np.flatnonzero((new_modes != geo.modes).any(axis=1))
             rest = np.zeros((nb, 1))
-            if changed.size:
+            if changed.size:  # RK4 again to the hand-over, for the runs that have one
                 frac = _switch_fraction(model, x0[:, 6:9], x[:, 6:9], geo.modes, new_modes)
-                x = st.rk4(x0, k1, u_in, geo, h * frac[:, None])
+                x[changed] = st.rows(changed).rk4(
+                    x0[changed], k1[changed], u_in[changed],
+                    _Geometry(*(a[changed] for a in geo)), h * frac[changed, None])
                 rest[:, 0] = h * (1.0 - frac)
             pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
             geo = _geometry(model, th, geo.modes, geo.H)
@@ -359,8 +367,14 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             if changed.size:
                 geo = new
                 x = np.concatenate([pose, nu, th, thd], axis=1)
-                k1 = st.deriv(x, u_in, geo)[0]
-                x = st.rk4(x, k1, u_in, geo, rest)
+                # The rest of the step; a run without a hand-over has none (RK4 over 0 s
+                # gives its x, but for a −0.0 that x + 0 makes +0.0: those runs take it)
+                run = np.flatnonzero((rest[:, 0] != 0.0)
+                                     | ((x == 0.0) & np.signbit(x)).any(axis=1))
+                if run.size:
+                    sub = _Geometry(*(a[run] for a in geo))
+                    k1 = st.rows(run).deriv(x[run], u_in[run], sub)[0]
+                    x[run] = st.rows(run).rk4(x[run], k1, u_in[run], sub, rest[run])
                 pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
                 geo = _geometry(model, th, geo.modes, geo.H)
                 thd = np.where(st.slipping, thd, (geo.H @ nu[..., None])[..., 0])
@@ -378,22 +392,3 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
     t = np.arange(n + 1) * dt
     return [HybridRun(t, out_pose[b], out_nu[b], out_th[b], out_tau[b], switches[b])
             for b in range(nb)]
-
-
-def kinetic_energies(model: OmniHybrid, twists: np.ndarray, thetas: np.ndarray) -> np.ndarray:
-    """``½ νᵀ (P + I_w H(σ)ᵀH(σ) + I_r Σ k kᵀ) ν`` of (N, 3) twists at (N, 3) wheel angles.
-
-    σ the lowest rollers: :meth:`OmniHybrid.kinetic_energy`, vectorised.
-    """
-    geo = _geometry(model, np.asarray(thetas, float))
-    H, ks = geo.H, geo.ks
-    m = (model.wheel_inertia * H.transpose(0, 2, 1) @ H
-         + model.roller_axial * ks.transpose(0, 2, 1) @ ks)
-    m += np.diag([model.mass, model.mass, model.inertia[2, 2]])
-    return 0.5 * np.einsum("ni,nij,nj->n", twists, m, twists)
-
-
-def rolling_rates(model: OmniHybrid, twists: np.ndarray, thetas: np.ndarray) -> np.ndarray:
-    """``θ̇ = H(σ) ν`` of (N, 3) twists at (N, 3) wheel angles (σ the lowest rollers)."""
-    H = _geometry(model, np.asarray(thetas, float)).H
-    return (H @ np.asarray(twists, float)[..., None])[..., 0]

@@ -42,12 +42,11 @@ from wmr_mujoco.robots.roller_wheels.omni_batch import (
     _accelerations,
     _geometry,
     _normal_loads,
-    kinetic_energies,
-    rolling_rates,
     simulate,
     simulate_batch,
 )
 from wmr_mujoco.robots.roller_wheels.omni_impacts import HybridImpacts
+from wmr_mujoco.robots.roller_wheels.omni_rates import kinetic_energies, rolling_rates
 from wmr_mujoco.robots.roller_wheels.roller_geometry import Drive, RollerGeometry, _finite
 
 __all__ = ["Drive", "HybridRun", "OmniHybrid", "RollerGeometry", "kinetic_energies",

@@ -32,31 +32,46 @@ ROLLER_RATE_PCT = "roller rate error % (median)"
 
 
 def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelInfo,
-                       slide_speeds: np.ndarray) -> list[float]:
+                       slide_speeds: np.ndarray,
+                       rollers: tuple[np.ndarray, np.ndarray] | None = None) -> list[float]:
     """Relative errors ``|ω_r ρ − s| / s`` of the rollers touching the floor now.
 
     ``s`` is the slide speed along the roller axis at each wheel's contact implied by the
     commanded twist, ``ρ`` the contact's distance from the roller axis and ``ω_r`` the
     roller's measured spin rate. Contacts of wheels sliding slower than 1 mm/s are skipped.
+    ``rollers``: :func:`roller_geoms` of the model (None: read here).
     """
     if data.ncon == 0:
         return []
-    wheel_of = np.full(model.nbody, -1)
-    for i, j in enumerate(info.wheel_joints):
-        wheel_of[model.jnt_bodyid[j]] = i
-    g1, g2 = data.contact.geom1[:data.ncon], data.contact.geom2[:data.ncon]
+    wheel_of_geom, joint_of_geom = rollers if rollers is not None else roller_geoms(model,
+                                                                                   info)
+    con = data.contact
+    g1, g2 = con.geom1[:data.ncon], con.geom2[:data.ncon]
     geom = np.where(model.geom_bodyid[g1] == 0, g2, g1)
-    body = model.geom_bodyid[geom]
-    wheel = wheel_of[model.body_parentid[body]]
-    roller = (wheel >= 0) & (model.body_jntnum[body] == 1)
-    jnt = model.body_jntadr[body[roller]]
+    wheel = wheel_of_geom[geom]
+    roller = wheel >= 0
+    jnt = joint_of_geom[geom[roller]]
     axis = data.xaxis[jnt]
-    rel = data.contact.pos[:data.ncon][roller] - data.xanchor[jnt]
+    rel = con.pos[:data.ncon][roller] - data.xanchor[jnt]
     rho = np.linalg.norm(rel - axis * np.sum(rel * axis, axis=1)[:, None], axis=1)
     slide = np.abs(np.asarray(slide_speeds, float)[wheel[roller]])
     omega = np.abs(data.qvel[model.jnt_dofadr[jnt]])
     keep = (slide >= 1e-3) & (rho >= 1e-6)
     return (np.abs(omega * rho - slide)[keep] / slide[keep]).tolist()
+
+
+def roller_geoms(model: mujoco.MjModel, info: OmniModelInfo) -> tuple[np.ndarray, np.ndarray]:
+    """Per geom: the wheel whose roller it belongs to (−1: none) and that roller's hinge.
+
+    A roller is a body with one joint whose parent is a wheel's body (``info``'s wheel
+    joints, in layout order).
+    """
+    wheel_of = np.full(model.nbody, -1)
+    for i, j in enumerate(info.wheel_joints):
+        wheel_of[model.jnt_bodyid[j]] = i
+    body = model.geom_bodyid
+    wheel = np.where(model.body_jntnum[body] == 1, wheel_of[model.body_parentid[body]], -1)
+    return wheel, model.body_jntadr[body]
 
 
 def rolling_radius_profile(model: mujoco.MjModel, wheel_joint: str, roller_prefix: str,
@@ -96,13 +111,25 @@ class RollerRateProbe:
     adapter: OmniAdapter
     target: Target | None
     errors: list[float] = field(default_factory=list)
+    after: float = STEADY_AFTER
+
+    _rollers: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False)
+    _slides: dict[bytes, np.ndarray] = field(default_factory=dict, repr=False)
 
     def observe(self, sample: Sample) -> None:
         """Errors of the rollers in contact at this step."""
-        if sample.t > STEADY_AFTER:
-            slide = ok.roller_slide_speeds(self.adapter.layout,
-                                           self.adapter.twist(sample.u, sample.x))
-            self.errors += roller_rate_errors(sample.model, sample.data, self.info, slide)
+        if sample.t > self.after:
+            if self._rollers is None:
+                self._rollers = roller_geoms(sample.model, self.info)
+            twist = np.asarray(self.adapter.twist(sample.u, sample.x), float)
+            slide = self._slides.get(key := twist.tobytes())
+            if slide is None:  # a run holds few twists: each one's speeds once
+                if len(self._slides) > 4096:
+                    self._slides.clear()
+                slide = self._slides[key] = ok.roller_slide_speeds(self.adapter.layout,
+                                                                   twist)
+            self.errors += roller_rate_errors(sample.model, sample.data, self.info, slide,
+                                              self._rollers)
 
     def metrics(self) -> list[Metric]:
         """Median (judged) and 95th percentile, in %."""
@@ -120,10 +147,11 @@ class WheelRateProbe:
 
     wheel_dofs: tuple[int, ...]
     errors: list[float] = field(default_factory=list)
+    after: float = STEADY_AFTER
 
     def observe(self, sample: Sample) -> None:
         """``|θ̇ − θ̇_cmd| / |θ̇_cmd|`` at this step, once the commanded rates exceed 0.5."""
-        if sample.t > STEADY_AFTER and np.linalg.norm(sample.ctrl) > 0.5:
+        if sample.t > self.after and np.linalg.norm(sample.ctrl) > 0.5:
             rates = sample.data.qvel[list(self.wheel_dofs)]
             self.errors.append(float(np.linalg.norm(rates - sample.ctrl)
                                      / np.linalg.norm(sample.ctrl)))
@@ -142,10 +170,11 @@ class YawRippleProbe:
     adapter: OmniAdapter
     rates: list[float] = field(default_factory=list)
     commanded: list[float] = field(default_factory=list)
+    after: float = STEADY_AFTER
 
     def observe(self, sample: Sample) -> None:
         """The base's world yaw rate and the commanded one at this step."""
-        if sample.t > STEADY_AFTER:
+        if sample.t > self.after:
             self.rates.append(float(sample.data.cvel[self.base_body][2]))
             self.commanded.append(float(self.adapter.twist(sample.u, sample.x)[2]))
 
@@ -178,6 +207,11 @@ class _OmniProbes:
     """Several probes as one."""
 
     probes: list[RollerRateProbe | WheelRateProbe | YawRippleProbe]
+
+    @property
+    def after(self) -> float:
+        """The earliest of its probes' ``after``: samples up to it are read by none."""
+        return min(p.after for p in self.probes)
 
     def observe(self, sample: Sample) -> None:
         """Pass the sample to each probe."""

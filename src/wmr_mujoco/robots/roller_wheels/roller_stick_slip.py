@@ -306,39 +306,19 @@ def step_response(platform: RollerPlatform, commanded: np.ndarray, duration: flo
         raise ValueError(f"duration = {duration!r} s; valid range is (0, inf)")
     if not (np.isfinite(step) and 0.0 < step <= 1e-3):
         raise ValueError(f"step = {step!r} s; valid range is (0, 1e-3]")
+    from wmr_mujoco.robots.roller_wheels.stick_slip_steps import march
+
     n = platform.layout.n
-    lcp = BoxLcp(platform.delassus)
-    per_chunk = max(1, round(chunk / step))
-    total = round(duration / step)
-    q = np.zeros(3 + n)
-    accel = np.zeros(2)
-    state: tuple[int, ...] | None = None
-    zeros = np.zeros(n)
-    rows = {"time": [0.0], "twist": [q[:3].copy()], "wheel_rates": [q[3:].copy()],
-            "forces": [zeros], "loads": [platform.loads(accel)],
-            "stuck": [np.ones(n, bool)], "dissipated": [0.0]}
-    dissipated = 0.0
-    k = 0
-    while k < total:
-        settled = True
-        start = q[:3].copy()
-        for _ in range(min(per_chunk, total - k)):
-            q_new, p, slip, state, loads, accel = advance(platform, lcp, q, cmd, accel,
-                                                          step, state)
-            dissipated -= float(p @ slip)
-            q = q_new
-            k += 1
-            if not np.all(np.isfinite(q)):
-                raise ValueError(f"step_response diverged at t = {k * step:.4f} s")
-            stuck = np.asarray(state) == 0
-            settled &= bool(np.all(stuck))
-            rows["time"].append(k * step)
-            rows["twist"].append(q[:3].copy())
-            rows["wheel_rates"].append(q[3:].copy())
-            rows["forces"].append(p / step)
-            rows["loads"].append(loads)
-            rows["stuck"].append(stuck)
-            rows["dissipated"].append(dissipated)
-        if settled and float(np.max(np.abs(q[:3] - start))) < settle_tol:
-            break
-    return StepResponse(**{key: np.asarray(val) for key, val in rows.items()})
+    rows = march(platform, BoxLcp(platform.delassus), _states(n), cmd, round(duration / step),
+                 max(1, round(chunk / step)), step, settle_tol)
+    # Row 0 is the start at rest; then the steps of advance (stick_slip_steps: its floats).
+    q = np.concatenate([np.zeros((1, 3 + n)), np.asarray(rows["q"]).reshape(-1, 3 + n)])
+    return StepResponse(
+        time=np.asarray([0.0, *rows["time"]]), twist=q[:, :3], wheel_rates=q[:, 3:],
+        forces=np.concatenate([np.zeros((1, n)),
+                               np.asarray(rows["p"]).reshape(-1, n) / step]),
+        loads=np.concatenate([platform.loads(np.zeros(2))[None],
+                              np.asarray(rows["loads"]).reshape(-1, n)]),
+        stuck=np.concatenate([np.ones((1, n), bool),
+                              np.asarray(rows["state"]).reshape(-1, n) == 0]),
+        dissipated=np.asarray([0.0, *rows["dissipated"]]))

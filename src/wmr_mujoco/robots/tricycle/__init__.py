@@ -16,6 +16,8 @@ from dataclasses import dataclass, field
 import mujoco
 import numpy as np
 
+from wmr_mujoco.analytic import bicycle
+from wmr_mujoco.analytic.integrate import rk4_states
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.builders.wheel_pairs import wheel_floor_pairs
 from wmr_mujoco.models.params import RobotParams, params_or_default
@@ -56,6 +58,21 @@ class TricycleKinematics:
         p = self.params
         v_mid = tricycle.midpoint_speed_from_left(u[0], x[3], p.track, p.wheelbase)
         return tricycle.rates(x, np.array([v_mid, u[1]]), p.wheelbase)
+
+    def trajectory(self, x0: np.ndarray, inputs: np.ndarray, dt: float) -> np.ndarray:
+        """RK4 on :meth:`rhs` over every step at once (the floats of step after step).
+
+        :func:`wmr_mujoco.analytic.bicycle.rk4_trajectory` with the midpoint speed
+        ``v_L / (1 − k)`` at each stage's steering angle
+        (:func:`~wmr_mujoco.robots.tricycle.analytic.midpoint_speeds`), or the steps one by
+        one where it declines (a stage that is not finite, or the ICR on the driven wheel:
+        they raise there).
+        """
+        p = self.params
+        out = bicycle.rk4_trajectory(
+            x0, inputs, dt, p.wheelbase,
+            lambda v, phi: tricycle.midpoint_speeds(v, phi, p.track, p.wheelbase))
+        return rk4_states(self.rhs, x0, inputs, dt) if out is None else out
 
     def sim_state(self, model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
         """Pose of the ``base`` site and the steering angle."""

@@ -64,6 +64,20 @@ def midpoint_speed_from_left(v_left: float, steer: float, track: float, wheelbas
     return float(v_left / (1.0 - k))
 
 
+def midpoint_speeds(v_left: np.ndarray, steer: np.ndarray, track: float, wheelbase: float
+                    ) -> np.ndarray:
+    """:func:`midpoint_speed_from_left` elementwise, the same floats (``math.tan`` each).
+
+    A steering angle that puts the ICR on the driven wheel gives NaN there (the caller
+    falls back to :func:`midpoint_speed_from_left`, which raises).
+    """
+    c = float(track) / (2.0 * float(wheelbase))
+    k = np.array([c * math.tan(s) for s in np.asarray(steer, float).tolist()])
+    with np.errstate(divide="ignore", invalid="ignore"):  # those entries are NaN below
+        v = np.asarray(v_left, float) / (1.0 - k)
+    return np.where(np.abs(1.0 - k) < 1e-12, np.nan, v)
+
+
 def differential_speeds(v_carrier: float, steer: float, track: float, wheelbase: float
                         ) -> tuple[float, float]:
     """Open differential with carrier speed ``(v_L + v_R)/2 = v``: returns ``(v_L, v_R)``."""

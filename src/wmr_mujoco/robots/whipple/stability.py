@@ -123,15 +123,17 @@ def push_response(params: WhippleParams | None, speed: float,
     every = max(1, round(SAMPLE / dt))
     times, leans = [], []
     t0 = time.perf_counter()
-    for k in range(n + 1):
-        if k % every == 0:
-            times.append(k * dt)
-            leans.append(lean_angle(data.qpos[3:7]))
-            if observer is not None:
-                observer(k * dt, data)
-            if abs(leans[-1]) > FALLEN:
-                break
-        mujoco.mj_step(model, data)
+    k = 0
+    while k <= n:  # steps 0..n, a sample before every every-th: the steps between in C
+        times.append(k * dt)
+        leans.append(lean_angle(data.qpos[3:7]))
+        if observer is not None:
+            observer(k * dt, data)
+        if abs(leans[-1]) > FALLEN:
+            break
+        ahead = min(k + every, n + 1)
+        mujoco.mj_step(model, data, ahead - k)  # the same steps as one by one
+        k = ahead
     wall = time.perf_counter() - t0
     check_healthy(model, data)
     t, lean = np.array(times), np.array(leans)

@@ -1,0 +1,40 @@
+"""The roller-rate probe's geometry index: each roller geom to its wheel and hinge."""
+
+import mujoco
+import numpy as np
+
+from wmr_mujoco import load
+from wmr_mujoco.robots.omni3.runs import WHEELS
+from wmr_mujoco.robots.roller_wheels.model_info import layout_from_model
+from wmr_mujoco.robots.roller_wheels.probes import roller_geoms, roller_rate_errors
+
+
+def test_roller_geoms_name_each_rollers_wheel_and_hinge():
+    model = load("omni3")
+    info = layout_from_model(model, WHEELS)
+    wheel, joint = roller_geoms(model, info)
+    wheel_bodies = [model.jnt_bodyid[j] for j in info.wheel_joints]
+    for g in range(model.ngeom):
+        body = model.geom_bodyid[g]
+        if wheel[g] >= 0:  # a roller: one hinge, on a wheel's body
+            assert model.body_parentid[body] == wheel_bodies[wheel[g]]
+            assert model.jnt_bodyid[joint[g]] == body
+            assert model.body_jntnum[body] == 1
+        else:
+            assert model.body_parentid[body] not in wheel_bodies or \
+                model.body_jntnum[body] != 1
+    counts = np.bincount(wheel[wheel >= 0], minlength=3)
+    assert counts.min() == counts.max() > 0  # the three wheels alike
+
+
+def test_roller_rate_errors_read_the_index_or_build_it():
+    model = load("omni3")
+    data = mujoco.MjData(model)
+    mujoco.mj_step(model, data, 300)  # settled on the floor: rollers in contact
+    data.qvel[model.jnt_dofadr[model.joint(WHEELS[0]).id]] = 3.0
+    mujoco.mj_forward(model, data)
+    info = layout_from_model(model, WHEELS)
+    slide = np.array([0.1, 0.2, 0.3])
+    got = roller_rate_errors(model, data, info, slide, roller_geoms(model, info))
+    assert got == roller_rate_errors(model, data, info, slide)
+    assert len(got) >= 3  # a roller of each wheel touches
