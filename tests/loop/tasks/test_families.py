@@ -27,7 +27,7 @@ def test_the_command_kind_picks_the_tasks_not_the_name() -> None:
     for name, spec in ROBOTS.items():
         twin = dataclasses.replace(spec, name=f"{name}_twin", scenarios=(), clips=(),
                                    demo_scenario=None, bench_scenario=None,
-                                   render_scenario=None)
+                                   render_scenario=None, prepared_together=())
         ours = [s.name for s in families.loop_scenarios(spec)]
         assert [s.name for s in families.loop_scenarios(twin)] == ours
 
