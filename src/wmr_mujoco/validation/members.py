@@ -37,7 +37,7 @@ from wmr_mujoco.validation.runner import (
 )
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.spec import RobotSpec
-from wmr_mujoco.validation.units import run_unit, units
+from wmr_mujoco.validation.units import announce, run_unit, units
 from wmr_mujoco.validation.worst import worst_member, worst_rows
 
 #: Threads of a family's batched rollout (the machines this runs on have two cores).
@@ -160,8 +160,5 @@ def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = N
         for i, result in run_unit(work, unit, seed, draws, progress):
             results[i] = result
             done += 1
-            if progress:
-                progress(f"[{done}/{len(work)}] {result.scenario.key}")
-            if on_result:
-                on_result(result)
+            announce(result, done, len(work), progress, on_result)
     return results  # type: ignore[return-value]

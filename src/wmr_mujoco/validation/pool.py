@@ -39,7 +39,7 @@ from wmr_mujoco.validation.metrics import Trace
 from wmr_mujoco.validation.runner import Job, ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
 from wmr_mujoco.validation.targets import Row
-from wmr_mujoco.validation.units import run_unit, unit_hint, units
+from wmr_mujoco.validation.units import announce, run_unit, unit_hint, units
 
 
 def can_fork() -> bool:
@@ -181,10 +181,7 @@ def run_pooled(work: Sequence[Job], jobs: int, seed: int, draws: int | None,
                 result = attach(detached, work[i][1])
                 results[i] = result
                 done += 1
-                if progress:
-                    progress(f"[{done}/{len(work)}] {result.scenario.key}")
-                if on_result:
-                    on_result(result)
+                announce(result, done, len(work), progress, on_result)
         pool.close()
     finally:
         pool.terminate()

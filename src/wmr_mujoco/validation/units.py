@@ -77,3 +77,13 @@ def run_unit(work: Sequence[Job], unit: Sequence[int], seed: int, draws: int | N
         result.seconds = time.perf_counter() - start + shared
         out.append((i, result))
     return out
+
+
+def announce(result: ScenarioResult, done: int, total: int,
+             progress: Callable[[str], None] | None,
+             on_result: Callable[[ScenarioResult], None] | None) -> None:
+    """Say that the ``done``-th of ``total`` families finished, and hand its result on."""
+    if progress:
+        progress(f"[{done}/{total}] {result.scenario.key}")
+    if on_result:
+        on_result(result)
