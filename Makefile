@@ -61,6 +61,7 @@ study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.disc_leaning
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_study
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_phase
+	$(BIN)/python -m wmr_mujoco.bench.mecanum_drift
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

@@ -117,12 +117,17 @@ ROTATE_STEP_OPEN = {"worst heading error": "the family's worst draws start near 
 #: middle under each wheel at the zero angle) drift in heading all run long (a small
 #: steady yaw-rate deficit against the model), while their neighbours a few milliradians
 #: of start angle away keep within half the target; the family's worst thus crosses 1°
-#: at some seeds and not at others (tests/robots/mecanum4/test_rotation_family.py).
+#: at some seeds and not at others (tests/robots/mecanum4/test_rotation_family.py). The
+#: cause is dynamic (docs/mecanum.md §4, "Which start angles drift"): the rate servos let
+#: the drive torque settle on one diagonal for the whole run, and the contacts slip under
+#: that split beyond what the kinematics of the measured roller phases and wheel rates
+#: give (tests/bench/test_mecanum_drift.py); a kinematic model has no torques to carry it.
 ROTATE_RAMP_OPEN = {"worst heading error": "draws at the higher yaw rates that start a few "
                     "milliradians past a multiple of the roller pitch drift in heading all "
-                    "run long, which the kinematic model, averaging the roller contact over "
-                    "the pitch, leaves out; the family's worst draws miss it (spread in the "
-                    "families table)"}
+                    "run long: the rate servos' drive torque settles on one diagonal and the "
+                    "contacts slip under that split, a dynamic effect the kinematic model "
+                    "has no torques for (docs/mecanum.md §4); the family's worst draws miss "
+                    "it (spread in the families table)"}
 
 
 def translations(ramp: float, tag: str) -> tuple[Scenario, ...]:
