@@ -32,7 +32,7 @@ def test_the_layers_replay_the_same_physics():
 def test_bad_arguments_exit_2(capsys):
     with pytest.raises(SystemExit) as exc:
         env_ladder.main(["--repeats", "0"])
-    assert exc.value.code == 2 and "--repeats 0 (1 to 20)" in capsys.readouterr().err
+    assert exc.value.code == 2 and "--repeats 0 (valid: 1 to 20)" in capsys.readouterr().err
     with pytest.raises(SystemExit) as exc:
         env_ladder.main(["wmr/Nope-v0"])
     assert exc.value.code == 2

@@ -36,3 +36,14 @@ def test_unknown_ids_are_named(capsys):
         env_throughput.main(["wmr/Nope-v0"])
     assert exc.value.code == 2
     assert "unknown environment ids ['wmr/Nope-v0']; valid: wmr/" in capsys.readouterr().err
+
+
+def test_every_bad_option_is_named_with_its_range(capsys):
+    # All bad options in one message, each with its valid range, before any environment
+    # is made (exit 2, as argparse's own errors).
+    with pytest.raises(SystemExit) as exc:
+        env_throughput.main(["--seconds", "0", "--repeats", "3", "--vector", "65"])
+    err = capsys.readouterr().err
+    assert exc.value.code == 2
+    assert "--seconds 0.0 (valid: 0.05 to 30)" in err and "--vector 65 (valid: 1 to 64)" in err
+    assert "--repeats" not in err.split("error:")[-1]  # 3 is valid: not named

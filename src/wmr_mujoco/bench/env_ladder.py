@@ -43,7 +43,15 @@ import gymnasium as gym
 import mujoco
 import numpy as np
 
-from wmr_mujoco.bench.env_throughput import SEED, check_ids, rate, record, replayer
+from wmr_mujoco.bench.env_throughput import (
+    SEED,
+    add_timing,
+    check_ids,
+    check_options,
+    rate,
+    record,
+    replayer,
+)
 
 #: The loops, each adding one layer to the one before (module docstring).
 LAYERS = ("bare", "physics", "stepper", "task", "episode", "env")
@@ -180,15 +188,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Print the table (µs per step); exit 2 on bad arguments."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("ids", nargs="*", help="environment ids (default: the light robots)")
-    parser.add_argument("--seconds", type=float, default=0.5)
-    parser.add_argument("--repeats", type=int, default=3)
+    add_timing(parser, 0.5)
     parser.add_argument("--vector", type=int, default=0,
                         help="worlds of the native vector env (default 0: the single env)")
     args = parser.parse_args(argv)
-    if not 0.05 <= args.seconds <= 30 or not 1 <= args.repeats <= 20 or \
-            not 0 <= args.vector <= 64:
-        parser.error(f"--seconds {args.seconds} (valid: 0.05 to 30), --repeats "
-                     f"{args.repeats} (1 to 20), --vector {args.vector} (0 to 64)")
+    check_options(parser, args, ("--vector", args.vector, 0 <= args.vector <= 64, "0 to 64"))
     ids = check_ids(parser, args.ids) or ["wmr/Disc-GoToGoal-v0", "wmr/Disc-FollowPath-v0",
                                           "wmr/Bicycle-FollowPath-v0"]
     rows = {}

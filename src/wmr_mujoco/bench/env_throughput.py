@@ -243,6 +243,27 @@ def default_ids() -> list[str]:
     return [i for i in wenvs.ENV_IDS if "-GoToGoal-" in i or "-StayUpright-" in i]
 
 
+def add_timing(parser: argparse.ArgumentParser, seconds: float) -> None:
+    """The environment benchmarks' ``--seconds`` (one timed run) and ``--repeats`` (rounds)."""
+    parser.add_argument("--seconds", type=float, default=seconds,
+                        help="seconds of one timed run (0.05 to 30)")
+    parser.add_argument("--repeats", type=int, default=3, help="timed rounds (1 to 20)")
+
+
+def check_options(parser: argparse.ArgumentParser, args: argparse.Namespace,
+                  *others: tuple[str, object, bool, str]) -> None:
+    """``parser.error`` (exit 2) naming every bad option and its valid range.
+
+    Checks ``--seconds`` and ``--repeats`` (:func:`add_timing`) and each of ``others``:
+    ``(flag, value, whether it is valid, the valid range)``.
+    """
+    checks = (("--seconds", args.seconds, 0.05 <= args.seconds <= 30, "0.05 to 30"),
+              ("--repeats", args.repeats, 1 <= args.repeats <= 20, "1 to 20"), *others)
+    bad = [f"{flag} {value!r} (valid: {valid})" for flag, value, ok, valid in checks if not ok]
+    if bad:
+        parser.error(", ".join(bad))
+
+
 def check_ids(parser: argparse.ArgumentParser, ids: Sequence[str]) -> list[str]:
     """``ids``, or ``parser.error`` (exit 2) naming the unknown ones and the valid ones."""
     bad = [i for i in ids if i not in wenvs.ENV_IDS]
@@ -276,15 +297,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("ids", nargs="*", help="environment ids (default: one per robot)")
     parser.add_argument("--all", action="store_true", help="every environment id")
-    parser.add_argument("--seconds", type=float, default=1.0)
-    parser.add_argument("--repeats", type=int, default=3)
+    add_timing(parser, 1.0)
     parser.add_argument("--vector", type=int, default=4, help="copies in the vector env")
     args = parser.parse_args(argv)
     ids = check_ids(parser, args.ids) or (list(wenvs.ENV_IDS) if args.all else default_ids())
-    if not 0.05 <= args.seconds <= 30 or not 1 <= args.repeats <= 20 or \
-            not 1 <= args.vector <= 64:
-        parser.error(f"--seconds {args.seconds} (valid: 0.05 to 30), --repeats "
-                     f"{args.repeats} (1 to 20), --vector {args.vector} (1 to 64)")
+    check_options(parser, args, ("--vector", args.vector, 1 <= args.vector <= 64, "1 to 64"))
     rows = {}
     for env_id in ids:
         rows[env_id] = measure(env_id, args.seconds, args.repeats, args.vector)

@@ -29,7 +29,15 @@ import gymnasium as gym
 import mujoco
 import numpy as np
 
-from wmr_mujoco.bench.env_throughput import SEED, check_ids, rate, record, replayer
+from wmr_mujoco.bench.env_throughput import (
+    SEED,
+    add_timing,
+    check_ids,
+    check_options,
+    rate,
+    record,
+    replayer,
+)
 
 #: The numbers of worlds measured by default.
 SIZES = (1, 2, 4, 8, 12, 16, 24, 32, 64)
@@ -117,8 +125,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Print the tables (and the crossovers with ``--paths``); exit 2 on bad input."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("ids", nargs="+", help="environment ids")
-    parser.add_argument("--seconds", type=float, default=0.5)
-    parser.add_argument("--repeats", type=int, default=3)
+    add_timing(parser, 0.5)
     parser.add_argument("--sizes", default=",".join(map(str, SIZES)),
                         help="numbers of worlds, comma separated")
     parser.add_argument("--paths", action="store_true",
@@ -129,10 +136,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         sizes = sorted({int(v) for v in args.sizes.split(",")})
     except ValueError:
         sizes = []
-    if not sizes or not 1 <= sizes[0] <= sizes[-1] <= 64 or not 0.05 <= args.seconds <= 30 \
-            or not 1 <= args.repeats <= 20:
-        parser.error(f"--sizes {args.sizes!r} (valid: integers 1 to 64), --seconds "
-                     f"{args.seconds} (0.05 to 30), --repeats {args.repeats} (1 to 20)")
+    check_options(parser, args, ("--sizes", args.sizes,
+                                 bool(sizes) and 1 <= sizes[0] <= sizes[-1] <= 64,
+                                 "integers 1 to 64, comma separated"))
     modes = ["native", "sync"] + (["serial", "batched"] if args.paths else [])
     crossings = {}
     for env_id in ids:
