@@ -16,6 +16,8 @@ from wmr_mujoco.robots.roller_wheels import YAW_RATE
 #: The yaw-rate error that, held over the run, reaches the 1° heading requirement:
 #: (π/180) / (scale · yaw rate · duration), about 0.15 % here.
 STEADY_LIMIT = math.radians(1.0) / (md.SCALE * YAW_RATE * TURN_DURATION)
+#: The start angles past a roller's middle: the neighbour that keeps, the draw that drifts.
+KEEP, DRIFT = md.PHASES
 
 
 @pytest.fixture(scope="module")
@@ -31,15 +33,14 @@ def test_bad_input_is_refused_before_any_run():
 
 
 def test_the_offset_term_is_the_mirror_symmetric_least_squares():
-    # No offset, no change; the two diagonals are mirror images in the turn, so an offset
-    # either way changes the twist alike (to round-off of the 4096-sample mean).
-    assert md.offset_effect(0.0) == 0.0
+    # The two diagonals are mirror images in the turn, so an offset either way changes
+    # the twist alike (to round-off of the 4096-sample mean).
     d = math.radians(3.0)
     assert md.offset_effect(d) == pytest.approx(md.offset_effect(-d), rel=1e-9, abs=1e-12)
 
 
 def test_the_drifting_draw_loses_rate_the_kinematics_do_not_explain(runs):
-    drift, keep = runs[0.0125], runs[0.005]
+    drift, keep = runs[DRIFT], runs[KEEP]
     residual = lambda r: float(np.mean(r["measured"] - r["kinematic"]))  # noqa: E731
     # The drifting draw: a steady loss beyond the kinematics of its measured phases and
     # wheel rates, of the size that crosses the requirement over the run (more than half
@@ -56,8 +57,8 @@ def test_the_drifting_draw_holds_its_torque_on_one_diagonal(runs):
     # the roller-phase offset grows one way; in its neighbour the drive changes diagonal
     # during the run and the offset stays within the start's 2p.
     split = lambda r: r["rates"][:, [0, 3]].mean(1) - r["rates"][:, [1, 2]].mean(1)  # noqa: E731
-    drift, keep = runs[0.0125], runs[0.005]
+    drift, keep = runs[DRIFT], runs[KEEP]
     assert (split(drift) < 0.0).all()
     assert np.diff(drift["offset"]).max() < 0.0
     assert (split(keep) < 0.0).any() and (split(keep) > 0.0).any()
-    assert np.abs(keep["offset"]).max() <= 2.0 * 0.005
+    assert np.abs(keep["offset"]).max() <= 2.0 * KEEP

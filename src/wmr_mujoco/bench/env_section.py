@@ -45,8 +45,9 @@ def env_section(quick: bool) -> tuple[dict[str, object] | None, str]:
         env_success.HEADER + "\n" + "\n".join(env_success.row(i, r) for i, r in success.items()),
         f"Steps per second in one process against a bare `mj_step` loop with the same frame "
         f"skip, replaying a scripted episode (`python -m wmr_mujoco.bench.env_throughput`; "
-        f"{repeats} rounds of {seconds:g} s runs, each ratio the median of the ratios within "
-        f"a round, the bare loop timed first and last in it; resets timed apart): worst "
+        f"{repeats} rounds of {seconds:g} s runs, each ratio the median over the rounds of the "
+        f"ratio within a round, the bare loop timed first and last in it; resets timed "
+        f"apart): worst "
         f"env / bare "
         f"{100 * worst_env:.0f} % (single env); worst native vector environment "
         f"(`gymnasium.make_vec`, batched step) / bare at {env_throughput.JUDGED} worlds "
