@@ -136,6 +136,7 @@ class Worlds:
         st0 = first.stepper
         self._inline = None
         self._servo = _servo(first)
+        self._cmap = first.robot.spec.command
         w = st0._w if self._servo is None else self._servo[0]
         if w is not None and st0.split and st0.nstep > 1:
             self._inline = [(w.dot, s.model, s.data, s._ctrl) for s in self.steppers]
@@ -174,13 +175,15 @@ class Worlds:
             # the targets φ_target read from each world's ``act``
             _, acts, channels, period, adjust, adapter = self._servo
             targets = np.array(self._act)[:, acts]
-            u = commands.copy()
-            for k, (channel, limit) in enumerate(channels):
-                u[:, channel] = np.minimum(limit, np.maximum(
-                    -limit, (commands[:, channel] - targets[:, k]) / period))
-            if adjust is not None:  # on each world's inputs and targets (floats), as bind
-                u = np.array([adjust(adapter, row, phi)
-                              for row, phi in zip(u, targets.tolist(), strict=True)])
+            if adjust is not None:  # world by world anyway: the command map's own inputs
+                inputs = self._cmap._inputs
+                u = np.array([inputs(adapter, row, phi, period, channels) for row, phi in
+                              zip(commands.tolist(), targets.tolist(), strict=True)])
+            else:
+                u = commands.copy()
+                for k, (channel, limit) in enumerate(channels):
+                    u[:, channel] = np.minimum(limit, np.maximum(
+                        -limit, (commands[:, channel] - targets[:, k]) / period))
             commands = u
         if active is None and self._inline is not None:  # Stepper.advance, inlined
             step1, step, step2 = mujoco.mj_step1, mujoco.mj_step, mujoco.mj_step2
