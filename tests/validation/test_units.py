@@ -37,8 +37,16 @@ def test_a_unit_gives_each_familys_own_result():
     # (its own batch of two): the same rows, to the bit; every draw judged.
     spec = get_spec("omni3")
     names = ("step 0°", "torque along y")
-    work = [(spec, s) for s in spec.scenarios if s.name in names]
+    calls = []
+
+    def prepare(members, params):  # the robot's own prepare, its calls counted
+        calls.append(len(members))
+        spec.prepare(members, params)
+
+    work = [(dataclasses.replace(spec, prepare=prepare), s) for s in spec.scenarios
+            if s.name in names]
     together = run_unit(work, [0, 1], seed=3, draws=2)
+    assert calls[0] == 4  # the unit prepared both families' members in one call first
     for (i, result), (sp, s) in zip(together, work, strict=True):
         assert work[i][1] is s
         alone = run_family(sp, s, 3, 2)

@@ -52,6 +52,7 @@ from wmr_mujoco.validation.metrics import (
 )
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.spec import RobotSpec
+from wmr_mujoco.validation.units import announce
 from wmr_mujoco.validation.variations import WHEEL_PHASE, add_wheel_phase
 
 #: A scenario with the robot it runs on.
@@ -385,8 +386,5 @@ def run_all(work: Sequence[Job], progress: Callable[[str], None] | None = None,
     for spec, s in work:
         result = run_scenario(spec, s, progress)
         results.append(result)
-        if progress:
-            progress(f"[{len(results)}/{len(work)}] {s.key}")
-        if on_result:
-            on_result(result)
+        announce(result, len(results), len(work), progress, on_result)
     return results

@@ -14,6 +14,7 @@ of the unit's prepare.
 from __future__ import annotations
 
 import time
+import traceback
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
@@ -66,8 +67,10 @@ def run_unit(work: Sequence[Job], unit: Sequence[int], seed: int, draws: int | N
         members = [m for i in unit for m in work[i][1].members(seed, draws)]
         try:
             spec.prepare(members, None)  # type: ignore[misc]
-        except Exception:  # each family's own prepare then runs its members (and says why)
-            pass
+        except Exception:  # each family's own prepare then runs its members
+            if progress:
+                progress(f"{spec.name}: preparing {len(unit)} families together failed; "
+                         f"each prepares its own:\n{traceback.format_exc()}")
         shared = (time.perf_counter() - start) / len(unit)
     out = []
     for i in unit:
