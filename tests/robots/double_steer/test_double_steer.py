@@ -43,7 +43,7 @@ def test_sim_state_reads_pose_and_steering_at_rest():
 
 # The random-steps draw that rolled the robot over at seed 3 (member 12), written out so
 # that the test does not depend on the family's sampling.
-_ROLLING_DRAW = {"wheel phase": 0.3081833791135091, "inputs": 0.4553005907582337}
+_ROLLING_DRAW = {ff.WHEEL_PHASE: 0.3081833791135091, ff.INPUTS: 0.4553005907582337}
 #: Its roll starts after 4.6 s (chassis tilt beyond 5°); the first 4.5 s are upright.
 _UPRIGHT_PART = 4.5
 
@@ -56,8 +56,10 @@ def _random_steps():
 def test_random_steps_open_only_what_a_roll_over_misses():
     spec, s = _random_steps()
     assert set(s.open_targets) == {ff.OVER_RUN, ff.DEPTH}  # the step-from-rest stays judged
-    rows = ff.measure(spec, s.member(_ROLLING_DRAW)).metrics
-    assert {m.name for m in rows} >= {ff.OVER_RUN, ff.DEPTH}  # the opened names exist
+    rows = {m.name: m for m in ff.measure(spec, s.member(_ROLLING_DRAW)).metrics}
+    # what the roll-over misses is what was opened: both figures beyond their targets
+    for name in (ff.OVER_RUN, ff.DEPTH):
+        assert abs(rows[name].value) > rows[name].target.value, name
 
 
 def test_a_draw_that_rolls_over_presses_deeper_only_after_the_roll():
