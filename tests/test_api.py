@@ -137,14 +137,15 @@ def test_a_run_too_long_for_memory_is_refused_first_naming_the_cap(monkeypatch):
 
 
 def test_the_memory_cap_is_raised_or_lowered_by_argument_or_environment(monkeypatch):
-    # 0.1 s of disc is 50 steps of 2 ms; each keeps at least its 12-number physics state
-    # twice (192 bytes): 1 KiB is far too little, 10 MiB is plenty.
+    # 0.1 s of disc is 40 steps of its 2.5 ms; each keeps at least its 12-number physics
+    # state twice (192 bytes): 1 KiB is far too little, 10 MiB is plenty.
     with pytest.raises(ValueError, match=r"over the memory cap of 1000 B"):
         wmr.predict("disc", [0.1, 0.0], 0.1, max_memory=1000)
     monkeypatch.setenv("WMR_MAX_MEMORY", "1K")
     with pytest.raises(ValueError, match=r"over the memory cap of 1 KiB"):
         wmr.predict("disc", [0.1, 0.0], 0.1)
-    assert len(wmr.predict("disc", [0.1, 0.0], 0.1, max_memory=10 * 2**20).time) == 51
+    steps = round(0.1 / wmr.load("disc").opt.timestep)
+    assert len(wmr.predict("disc", [0.1, 0.0], 0.1, max_memory=10 * 2**20).time) == steps + 1
     monkeypatch.setenv("WMR_MAX_MEMORY", "lots")
     with pytest.raises(ValueError, match=r"WMR_MAX_MEMORY = 'lots'; give a number of bytes"):
         wmr.predict("disc", [0.1, 0.0], 0.1)

@@ -53,12 +53,12 @@ def test_cylinder_wheels_are_confirmed(write):
 
 
 def test_large_timestep_is_confirmed(write):
-    # Contact time constant 4 ms (the robot's solref) under an 8 ms step: MuJoCo softens
-    # the contacts to 16 ms; the counterfactual runs at 2 ms.
-    a = _audit(write, 'timestep="0.002"', 'timestep="0.008"')
+    # Contact time constant 5 ms (the robot's solref, twice its 2.5 ms step) under an 8 ms
+    # step: MuJoCo softens the contacts to 16 ms; the counterfactual runs at t_c/2 = 2.5 ms.
+    a = _audit(write, 'timestep="0.0025"', 'timestep="0.008"')
     d = _only(a, "timestep")
     assert d.confirmed
-    assert "0.002 s" in d.change
+    assert "0.0025 s" in d.change
 
 
 def test_a_cause_without_effect_is_not_confirmed(write):

@@ -114,9 +114,10 @@ def test_robot_without_a_model_of_the_kind_is_refused():
 
 
 def test_batch_too_large_for_memory_is_refused_before_work(monkeypatch):
-    """2000 members x 500 000 steps of ~30 doubles is ~ 0.5 TB: refused, naming the size."""
+    """2000 members x 1000 s of steps of ~30 doubles is ~ 0.3 TB: refused, naming the size."""
     monkeypatch.setattr(batch_simulate, "prepare", None)  # any settle would fail loudly
-    with pytest.raises(ValueError, match=r"2000 members x 500000 steps .* GiB"):
+    steps = round(1000.0 / wmr.load(ROBOT).opt.timestep)
+    with pytest.raises(ValueError, match=rf"2000 members x {steps} steps .* GiB"):
         wmr.simulate_batch(ROBOT, [[0.5, 0.1]] * 2000, 1000.0)
 
 

@@ -29,7 +29,9 @@ def test_rows_and_table():
     assert "| bicycle |" in text and "Peer left out" in text
 
 
-def test_an_unchanged_robot_has_no_previous_row():
+def test_an_unchanged_robot_has_no_previous_row(monkeypatch):
+    """A record equal to today's defaults (no override) gives no previous row."""
+    monkeypatch.setattr(ds, "PREVIOUS_DEFAULTS", {**ds.PREVIOUS_DEFAULTS, "disc": {}})
     rows = ds.rows(["disc"], TINY)
     assert rows[0]["previous"] is None and rows[0]["rtf_previous"] is None
 

@@ -2,6 +2,7 @@
 
 import builtins
 
+import wmr_mujoco
 from wmr_mujoco.bench import env_section, env_success
 
 
@@ -15,7 +16,8 @@ def test_section_has_both_tables(monkeypatch):
     assert set(results) == {"success", "throughput"}
     assert "worst success rate 100.0 % (goal >= 95 %)" in text
     assert "| wmr/Disc-GoToGoal-v0 | 10/10 |" in text
-    assert "| wmr/Disc-GoToGoal-v0 | 10 |" in text  # the throughput row, frame skip 10
+    skip = round(0.02 / wmr_mujoco.load("disc").opt.timestep)  # the 20 ms control period
+    assert f"| wmr/Disc-GoToGoal-v0 | {skip} |" in text  # the throughput row, its frame skip
 
 
 def test_without_gymnasium_the_section_is_left_out(monkeypatch):

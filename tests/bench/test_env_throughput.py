@@ -2,6 +2,7 @@
 
 import pytest
 
+import wmr_mujoco
 from wmr_mujoco.bench import env_throughput
 
 
@@ -12,8 +13,10 @@ def test_measure_reports_every_loop_and_ratio():
     assert all(m[k] > 0 for k in (*loops, "bare", "reset_ms"))
     assert m["vector64_ratio"] == pytest.approx(m["vector64"] / m["bare"])
     assert m["env_ratio"] == pytest.approx(m["env"] / m["bare"])
-    assert m["frame_skip"] == 10  # 20 ms control period / 2 ms timestep
-    assert "| wmr/Disc-GoToGoal-v0 | 10 |" in env_throughput.table({"wmr/Disc-GoToGoal-v0": m})
+    skip = round(0.02 / wmr_mujoco.load("disc").opt.timestep)  # the 20 ms control period
+    assert m["frame_skip"] == skip
+    assert f"| wmr/Disc-GoToGoal-v0 | {skip} |" in env_throughput.table(
+        {"wmr/Disc-GoToGoal-v0": m})
     line = env_throughput.summary({"wmr/Disc-GoToGoal-v0": m}, 2, 1, 0.05)
     assert "worst native vector / bare at 16 worlds" in line and "at 2 worlds" in line
     # The exit status judges the native vector ratio at 16 worlds.

@@ -7,6 +7,7 @@ import types
 
 import pytest
 
+from wmr_mujoco.bench import default_speed
 from wmr_mujoco.bench import floor_study as fs
 
 TINY = dataclasses.replace(fs.QUICK, draws=2, duration=0.5, timed=0.2)
@@ -14,7 +15,7 @@ TINY = dataclasses.replace(fs.QUICK, draws=2, duration=0.5, timed=0.2)
 
 def test_rows_and_table_for_the_disc():
     rows = fs.rows(TINY, ["disc"])
-    assert [r["robot"] for r in rows] == ["disc"]
+    assert [r["robot"] for r in rows] == ["disc", "disc"]  # its default, its previous one
     r = rows[0]
     assert r["members"] == 2
     assert r["worst"][0] == 0.0 and r["worst"][1] == 0.0  # the disc's remedy
@@ -27,6 +28,11 @@ def test_rows_and_table_for_the_disc():
 def test_robots_whose_defaults_changed_get_a_previous_row():
     labels = [label for label, _ in fs._settings("omni3")]
     assert labels == ["default", "previous default"]
+    assert [label for label, _ in fs._settings("disc")] == ["default", "previous default"]
+
+
+def test_a_robot_without_a_record_has_only_its_default(monkeypatch):
+    monkeypatch.setattr(default_speed, "PREVIOUS_DEFAULTS", {})
     assert [label for label, _ in fs._settings("disc")] == ["default"]
 
 

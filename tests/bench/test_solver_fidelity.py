@@ -99,3 +99,19 @@ def test_without_running_only_kept_figures_give_a_verdict(tmp_path):
                                            progress=False, cache=tmp_path, run=False)
     assert list(cells) == ["PGS"]
     assert cells["PGS"].startswith("seed 0: passes all; worst rise +10.0% of target")
+
+
+def test_an_open_target_met_by_the_defaults_is_lost_when_the_setting_misses_it():
+    """An open target (not judged: another draw of the family misses it) still counts where
+    the defaults' figure meets it: a setting may not worsen it past its target unseen. An
+    open target the defaults miss already is not lost again."""
+    def open_row(value, metric):
+        return Row("r", "s", metric, value, "", 1.0, None, open=True)
+
+    default = _rows(open_row(0.8, "met"), open_row(3.0, "missed"), _row(0.2, None, None, "shown"))
+    setting = _rows(open_row(1.2, "met"), open_row(9.0, "missed"), _row(5.0, None, None, "shown"))
+    assert solver_fidelity.meets(default[("s", "met", "")])
+    assert not solver_fidelity.meets(default[("s", "shown", "")])  # no target: nothing to meet
+    v = solver_fidelity.compare(default, setting)
+    assert v.lost == ("s / met",)
+    assert v.worst_rise == float("-inf")  # no judged row: no rise

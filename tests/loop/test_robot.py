@@ -25,12 +25,12 @@ def test_make_is_exported_lazily_from_the_package() -> None:
     ({"robot": "hexapod"}, "unknown robot 'hexapod'; valid robots are: disc"),
     ({"backend": "bullet"}, "unknown backend 'bullet'; valid backends are: mujoco, kinematic"),
     ({"mode": "velocity"}, "unknown mode 'velocity'; valid modes are: command, wheels"),
-    ({"control_period": 0.015}, r"control_period = 0.015 s is not a multiple of the model "
-                                r"timestep 0.002 s"),
+    ({"control_period": 0.016}, r"control_period = 0.016 s is not a multiple of the model "
+                                r"timestep 0.0025 s"),
     ({"control_period": 0.0}, r"must be in \(0, 10\] s"),
     ({"control_period": 1e5}, r"must be in \(0, 10\] s"),  # one step() would run for minutes
     ({"control_period": float("nan")}, r"must be in \(0, 10\] s"),
-    ({"control_period": 0.0005}, "not a multiple of the model timestep 0.002"),
+    ({"control_period": 0.0005}, "not a multiple of the model timestep 0.0025"),
     ({"backend": "kinematic", "mode": "wheels"}, "kinematic backend takes mode='command'"),
     ({"params": object()}, "params must be a DiffDriveParams, got object"),
 ])

@@ -30,7 +30,7 @@ def test_diverging_scenario_is_a_failed_row_and_the_rest_still_run(monkeypatch):
 
     monkeypatch.setattr(validation, "load", unstable_load)
     bad = Scenario("bicycle", "unstable", (const(1.0), const(0.0)), duration=1.0)
-    good = Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=1.0)
+    good = Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=2.0)
     messages = []
     results = run_all([(get_spec("bicycle"), bad), (get_spec("disc"), good)], messages.append)
     assert results[0].error is not None and "diverged" in results[0].error

@@ -48,17 +48,21 @@ PEER_GOAL = 5.0
 #: record to compare with, not a setting of any robot. Keys are parameter fields,
 #: ``sim.<field>`` those of :class:`~wmr_mujoco.models.params.SimParams`.
 PREVIOUS_DEFAULTS: Mapping[str, Mapping[str, float | str]] = {
-    "disc": {},
-    "bicycle": {"sim.floor_impedance": 0.0},
-    "tricycle": {"sim.timestep": 0.002, "sim.floor_impedance": 0.0},
+    "disc": {"sim.timestep": 0.002, "sim.contact_timeconst": 0.004},
+    "bicycle": {"sim.timestep": 0.002, "sim.contact_timeconst": 0.004,
+                "sim.floor_impedance": 0.0},
+    "tricycle": {"sim.timestep": 0.002, "sim.contact_timeconst": 0.004,
+                 "sim.floor_impedance": 0.0},
     "omni3": {"floor_impedance": 0.0, "sim.timestep": 0.001, "sim.contact_timeconst": 0.002,
               "jacobian": "auto"},
     "omni3_reduced": {"floor_impedance": 0.0, "sim.timestep": 0.001,
                       "sim.contact_timeconst": 0.002},
     "mecanum4": {"floor_impedance": 0.0, "sim.timestep": 0.004,
                  "sim.contact_timeconst": 0.008},
-    "diffdrive": {"sim.timestep": 0.002, "sim.floor_impedance": 0.0},
-    "single_steer": {"sim.timestep": 0.002, "sim.floor_impedance": 0.0},
+    "diffdrive": {"sim.timestep": 0.002, "sim.contact_timeconst": 0.004,
+                  "sim.floor_impedance": 0.0},
+    "single_steer": {"sim.timestep": 0.002, "sim.contact_timeconst": 0.004,
+                     "sim.floor_impedance": 0.0},
     "double_steer": {"sim.timestep": 0.002, "sim.floor_impedance": 0.0},
 }
 

@@ -9,8 +9,10 @@ draws) and is judged by its worst member. The robot's default parameters run the
 families at the same seed beside it, and the two are compared row by row
 (:func:`compare`):
 
-* **lost**: the rows the defaults pass and the setting fails (the setting is rejected if
-  any, at any seed);
+* **lost**: the rows the defaults meet and the setting does not (:func:`meets`: a judged
+  row that passes, or an open target's row whose figure is within it, so that a setting
+  cannot hide behind a target that is open for another draw); the setting is rejected
+  if any, at any seed;
 * **worst change**: the largest rise of a judged figure as a share of its target,
   ``max (|v_setting| − |v_default|) / target`` over the judged rows (positive: the
   setting comes closer to failing).
@@ -21,6 +23,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import math
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -117,7 +120,8 @@ class Verdict:
     """A setting's figures against the defaults' at one seed.
 
     Attributes:
-        lost: ``scenario / metric`` of the rows the defaults pass and the setting fails.
+        lost: ``scenario / metric`` of the rows the defaults meet and the setting does not
+            (:func:`meets`).
         worst_rise: the largest ``(|v_setting| − |v_default|) / target`` over the judged
             rows (an open target's figure is shown, not judged).
         worst_row: ``scenario / metric`` of that row.
@@ -135,6 +139,14 @@ class Verdict:
         return not self.lost and not self.missing
 
 
+def meets(r: Row) -> bool:
+    """Whether a row's figure is within its target: judged and passed, or open and met."""
+    if r.passed is not None:
+        return bool(r.passed)
+    return bool(r.open and r.target is not None and math.isfinite(r.value)
+                and abs(r.value) <= r.target)
+
+
 def compare(default: Figures, setting: Figures) -> Verdict:
     """The setting's rows against the defaults' (see the module docstring)."""
     lost, missing = [], []
@@ -145,7 +157,7 @@ def compare(default: Figures, setting: Figures) -> Verdict:
         if s is None:
             missing.append(name)
             continue
-        if d.passed and not s.passed:
+        if meets(d) and not meets(s):
             lost.append(name)
         if d.target and d.passed is not None:  # a judged row
             rise = (abs(s.value) - abs(d.value)) / abs(d.target)

@@ -46,7 +46,10 @@ class BicycleParams:
     fork_mass: float = 1.2
     drive: DriveParams = DriveParams(wheel_kv=200.0, wheel_torque_limit=60.0,
                                      steer_kp=1000.0, steer_kv=8.0)
-    sim: SimParams = SimParams(floor_impedance=0.001)
+    #: 2.5 ms: the longest step dividing the control periods at which every target
+    #: holds over the families (``python -m wmr_mujoco.bench.timestep_choice``).
+    sim: SimParams = SimParams(timestep=0.0025, contact_timeconst=0.005,
+                               floor_impedance=0.001)
 
     def __post_init__(self) -> None:
         _check_positive_fields(self)

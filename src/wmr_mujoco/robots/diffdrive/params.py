@@ -61,7 +61,11 @@ class DiffDriveParams:
     chassis_com_x: float = -0.08
     chassis_size: tuple[float, float, float] = (0.34, 0.28, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
+    #: 2.5 ms: the longest step dividing the control periods at which every target
+    #: holds over the families, at the largest ζ that keeps the penetration bound
+    #: (``python -m wmr_mujoco.bench.timestep_choice``).
+    sim: SimParams = SimParams(timestep=0.0025, contact_timeconst=0.005,
+                               floor_impedance=0.001, floor_dampratio=0.5)
 
     #: Fields the model does not use (no steering): ``wmr info`` leaves them out.
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, *PAIRS_SET_IMPRATIO)

@@ -65,7 +65,9 @@ class DiscParams:
     mount_mass: float = 0.5
     drive: DriveParams = DriveParams(wheel_kv=20.0, wheel_torque_limit=5.0,
                                      steer_kp=500.0, steer_kv=2.0)
-    sim: SimParams = SimParams()
+    #: 2.5 ms: the longest step dividing the control periods at which every target
+    #: holds over the families (``python -m wmr_mujoco.bench.timestep_choice``).
+    sim: SimParams = SimParams(timestep=0.0025, contact_timeconst=0.005)
     free_integrator: str = "RK4"
     free_timestep: float = 0.004
     free_rim: float = 0.002

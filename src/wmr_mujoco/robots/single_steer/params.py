@@ -53,7 +53,11 @@ class SingleSteerParams:
     chassis_com_x: float = 0.16
     chassis_size: tuple[float, float, float] = (0.4, 0.3, 0.05)
     drive: DriveParams = _DRIVE
-    sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
+    #: 2.5 ms: the longest step dividing the control periods at which every target
+    #: holds over the families, at the largest ζ that keeps the penetration bound
+    #: (``python -m wmr_mujoco.bench.timestep_choice``).
+    sim: SimParams = SimParams(timestep=0.0025, contact_timeconst=0.005,
+                               floor_impedance=0.001, floor_dampratio=0.6)
 
     def __post_init__(self) -> None:
         steered.check(self, lambda p: (

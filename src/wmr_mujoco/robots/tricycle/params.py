@@ -56,7 +56,11 @@ class TricycleParams:
     drive: DriveParams = DriveParams(wheel_kv=10.0, wheel_armature=0.01,
                                      wheel_torque_limit=10.0,
                                      steer_kp=100.0, steer_kv=0.5)
-    sim: SimParams = SimParams(floor_impedance=0.001, floor_dampratio=0.6)
+    #: 2.5 ms: the longest step dividing the control periods at which every target
+    #: holds over the families, at the largest ζ that keeps the penetration bound
+    #: (``python -m wmr_mujoco.bench.timestep_choice``).
+    sim: SimParams = SimParams(timestep=0.0025, contact_timeconst=0.005,
+                               floor_impedance=0.001, floor_dampratio=0.6)
 
     REAR_DRIVES = ("left", "differential")
 
