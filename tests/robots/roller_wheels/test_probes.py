@@ -38,3 +38,19 @@ def test_roller_rate_errors_read_the_index_or_build_it():
     got = roller_rate_errors(model, data, info, slide, roller_geoms(model, info))
     assert got == roller_rate_errors(model, data, info, slide)
     assert len(got) >= 3  # a roller of each wheel touches
+
+
+def test_layout_is_read_once_per_equal_model_and_anew_for_a_changed_one():
+    # A family's members share one model: the second read is the first one's result
+    # (the same floats, in read-only arrays: no caller changes another's); a model
+    # changed in place (its timestep) settles anew and reads a different rolling radius
+    # (the settled penetration depends on the step).
+    model = load("omni3")
+    first = layout_from_model(model, WHEELS)
+    again = layout_from_model(model, WHEELS)
+    assert again.layout.radii.tobytes() == first.layout.radii.tobytes()
+    assert again.layout.positions.tobytes() == first.layout.positions.tobytes()
+    assert not again.layout.radii.flags.writeable
+    model.opt.timestep *= 2.0
+    changed = layout_from_model(model, WHEELS)
+    assert changed.layout.radii.tobytes() != first.layout.radii.tobytes()

@@ -93,9 +93,12 @@ class Path:
         return self.at(0.0).pose
 
     def _s(self, s: float) -> float:
+        # np.mod's and np.clip's floats (Python's float modulo is numpy's; a NaN kept)
+        # without their per-call cost on one number
+        s, length = float(s), self.length
         if self.closed:
-            return float(np.mod(s, self.length))
-        return float(np.clip(s, 0.0, self.length))
+            return s % length if math.isfinite(s) else math.nan
+        return s if s != s else min(max(s, 0.0), length)
 
     def at(self, s: float) -> PathPoint:
         """The point at arc length ``s`` (wrapped on a closed path, clipped on an open one)."""
@@ -117,19 +120,23 @@ class Path:
         """
         p = np.asarray(point, float)[:2]
         n = len(self.s)
-        if hint is None:
-            idx = np.arange(n - 1)
-        else:
+        # The segments searched: from ``first`` on (views, no copies), or those of ``idx``
+        first, idx, a, b = 0, None, self.xy[:-1], self.xy[1:]
+        if hint is not None:
             h = self._s(hint)
-            lo, hi = np.searchsorted(self.s, [h - window, h + window])
-            idx = np.arange(lo - 1, hi + 1)
-            idx = np.mod(idx, n - 1) if self.closed else idx[(idx >= 0) & (idx < n - 1)]
-        a, b = self.xy[idx], self.xy[idx + 1]
+            lo, hi = (int(i) for i in np.searchsorted(self.s, [h - window, h + window]))
+            if not self.closed or (lo >= 1 and hi <= n - 2):  # no wrap: a range of them
+                first, last = max(lo - 1, 0), min(hi + 1, n - 1)
+                a, b = self.xy[first:last], self.xy[first + 1:last + 1]
+            else:  # the window wraps round a closed path's end
+                idx = np.mod(np.arange(lo - 1, hi + 1), n - 1)
+                a, b = self.xy[idx], self.xy[idx + 1]
         d = b - a
         t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.einsum("ij,ij->i", d, d), 0.0, 1.0)
         foot = a + t[:, None] * d
         k = int(np.argmin(np.einsum("ij,ij->i", foot - p, foot - p)))
-        return self.at(self.s[idx[k]] + t[k] * (self.s[idx[k] + 1] - self.s[idx[k]]))
+        i = first + k if idx is None else int(idx[k])
+        return self.at(self.s[i] + t[k] * (self.s[i + 1] - self.s[i]))
 
     @cached_property
     def _rows(self) -> tuple[list[float], list[list[float]]]:
