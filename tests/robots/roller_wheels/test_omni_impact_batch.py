@@ -52,3 +52,25 @@ def test_each_run_gets_the_scalar_maps_floats(seed, variant):
             None if accels is None else accels[b])
         assert got_nu[b].tobytes() == want_nu.tobytes()
         assert got_lost[b].tobytes() == np.float64(want_lost).tobytes()
+
+
+def test_constraint_rows_and_roller_terms_are_the_scalar_ones():
+    # The stacked constraint rows against HybridImpacts.constraint_rows, and R, x_c, ρ
+    # against RollerGeometry's on one angle at a time, bit for bit over many angles (one
+    # in a few hundred differs in the last bit where a square is a product, not pow).
+    from wmr_mujoco.robots.roller_wheels.omni_impact_batch import (
+        _constraint_rows,
+        _roller_terms,
+    )
+
+    model = hybrid()
+    rng = np.random.default_rng(7)
+    th, modes = rng.uniform(-np.pi, np.pi, (1500, 3)), rng.integers(0, 12, (1500, 3))
+    rows = _constraint_rows(model, modes, th)
+    for b in range(len(th)):
+        assert rows[b].tobytes() == model.constraint_rows(tuple(modes[b]), th[b]).tobytes()
+    g, phi = model.rollers, rng.uniform(-0.6, 0.6, 3000)
+    terms = np.stack(_roller_terms(model, phi), 1)
+    want = np.array([[g.rolling_radius(p), g.contact_ahead(p), g.contact_radius(p)]
+                     for p in phi.tolist()])
+    assert terms.tobytes() == want.tobytes()

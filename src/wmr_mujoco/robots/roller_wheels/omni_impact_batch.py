@@ -8,9 +8,10 @@ scalar map's floats: numpy's stacked ``solve`` calls LAPACK's ``gesv`` on each m
 its stacked ``matmul`` the BLAS routine of each slice's shapes and layout (``gemv`` for a
 matrix and a vector, ``dot`` for two vectors, ``gemm`` for two matrices), as the scalar
 map's calls do; the elementwise steps are the scalar ones in the same order (IEEE, one
-rounding each). ``tests/robots/roller_wheels/test_omni_impact_batch.py`` checks the floats
-run by run. What it saves is numpy's per-call cost: a hand-over step of omni3's families
-holds about twenty runs, each ~60 small calls in the scalar map.
+rounding each; a square of one number is C's ``pow``, as numpy computes it on a scalar).
+``tests/robots/roller_wheels/test_omni_impact_batch.py`` checks the floats run by run.
+What it saves is numpy's per-call cost: a hand-over step of omni3's families holds about
+twenty runs, each ~60 small calls in the scalar map (~7x less per impact).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from wmr_mujoco.analytic.planar import wrap_angle
+from wmr_mujoco.robots.roller_wheels.omni_impacts import _UP
 
 if TYPE_CHECKING:
     from wmr_mujoco.robots.roller_wheels.omni_hybrid import OmniHybrid
@@ -63,17 +65,61 @@ def _inplane(model: OmniHybrid, nu: np.ndarray, H_old: np.ndarray, H_new: np.nda
     return (w - _matvec(Minv_At, lam))[:, :3]
 
 
+def _roller_terms(model: OmniHybrid, phi: np.ndarray
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``R(φ)``, ``x_c(φ)``, ``ρ(φ)`` of :class:`RollerGeometry` at each ``φ``, its floats.
+
+    The scalar map evaluates them on one angle at a time, where numpy squares a number
+    with the C library's ``pow`` (an array it squares by a product, which may differ in
+    the last bit): the squares of ``h(φ)`` here are ``math.pow``'s.
+    """
+    g = model.rollers
+    b, a = g.half_width, g.half_length
+    c, s = np.cos(phi), np.sin(phi)
+    c2 = np.array([math.pow(x, 2.0) for x in c.ravel().tolist()]).reshape(c.shape)
+    s2 = np.array([math.pow(x, 2.0) for x in s.ravel().tolist()]).reshape(s.shape)
+    h = np.sqrt(b * b * c2 + a * a * s2)
+    return (g.axis_distance * c + h, -g.axis_distance * s + (a * a - b * b) * s * c / h,
+            g.half_width ** 2 * c / h)
+
+
+def _constraint_rows(model: OmniHybrid, modes: np.ndarray, thetas: np.ndarray) -> np.ndarray:
+    """:meth:`HybridImpacts.constraint_rows` of each run, (B, 9, 12).
+
+    Wheel by wheel as there: ``φ``, ``R(φ)``, ``x_c(φ)``, ``ρ(φ)``, the contact point
+    ``p`` and the rows ``(d, −d·[p]ₓ, coefficient)`` of each direction ``d``; the products
+    ``(−d) @ [p]ₓ`` one vector-matrix product per row.
+    """
+    g = model.rollers
+    phi = wrap_angle(g.angles[modes] + thetas - math.pi)
+    rolling, ahead, radius = _roller_terms(model, phi)
+    p = (model.distance * model.radial + ahead[..., None] * model.drive_dirs
+         - g.offsets[modes][..., None] * model.radial)
+    p[..., 2] -= rolling  # − (0, 0, R): the other entries minus 0.0 are themselves
+    zero = np.zeros(phi.shape)
+    skew = np.stack([np.stack([zero, -p[..., 2], p[..., 1]], -1),
+                     np.stack([p[..., 2], zero, -p[..., 0]], -1),
+                     np.stack([-p[..., 1], p[..., 0], zero], -1)], -2)  # (B, 3, 3, 3)
+    dirs = np.stack([model.drive_dirs, np.broadcast_to(_UP, (3, 3)), -model.radial], 1)
+    lever = (-dirs[None, :, :, None, :] @ skew[:, :, None])[..., 0, :]  # (B, 3, 3, 3)
+    nb = len(modes)
+    A = np.zeros((nb, 3, 3, 12))  # run, wheel, row, column
+    A[..., :3] = dirs
+    A[..., 3:6] = lever
+    wheel = np.arange(3)
+    A[:, wheel, 0, 6 + wheel] = -rolling
+    A[:, wheel, 1, 6 + wheel] = -ahead
+    A[:, wheel, 2, 9 + wheel] = -radius
+    return A.reshape(nb, 9, 12)
+
+
 def _vertical_impulses(model: OmniHybrid, nu: np.ndarray, old: np.ndarray, new: np.ndarray,
                        thetas: np.ndarray, spins: np.ndarray) -> np.ndarray:
     """:meth:`HybridImpacts.vertical_impulses` of each run, (B, 3).
 
-    The constraint rows are the model's own (:meth:`HybridImpacts.constraint_rows`, run
-    by run: they share the unchanged wheels' rows); the solves are stacked.
+    The constraint rows of :func:`_constraint_rows`; the solves stacked.
     """
-    a_old = np.stack([model.constraint_rows(tuple(o), th)
-                      for o, th in zip(old.tolist(), thetas, strict=True)])
-    a_new = np.stack([model.constraint_rows(tuple(n), th)
-                      for n, th in zip(new.tolist(), thetas, strict=True)])
+    a_old, a_new = _constraint_rows(model, old, thetas), _constraint_rows(model, new, thetas)
     known, unknown = [0, 1, 5], [2, 3, 4, 6, 7, 8, 9, 10, 11]
     # lift(ν, σ_old, θ, β̇): q with q[known] = ν, the constrained rest, β̇ the spins
     # Each product's slices are laid out as the scalar map's operands (BLAS picks its
@@ -105,7 +151,7 @@ def _overlap_impulse(model: OmniHybrid, nu: np.ndarray, new: np.ndarray, thetas:
     g = model.rollers
     m = new[:, wheel]
     phi = wrap_angle(g.angles[m] + thetas[:, wheel] - math.pi)
-    window = model.penetration / np.maximum(np.abs(g.contact_ahead(phi)), 1e-12)
+    window = model.penetration / np.maximum(np.abs(_roller_terms(model, phi)[1]), 1e-12)
     e = np.abs(g.offsets[m])
     load = model.mass * model.gravity / 3.0
     force = np.full(len(nu), model.friction * load / 4.0)
