@@ -30,3 +30,13 @@ def test_bad_sizes_exit_2():
     with pytest.raises(SystemExit) as e:
         vector_paths.main(["wmr/Disc-GoToGoal-v0", "--sizes", "0,4"])
     assert e.value.code == 2
+
+
+def test_crossing_lines_give_the_span_and_the_constant():
+    text = vector_paths.crossing_lines({"a": 8, "b": 12, "c": None}, [4, 8, 12, 64])
+    lines = text.splitlines()
+    assert lines[:3] == ["a: batched >= serial from 8 worlds on",
+                         "b: batched >= serial from 12 worlds on",
+                         "c: batched slower than serial at 64 worlds"]
+    assert lines[3] == (f"crossover over these 3 environments: 8 to 12 worlds (the latest: b; "
+                        f"1 never); BATCHED_FROM = {vector_paths.BATCHED_FROM}")

@@ -26,7 +26,9 @@ the task's arrays step, :mod:`wmr_mujoco.envs.tasks.arrays`) and ``vector`` (``s
 the vector environment: adds the action check, observation, flags and infos).
 
 Every loop runs the same physics after the same actions, in this process, timed in its CPU
-time and taking turns (medians of ``--repeats`` runs of ``--seconds``): each layer's cost is
+time and taking turns (medians of ``--repeats`` rounds of runs of ``--seconds``, each round
+timing the bare loop first and last: :func:`wmr_mujoco.bench.env_loops.paired`; the bare
+figure is the median of the rounds' mean of the two): each layer's cost is
 measured as it runs in a real step, right after the physics has filled the caches, which
 is dearer than the same Python timed alone in a tight loop.
 """
@@ -34,24 +36,15 @@ is dearer than the same Python timed alone in a tight loop.
 from __future__ import annotations
 
 import argparse
-import statistics
 from collections.abc import Callable, Sequence
 from itertools import pairwise
 from typing import Any
 
 import gymnasium as gym
-import mujoco
 import numpy as np
 
-from wmr_mujoco.bench.env_throughput import (
-    SEED,
-    add_timing,
-    check_ids,
-    check_options,
-    rate,
-    record,
-    replayer,
-)
+from wmr_mujoco.bench import env_loops as el
+from wmr_mujoco.bench.env_loops import SEED
 
 #: The loops, each adding one layer to the one before (module docstring).
 LAYERS = ("bare", "physics", "stepper", "task", "episode", "env")
@@ -59,9 +52,9 @@ LAYERS = ("bare", "physics", "stepper", "task", "episode", "env")
 VECTOR_LAYERS = ("bare", "physics", "read", "task", "vector")
 
 
-def vector_loops(env_id: str, worlds: int) -> dict[str, Callable[[int], float]]:
+def vector_loops(env_id: str, worlds: int) -> dict[str, el.Run]:
     """The timed loops of :data:`VECTOR_LAYERS` at ``worlds`` worlds, each its own envs."""
-    rec = record(gym.make(env_id))
+    rec = el.record(gym.make(env_id))
     off = gym.vector.AutoresetMode.DISABLED
     # The batched path at any world count (the layers below are its own).
     vecs = {name: gym.make_vec(env_id, num_envs=worlds, autoreset_mode=off, batched=True)
@@ -69,17 +62,6 @@ def vector_loops(env_id: str, worlds: int) -> dict[str, Callable[[int], float]]:
     for v in vecs.values():
         v.reset(seed=[SEED] * worlds)
     batch = [np.stack([a] * worlds).astype(float) for a in rec.actions]
-    bare = [(e.robot.model, e.robot.data, e.frame_skip) for e in vecs["bare"].envs]
-    starts = []
-    for model, data, _ in bare:
-        starts.append(mujoco.MjData(model))
-        mujoco.mj_copyData(starts[-1], model, data)
-
-    def bare_step(k: int) -> bool:
-        for model, data, skip in bare:
-            data.ctrl[:] = rec.controls[k]
-            mujoco.mj_step(model, data, skip)
-        return False
 
     def read_step(k: int) -> bool:
         w = vecs["read"].engine.worlds
@@ -97,41 +79,25 @@ def vector_loops(env_id: str, worlds: int) -> dict[str, Callable[[int], float]]:
         _, _, term, trunc, _ = vecs["vector"].step(batch[k])
         return bool(term.any() or trunc.any())
 
-    def restart(name: str) -> Callable[[], None]:
-        if name == "bare":
-            return lambda: [mujoco.mj_copyData(d, m, s) for (m, d, _), s in
-                            zip(bare, starts, strict=True)] and None
-        return lambda: vecs[name].reset(seed=[SEED] * worlds) and None
-
-    steps = {"bare": bare_step, "physics": lambda k: vecs["physics"].engine.worlds.push(batch[k])
-             or False, "read": read_step, "task": task_step, "vector": vector_step}
-    return {name: replayer(steps[name], restart(name), len(batch)) for name in VECTOR_LAYERS}
+    steps = {"physics": lambda k: vecs["physics"].engine.worlds.push(batch[k]) or False,
+             "read": read_step, "task": task_step, "vector": vector_step}
+    bare = [(e.robot.model, e.robot.data, e.frame_skip) for e in vecs["bare"].envs]
+    return {"bare": el.bare_loop(bare, rec.controls),
+            **{name: el.replayer(step, lambda v=vecs[name]: v.reset(seed=[SEED] * worlds),
+                                 len(batch)) for name, step in steps.items()}}
 
 
-def ladder_loops(env_id: str) -> tuple[dict[str, Callable[[int], float]], dict[str, Any]]:
+def ladder_loops(env_id: str) -> tuple[dict[str, el.Run], dict[str, Any]]:
     """The timed loops of :data:`LAYERS`, and the environment each steps (its own)."""
-    rec = record(gym.make(env_id))
+    rec = el.record(gym.make(env_id))
     actions = [a.tolist() for a in rec.actions]
     n = len(actions)
     envs = {name: gym.make(env_id).unwrapped for name in LAYERS}
     for e in envs.values():
         e.reset(seed=SEED)
-
-    def restart(name: str) -> Callable[[], None]:
-        return lambda: envs[name].reset(seed=SEED)
-
-    bare = envs["bare"].robot
-    model, data, skip = bare.model, bare.data, envs["bare"].frame_skip
-    start = mujoco.MjData(model)
-    mujoco.mj_copyData(start, model, data)
     physics, stepper = envs["physics"].episode.stepper, envs["stepper"].episode.stepper
     task_ep, episode = envs["task"].episode, envs["episode"].episode
     env = envs["env"]
-
-    def bare_step(k: int) -> bool:
-        data.ctrl[:] = rec.controls[k]
-        mujoco.mj_step(model, data, skip)
-        return False
 
     def task_step(k: int) -> bool:
         prev = task_ep.state
@@ -145,30 +111,29 @@ def ladder_loops(env_id: str) -> tuple[dict[str, Callable[[int], float]], dict[s
         return term or trunc
 
     steps: dict[str, Callable[[int], bool]] = {
-        "bare": bare_step,
         "physics": lambda k: physics.advance(rec.commands[k]) or False,
         "stepper": lambda k: stepper.step(rec.commands[k]) and False,
         "task": task_step,
         "episode": lambda k: any(episode.advance(actions[k])[2:4]),
         "env": env_step}
-    restarts = {name: restart(name) for name in LAYERS}
-    restarts["bare"] = lambda: mujoco.mj_copyData(data, model, start)
-    return {name: replayer(steps[name], restarts[name], n) for name in LAYERS}, envs
+    bare = envs["bare"]
+    runs = {"bare": el.bare_loop([(bare.robot.model, bare.robot.data, bare.frame_skip)],
+                                 rec.controls),
+            **{name: el.replayer(step, lambda e=envs[name]: e.reset(seed=SEED), n)
+               for name, step in steps.items()}}
+    return runs, envs
 
 
 def ladder(env_id: str, seconds: float, repeats: int, worlds: int = 0) -> dict[str, float]:
-    """Median µs per step of each loop of :data:`LAYERS`.
+    """Median µs per step of each loop of :data:`LAYERS` (paired rounds, module docstring).
 
     ``worlds`` > 0: µs per world-step of :data:`VECTOR_LAYERS` at that many worlds.
     """
     runs = vector_loops(env_id, worlds) if worlds else ladder_loops(env_id)[0]
-    for run in runs.values():
-        run(10)
-    samples: dict[str, list[float]] = {name: [] for name in runs}
-    for _ in range(repeats):
-        for name, run in runs.items():
-            samples[name].append(1e6 / rate(run, seconds) / max(worlds, 1))
-    return {name: statistics.median(x) for name, x in samples.items()}
+    bare = runs.pop("bare")
+    got = el.paired(bare, runs, seconds, repeats)  # steps/s of the loop (all its worlds)
+    per = 1e6 / max(worlds, 1)
+    return {"bare": per / got.bare, **{name: per / r for name, r in got.rates.items()}}
 
 
 def table(rows: dict[str, dict[str, float]]) -> str:
@@ -188,12 +153,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Print the table (µs per step); exit 2 on bad arguments."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("ids", nargs="*", help="environment ids (default: the light robots)")
-    add_timing(parser, 0.5)
+    el.add_timing(parser, 0.5)
     parser.add_argument("--vector", type=int, default=0,
                         help="worlds of the native vector env (default 0: the single env)")
     args = parser.parse_args(argv)
-    check_options(parser, args, ("--vector", args.vector, 0 <= args.vector <= 64, "0 to 64"))
-    ids = check_ids(parser, args.ids) or ["wmr/Disc-GoToGoal-v0", "wmr/Disc-FollowPath-v0",
+    el.check_options(parser, args, ("--vector", args.vector, 0 <= args.vector <= 64, "0 to 64"))
+    ids = el.check_ids(parser, args.ids) or ["wmr/Disc-GoToGoal-v0", "wmr/Disc-FollowPath-v0",
                                           "wmr/Bicycle-FollowPath-v0"]
     rows = {}
     for env_id in ids:

@@ -18,7 +18,7 @@ import gymnasium as gym
 import numpy as np
 
 import wmr_mujoco.envs as wenvs
-from wmr_mujoco.bench.env_throughput import check_ids
+from wmr_mujoco.bench.env_loops import check_ids
 from wmr_mujoco.envs.scripted import run_episode
 
 #: Required success rate.

@@ -29,27 +29,25 @@ episodes last as long as a solved one (a constant action would topple the Whippl
 within half a second). Each loop starts the episode again at its end; the time of these
 resets is left out of the steps/s (a reset settles the robot on the floor for half a
 simulated second: physics that the bare loop does not do) and printed apart as
-``reset ms``. All run in this one process and are timed in its CPU time (:data:`CLOCK`):
-steps per second of one core. Each steps/s figure is the median of ``--repeats`` rounds of
-timed runs of ``--seconds`` after a warm-up, the loops taking turns; each ratio is the
-median over the rounds of the ratio within a round (the bare loop timed first and last in
-it), so that a load that changes from round to round cancels out of the ratio.
+``reset ms``. All run in this one process and are timed in its CPU time: steps per
+second of one core. Each steps/s figure is the median of ``--repeats`` rounds of timed
+runs of ``--seconds`` after a warm-up, the loops taking turns; each ratio is the median
+over the rounds of the ratio within a round (the bare loop timed first and last in it),
+so that a load that changes from round to round cancels out of the ratio
+(:func:`wmr_mujoco.bench.env_loops.paired`).
 """
 
 from __future__ import annotations
 
 import argparse
 import statistics
-import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 
 import gymnasium as gym
-import mujoco
 import numpy as np
 
 import wmr_mujoco.envs as wenvs
-from wmr_mujoco.envs.scripted import Scripted
+from wmr_mujoco.bench import env_loops as el
 
 #: The throughput goal: native vector env steps/s (every world's steps) over bare-loop
 #: steps/s, judged at :data:`JUDGED` worlds.
@@ -64,173 +62,56 @@ def vector_sizes(vector: int) -> dict[str, int]:
     """The native vector loops: ``vector`` (the ``--vector`` worlds) and ``vector<n>``."""
     return {"vector": vector, **{f"vector{n}": n for n in SIZES}}
 
-#: Seed of the replayed episode.
-SEED = 0
-#: The clock: this process's CPU time, so that a figure is steps per second of one core
-#: (wall time would also count the turns of other processes on a shared machine).
-CLOCK = time.process_time
-
-
-def rate(run: Callable[[int], float], seconds: float) -> float:
-    """Steps/s of ``run(n)`` (``n`` steps, less the seconds of resets it returns).
-
-    ``n`` grows until one run lasts ``seconds``.
-    """
-    n = 16
-    while True:
-        t0 = CLOCK()
-        excluded = run(n)
-        dt = CLOCK() - t0 - excluded
-        if dt >= seconds:
-            return n / dt
-        n = max(2 * n, int(n * seconds / max(dt, 1e-6) * 1.1))
-
-
-@dataclass(frozen=True)
-class Recording:
-    """One scripted episode: its actions (float32), robot commands and actuator controls."""
-
-    actions: list[np.ndarray]
-    commands: list[list[float]]
-    controls: np.ndarray
-
-
-def record(env: gym.Env, seed: int = SEED) -> Recording:
-    """The scripted controller's episode of ``seed`` on ``env`` (a ``gymnasium.make`` env)."""
-    episode = env.unwrapped.episode
-    env.reset(seed=seed)
-    ctrl = Scripted(episode)
-    ctrl.reset()
-    actions, commands, controls = [], [], []
-    while True:
-        a = ctrl.action(episode.state).astype(np.float32)
-        _, _, term, trunc, _ = env.step(a)
-        actions.append(a)
-        commands.append(episode.command(a.tolist()))
-        controls.append(episode.robot.data.ctrl.copy())
-        if term or trunc:
-            return Recording(actions, commands, np.array(controls))
-
-
-def replayer(step: Callable[[int], bool], restart: Callable[[], None], n: int
-             ) -> Callable[[int], float]:
-    """A timed loop: ``run(steps)`` calls ``step(k)`` along an ``n``-step episode.
-
-    At the episode's end (or when ``step`` says it ended) it calls ``restart`` and starts
-    again at ``k = 0``; ``run`` returns the seconds of those restarts (left out of the
-    rate). Each loop keeps its place between runs.
-    """
-    state = {"k": 0}
-
-    def run(steps: int) -> float:
-        k, excluded = state["k"], 0.0
-        for _ in range(steps):
-            done = step(k)
-            k += 1
-            if done or k == n:
-                t0 = CLOCK()
-                restart()
-                excluded += CLOCK() - t0
-                k = 0
-        state["k"] = k
-        return excluded
-    return run
-
-
 def loops(env_id: str, vector: int
-          ) -> tuple[dict[str, Callable[[int], float]], int, Callable[[], None]]:
+          ) -> tuple[dict[str, el.Run], int, Callable[[], object]]:
     """The five timed loops of one environment (docstring), its frame skip and reset."""
     env = gym.make(env_id)
-    rec = record(env)
+    rec = el.record(env)
     n = len(rec.actions)
     # The drive loop steps a robot of its own (the loops take turns: each keeps its place).
     inner = gym.make(env_id).unwrapped
+    inner.reset(seed=el.SEED)
     robot = inner.robot
-
-    def replay(step: Callable[[int], bool], restart: Callable[[], None]
-               ) -> Callable[[int], float]:
-        return replayer(step, restart, n)
 
     def env_step(k: int) -> bool:
         _, _, term, trunc, _ = env.step(rec.actions[k])
         return term or trunc
 
-    off = gym.vector.AutoresetMode.DISABLED  # the loops restart the episode themselves
-    sync = gym.make_vec(env_id, num_envs=vector, vectorization_mode="sync",
-                        vector_kwargs={"autoreset_mode": off})
-    batch = [np.stack([a] * vector) for a in rec.actions]
-
-    def vector_loop(size: int) -> Callable[[int], float]:
-        vec = gym.make_vec(env_id, num_envs=size, autoreset_mode=off)
-        actions = [np.stack([a] * size) for a in rec.actions]
-        vec.reset(seed=[SEED] * size)
-
-        def vec_step(k: int) -> bool:
-            _, _, term, trunc, _ = vec.step(actions[k])
-            return bool(term.any() or trunc.any())
-
-        return replay(vec_step, lambda: vec.reset(seed=[SEED] * size))
-
-    def sync_step(k: int) -> bool:
-        _, _, term, trunc, _ = sync.step(batch[k])
-        return bool(term.any() or trunc.any())
-
     def drive_step(k: int) -> bool:
         robot.step(rec.commands[k])
         return False
 
-    model = robot.model
-    data = mujoco.MjData(model)
-    inner.reset(seed=SEED)
-    start = mujoco.MjData(model)  # the episode's first state
-    mujoco.mj_copyData(start, model, robot.data)
-    skip = inner.frame_skip
-
-    def bare_step(k: int) -> bool:
-        data.ctrl[:] = rec.controls[k]
-        mujoco.mj_step(model, data, skip)
-        return False
-
-    runs = {"env": replay(env_step, lambda: env.reset(seed=SEED)),
-            **{name: vector_loop(size) for name, size in vector_sizes(vector).items()
+    world = el.bare_world(env_id)
+    runs = {"env": el.replayer(env_step, lambda: env.reset(seed=el.SEED), n),
+            **{name: el.vector_loop(env_id, size, rec.actions)
+               for name, size in vector_sizes(vector).items()
                if name == "vector" or size != vector},  # --vector 16: timed once
-            "sync": replay(sync_step, lambda: sync.reset(seed=[SEED] * vector)),
-            "drive": replay(drive_step, lambda: inner.episode.reset(np.random.default_rng(SEED))),
-            "bare": replay(bare_step, lambda: mujoco.mj_copyData(data, model, start))}
-    env.reset(seed=SEED)
-    sync.reset(seed=[SEED] * vector)
-    mujoco.mj_copyData(data, model, start)
-    return runs, skip, lambda: env.reset(seed=SEED)
+            "sync": el.vector_loop(env_id, vector, rec.actions, "sync"),
+            "drive": el.replayer(drive_step, lambda: inner.episode.reset(
+                np.random.default_rng(el.SEED)), n),
+            "bare": el.bare_loop([world], rec.controls)}
+    env.reset(seed=el.SEED)
+    return runs, world[2], lambda: env.reset(seed=el.SEED)
 
 
 def measure(env_id: str, seconds: float, repeats: int, vector: int = 4) -> dict[str, float]:
     """Median steps/s of the five loops (module docstring) and their ratios to bare.
 
-    Each round times the bare loop first and last and the other loops between; a loop's
-    ratio is the median over rounds of its steps/s over the mean of its round's two bare
-    runs (paired within a round, so that a load that changes between rounds cancels).
+    Paired rounds (:func:`~wmr_mujoco.bench.env_loops.paired`): each times the bare loop
+    first and last and the other loops between; a loop's ratio is the median over rounds
+    of its steps/s over the mean of its round's two bare runs. Then ``repeats`` resets of
+    the single environment, timed apart (``reset_ms``, their median).
     """
     runs, skip, reset = loops(env_id, vector)
-    sizes = {**vector_sizes(vector), "sync": vector}
-    for run in runs.values():
-        run(10)
-    others = [name for name in runs if name != "bare"]
-    samples: dict[str, list[float]] = {name: [] for name in (*runs, "reset_ms")}
-    ratios: dict[str, list[float]] = {name: [] for name in others}
+    bare = runs.pop("bare")
+    got = el.paired(bare, runs, seconds, repeats, {**vector_sizes(vector), "sync": vector})
+    resets = []
     for _ in range(repeats):
-        first = rate(runs["bare"], seconds)
-        here = {name: rate(runs[name], seconds) * sizes.get(name, 1) for name in others}
-        last = rate(runs["bare"], seconds)
-        samples["bare"].append(0.5 * (first + last))
-        for name, value in here.items():
-            samples[name].append(value)
-            ratios[name].append(value / samples["bare"][-1])
-        t0 = CLOCK()
+        t0 = el.CLOCK()
         reset()
-        samples["reset_ms"].append(1e3 * (CLOCK() - t0))
-    out: dict[str, float] = {name: statistics.median(x) for name, x in samples.items()}
-    for name in others:
-        out[f"{name}_ratio"] = statistics.median(ratios[name])
+        resets.append(1e3 * (el.CLOCK() - t0))
+    out: dict[str, float] = {"bare": got.bare, **got.rates, "reset_ms": statistics.median(resets)}
+    out.update({f"{name}_ratio": ratio for name, ratio in got.ratios.items()})
     for name in vector_sizes(vector):
         if name not in out:  # the --vector loop's size
             out[name], out[f"{name}_ratio"] = out["vector"], out["vector_ratio"]
@@ -241,35 +122,6 @@ def measure(env_id: str, seconds: float, repeats: int, vector: int = 4) -> dict[
 def default_ids() -> list[str]:
     """One GoToGoal per robot, and StayUpright where that is the robot's task."""
     return [i for i in wenvs.ENV_IDS if "-GoToGoal-" in i or "-StayUpright-" in i]
-
-
-def add_timing(parser: argparse.ArgumentParser, seconds: float) -> None:
-    """The environment benchmarks' ``--seconds`` (one timed run) and ``--repeats`` (rounds)."""
-    parser.add_argument("--seconds", type=float, default=seconds,
-                        help="seconds of one timed run (0.05 to 30)")
-    parser.add_argument("--repeats", type=int, default=3, help="timed rounds (1 to 20)")
-
-
-def check_options(parser: argparse.ArgumentParser, args: argparse.Namespace,
-                  *others: tuple[str, object, bool, str]) -> None:
-    """``parser.error`` (exit 2) naming every bad option and its valid range.
-
-    Checks ``--seconds`` and ``--repeats`` (:func:`add_timing`) and each of ``others``:
-    ``(flag, value, whether it is valid, the valid range)``.
-    """
-    checks = (("--seconds", args.seconds, 0.05 <= args.seconds <= 30, "0.05 to 30"),
-              ("--repeats", args.repeats, 1 <= args.repeats <= 20, "1 to 20"), *others)
-    bad = [f"{flag} {value!r} (valid: {valid})" for flag, value, ok, valid in checks if not ok]
-    if bad:
-        parser.error(", ".join(bad))
-
-
-def check_ids(parser: argparse.ArgumentParser, ids: Sequence[str]) -> list[str]:
-    """``ids``, or ``parser.error`` (exit 2) naming the unknown ones and the valid ones."""
-    bad = [i for i in ids if i not in wenvs.ENV_IDS]
-    if bad:
-        parser.error(f"unknown environment ids {bad}; valid: {', '.join(wenvs.ENV_IDS)}")
-    return list(ids)
 
 
 def table(rows: dict[str, dict[str, float]]) -> str:
@@ -297,11 +149,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("ids", nargs="*", help="environment ids (default: one per robot)")
     parser.add_argument("--all", action="store_true", help="every environment id")
-    add_timing(parser, 1.0)
+    el.add_timing(parser, 1.0)
     parser.add_argument("--vector", type=int, default=4, help="copies in the vector env")
     args = parser.parse_args(argv)
-    ids = check_ids(parser, args.ids) or (list(wenvs.ENV_IDS) if args.all else default_ids())
-    check_options(parser, args, ("--vector", args.vector, 1 <= args.vector <= 64, "1 to 64"))
+    ids = el.check_ids(parser, args.ids) or (list(wenvs.ENV_IDS) if args.all else default_ids())
+    el.check_options(parser, args, ("--vector", args.vector, 1 <= args.vector <= 64, "1 to 64"))
     rows = {}
     for env_id in ids:
         rows[env_id] = measure(env_id, args.seconds, args.repeats, args.vector)

@@ -55,7 +55,7 @@ def _key(r: Row) -> tuple[str, str, str]:
     return (r.scenario, r.metric, r.unit)
 
 
-def _family_rows(spec: RobotSpec, key: int, seed: int, params: RobotParams) -> list[Row]:
+def family_rows(spec: RobotSpec, key: int, seed: int, params: RobotParams) -> list[Row]:
     """The judged rows of the robot's ``key``-th scenario's family (worst member)."""
     _, s = validation_jobs([spec.name])[key]
     return list(run_family(spec, s, seed, params=params).rows)
@@ -94,17 +94,22 @@ def figures(spec: RobotSpec, params: RobotParams, seed: int, jobs: int = 1,
     found = kept(spec, params, seed, cache)
     if found is not None:
         return found
-    path = None if cache is None else cache_file(spec, params, seed, cache)
     n = len(validation_jobs([spec.name]))
-    calls = [(_family_rows, (spec, k, seed, params)) for k in range(n)]
+    calls = [(family_rows, (spec, k, seed, params)) for k in range(n)]
     out: Figures = {}
     for rows in run_calls(calls, jobs):
         for r in rows:  # type: ignore[attr-defined]
             out[_key(r)] = r
-    if path is not None:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        write_text_atomic(path, json.dumps([dataclasses.asdict(r) for r in out.values()]))
+    if cache is not None:
+        keep(spec, params, seed, out, cache)
     return out
+
+
+def keep(spec: RobotSpec, params: RobotParams, seed: int, figs: Figures, cache: Path) -> None:
+    """Keep every row of ``params`` at ``seed`` in ``cache`` (:func:`cache_file`)."""
+    path = cache_file(spec, params, seed, cache)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_text_atomic(path, json.dumps([dataclasses.asdict(r) for r in figs.values()]))
 
 
 @dataclasses.dataclass(frozen=True)

@@ -54,13 +54,14 @@ from wmr_mujoco.envs.serial import Serial
 MAX_ENVS = 256
 
 #: The fewest worlds stepped by the batched path (:mod:`wmr_mujoco.envs.batched`); fewer go
-#: through their single environments (:mod:`wmr_mujoco.envs.serial`). Measured with
+#: through their single environments (:mod:`wmr_mujoco.envs.serial`). Chosen from
 #: ``python -m wmr_mujoco.bench.vector_paths --paths --sizes 4,8,12,16,24,64 ID ...`` on the
 #: Disc, DiffDrive and Bicycle GoToGoal and FollowPath environments (both paths' steps/s at
-#: each size in one process, CPU time): the crossover it prints (the fewest worlds from
-#: which the batched path stays the faster) was 8 to 12 worlds, the latest for
-#: Disc-FollowPath (the cheapest physics, so the most Python per step); above it the
-#: batched path's fixed cost per step (a hundred numpy calls) is spread over more worlds.
+#: each size, paired with a bare loop in each round, one process, CPU time): its last line
+#: prints the span of the crossovers (the fewest worlds from which the batched path stays
+#: the faster) and this constant beside it, chosen within the span: there the two paths'
+#: figures are close, so either path costs little at those sizes. Above it the batched
+#: path's fixed cost per step (a hundred numpy calls) is spread over more worlds.
 BATCHED_FROM = 12
 
 

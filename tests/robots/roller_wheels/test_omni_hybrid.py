@@ -412,19 +412,29 @@ def test_batch_members_are_their_single_runs_to_the_bit():
     member of a batch is its run alone, float for float: the hand-over's RK4 and the rest
     of the step are taken by the runs that hand over, and the others keep their step
     (what lets omni3 batch its families together, :mod:`wmr_mujoco.validation.units`)."""
-    drives = [Drive("rate", 0.5, gain=0.5), Drive("torque", 0.5), Drive("rate", 0.5, gain=0.5)]
+    drives = [Drive("rate", 0.5, gain=0.5), Drive("torque", 0.5), Drive("rate", 0.5, gain=0.5),
+              Drive("torque", 0.5)]
+    # The last run rests under zero torques from a start of −0.0 (pose, twist, wheels):
+    # signed zeros that a step of another run's hand-over must leave as they are.
     inputs = np.stack([np.tile([6.0, -3.0, 2.0], (150, 1)),
                        np.tile([0.02, 0.0, -0.02], (150, 1)),
-                       np.tile([-4.0, 5.0, 1.0], (150, 1))])
-    th0 = np.array([[0.1, 0.2, 0.3], [1.0, 2.0, 3.0], [0.5, -0.4, 2.2]])
+                       np.tile([-4.0, 5.0, 1.0], (150, 1)),
+                       np.full((150, 3), -0.0)])
+    th0 = np.array([[0.1, 0.2, 0.3], [1.0, 2.0, 3.0], [0.5, -0.4, 2.2], [-0.0, -0.0, -0.0]])
+    start = np.zeros((4, 3))
+    start[3] = -0.0
     kw = {"substeps": 2, "arc": True, "heave": True, "relax": 0.3}
-    both = simulate_batch(MODEL, drives, inputs, 0.004, np.zeros((3, 3)), np.zeros((3, 3)),
-                          th0, **kw)
-    for b in range(3):
+    both = simulate_batch(MODEL, drives, inputs, 0.004, start, start, th0, **kw)
+    for b in range(4):
         alone = simulate_batch(MODEL, drives[b:b + 1], inputs[b:b + 1], 0.004,
-                               np.zeros((1, 3)), np.zeros((1, 3)), th0[b:b + 1], **kw)[0]
+                               start[b:b + 1], start[b:b + 1], th0[b:b + 1], **kw)[0]
         for field in ("t", "pose", "twist", "thetas", "torques"):
-            np.testing.assert_array_equal(getattr(both[b], field), getattr(alone, field))
+            # The bytes: == would take −0.0 for +0.0
+            a, c = getattr(both[b], field), getattr(alone, field)
+            assert a.shape == c.shape and a.dtype == c.dtype == np.float64
+            np.testing.assert_array_equal(np.ascontiguousarray(a).view(np.uint64),
+                                          np.ascontiguousarray(c).view(np.uint64))
         assert both[b].switches == alone.switches
+    assert np.signbit(both[3].pose[0]).all()  # the −0.0 start is kept (and compared)
     steps = [{round(t / 0.004) for t, _, _ in run.switches} for run in both]
     assert steps[0] and steps[2] and steps[0] != steps[2]  # hand-overs at other steps

@@ -367,17 +367,18 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             if changed.size:
                 geo = new
                 x = np.concatenate([pose, nu, th, thd], axis=1)
-                # The rest of the step; a run without a hand-over has none (RK4 over 0 s
-                # gives its x, but for a −0.0 that x + 0 makes +0.0: those runs take it)
-                run = np.flatnonzero((rest[:, 0] != 0.0)
-                                     | ((x == 0.0) & np.signbit(x)).any(axis=1))
+                # The rest of the step, for the runs that hand over only: the others keep
+                # every bit of their step, as alone (RK4 over 0 s would give their x, but
+                # x + 0 turns a −0.0 into +0.0; a single-row H ν may round otherwise)
+                run = changed[rest[changed, 0] != 0.0]
                 if run.size:
                     sub = _Geometry(*(a[run] for a in geo))
                     k1 = st.rows(run).deriv(x[run], u_in[run], sub)[0]
                     x[run] = st.rows(run).rk4(x[run], k1, u_in[run], sub, rest[run])
                 pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
                 geo = _geometry(model, th, geo.modes, geo.H)
-                thd = np.where(st.slipping, thd, (geo.H @ nu[..., None])[..., 0])
+                hnu = (geo.H[changed] @ nu[changed, :, None])[..., 0]
+                thd[changed] = np.where(st.slipping[changed], thd[changed], hnu)
         if not np.all(np.isfinite(nu)):
             raise FloatingPointError(f"hybrid model diverged at t = {(k + 1) * dt:.3f} s")
         pending *= relax

@@ -43,6 +43,7 @@ import numpy as np
 from wmr_mujoco.analytic.checks import as_array
 from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.roller_wheels.roller_traction import traction_directions
+from wmr_mujoco.robots.roller_wheels.stick_slip_steps import march, moreau_step
 
 #: Standard gravity, m/s².
 GRAVITY = 9.81
@@ -141,12 +142,6 @@ class RollerPlatform:
         return np.minimum(np.maximum(self.servo_gain * (commanded - rates), -self.torque_limit),
                           self.torque_limit)
 
-    def free_forces(self, q_dot: np.ndarray, commanded: np.ndarray) -> np.ndarray:
-        """Generalised forces other than the contacts: ``(−c(ν), τ)``."""
-        u, v, r = q_dot[:3]
-        return np.concatenate([[self.mass * r * v, -self.mass * r * u, 0.0],
-                               self.servo_torques(q_dot[3:], commanded)])
-
 
 @functools.lru_cache(maxsize=8)
 def _states(n: int) -> tuple[tuple[int, ...], ...]:
@@ -156,15 +151,16 @@ def _states(n: int) -> tuple[tuple[int, ...], ...]:
 
 
 class _ActiveSet(NamedTuple):
-    """One contact state of :class:`BoxLcp`: its signs, ``W_FF⁻¹``, ``W_FB`` and indices."""
+    """One contact state of :class:`BoxLcp`: its signs, ``−W_FF⁻¹``, ``W_FB`` and indices."""
 
-    st: np.ndarray
-    inv: np.ndarray | None
+    signs: list[float]
+    neg_inv: np.ndarray | None
     w_fa: np.ndarray | None
     free: np.ndarray
     bound: np.ndarray
-    upper: np.ndarray
-    lower: np.ndarray
+    free_list: list[int]
+    upper: list[int]
+    lower: list[int]
 
 
 class BoxLcp:
@@ -174,7 +170,10 @@ class BoxLcp:
     ``P_i = −b_i`` if ``s_i > 0``, ``P_i = +b_i`` if ``s_i < 0``, ``s_i = 0`` otherwise.
     Solved by active sets: a guess first (the previous step's), then every one of the
     ``3ⁿ`` sets, sticking contacts first; W symmetric positive definite makes the
-    solution exist and be unique. Each set's ``W_FF⁻¹`` is kept once computed.
+    solution exist and be unique. For a set with free (sticking) contacts F and bound ones
+    B: ``P_B = ±b_B``, ``P_F = −W_FF⁻¹ (s_free,F + W_FB P_B)``; it is the solution if
+    ``|P_F| ≤ b_F`` and each bound contact slides away from its bound's sign. Each set's
+    ``−W_FF⁻¹`` is kept once computed.
     """
 
     def __init__(self, delassus: np.ndarray) -> None:
@@ -186,12 +185,13 @@ class BoxLcp:
         if got is None:
             st = np.asarray(state)
             free = st == 0
-            inv = w_fa = None
+            neg_inv = w_fa = None
             if np.any(free):
-                inv = np.linalg.inv(self.w[np.ix_(free, free)])
+                neg_inv = -np.linalg.inv(self.w[np.ix_(free, free)])
                 w_fa = self.w[np.ix_(free, ~free)]
-            got = _ActiveSet(st, inv, w_fa, np.flatnonzero(free), np.flatnonzero(~free),
-                             np.flatnonzero(st > 0), np.flatnonzero(st < 0))
+            got = _ActiveSet([float(x) for x in state], neg_inv, w_fa, np.flatnonzero(free),
+                             np.flatnonzero(~free), np.flatnonzero(free).tolist(),
+                             np.flatnonzero(st > 0).tolist(), np.flatnonzero(st < 0).tolist())
             self._sets[state] = got
         return got
 
@@ -203,20 +203,41 @@ class BoxLcp:
         Raises:
             ValueError: no active set satisfies the conditions (W not positive definite).
         """
-        n = len(bounds)
-        candidates = _states(n) if guess is None else (guess, *_states(n))
-        scale = tol * (1.0 + float(np.max(np.abs(slip_free))))
-        for state in candidates:
-            a = self._set(state)
-            p = a.st * bounds
-            if a.inv is not None:
-                free = a.free
-                p[free] = -a.inv @ (slip_free[free] + a.w_fa @ p[a.bound])
-                if (np.abs(p[free]) > bounds[free] * (1.0 + 1e-9) + 1e-15).any():
+        slip_free = np.asarray(slip_free, float)
+        p, _, state = self.solve_slip(slip_free, slip_free.tolist(),
+                                      np.asarray(bounds, float).tolist(), guess, tol)
+        return p, state
+
+    def solve_slip(self, slip_free: np.ndarray, sf: list[float], bounds: list[float],
+                   guess: tuple[int, ...] | None = None, tol: float = 1e-12
+                   ) -> tuple[np.ndarray, np.ndarray, tuple[int, ...]]:
+        """:meth:`solve` with ``s⁺ = s_free + W P``: ``(P, s⁺, state)``.
+
+        ``sf`` and ``bounds`` as Python floats (``sf``: ``slip_free.tolist()``): a Moreau
+        step calls this with vectors of 4 entries, where numpy's per-call cost would be
+        most of the work; the products of a matrix and a vector stay numpy's (BLAS).
+        """
+        # scale = tol (1 + max|s_free|), the tolerance of the slip's sign
+        scale = tol * (1.0 + max(abs(x) for x in sf))
+        w = self.w
+        states = _states(len(bounds))
+        for state in (states if guess is None else (guess, *states)):
+            signs, neg_inv, w_fa, free, bound, free_list, upper, lower = self._set(state)
+            p = np.array([si * bi for si, bi in zip(signs, bounds, strict=True)])  # ±b
+            if neg_inv is not None:
+                if bound.size == 0:  # s_free[F] + W_FB P_B with B empty: + zeros(n)
+                    rhs = slip_free + 0.0
+                else:
+                    rhs = slip_free[free] + w_fa @ p[bound]
+                pf = neg_inv @ rhs
+                p[free] = pf
+                if any(abs(x) > bounds[i] * (1.0 + 1e-9) + 1e-15
+                       for x, i in zip(pf.tolist(), free_list, strict=True)):
                     continue
-            s = slip_free + self.w @ p
-            if (s[a.upper] <= scale).all() and (s[a.lower] >= -scale).all():
-                return p, state
+            s = slip_free + w @ p
+            sl = s.tolist()
+            if all(sl[i] <= scale for i in upper) and all(sl[i] >= -scale for i in lower):
+                return p, s, state
         raise ValueError("box_lcp: no contact state satisfies the Coulomb conditions")
 
 
@@ -270,21 +291,18 @@ def advance(platform: RollerPlatform, lcp: BoxLcp, q_dot: np.ndarray,
 
     ``q̇_free = q̇ + h_s M⁻¹ (−c(ν), τ(ω))``; loads from the previous acceleration
     ``accel = (a_x, a_y)`` (negative ones clipped to 0: a wheel lifts off); impulses
-    ``P`` from the box LCP with bounds ``μ N_i h_s``; ``q̇⁺ = q̇_free + M⁻¹ Jᵀ P``.
+    ``P`` from the box LCP with bounds ``μ N_i h_s``; ``q̇⁺ = q̇_free + M⁻¹ Jᵀ P``. The
+    step is :func:`~wmr_mujoco.robots.roller_wheels.stick_slip_steps.moreau_step`'s (the
+    one definition, on Python floats), on arrays.
 
     Returns:
         ``(q̇⁺, P, s⁺, contact state, loads, (a_x, a_y) of this step)``.
     """
-    base, per_ax, per_ay = platform._transfer
-    loads = np.maximum(base + accel[0] * per_ax + accel[1] * per_ay, 0.0)
-    minv, jac = platform.inverse_mass, platform.jacobian
-    q_free = q_dot + step * minv * platform.free_forces(q_dot, commanded)
-    slip_free = jac @ q_free
-    p, state = lcp.solve(slip_free, platform.friction * loads * step, guess)
-    q_new = q_free + minv * (jac.T @ p)
-    nu_dot = (q_new[:3] - q_dot[:3]) / step
-    accel_new = np.array([nu_dot[0] - q_new[2] * q_new[1], nu_dot[1] + q_new[2] * q_new[0]])
-    return q_new, p, slip_free + lcp.w @ p, state, loads, accel_new
+    one = moreau_step(platform, lcp, step)
+    q, p, slip, state, loads, ax, ay = one(
+        np.asarray(q_dot, float).tolist(), np.asarray(commanded, float).tolist(),
+        float(accel[0]), float(accel[1]), guess)
+    return np.array(q), p, slip, state, np.array(loads), np.array([ax, ay])
 
 
 def step_response(platform: RollerPlatform, commanded: np.ndarray, duration: float,
@@ -306,12 +324,10 @@ def step_response(platform: RollerPlatform, commanded: np.ndarray, duration: flo
         raise ValueError(f"duration = {duration!r} s; valid range is (0, inf)")
     if not (np.isfinite(step) and 0.0 < step <= 1e-3):
         raise ValueError(f"step = {step!r} s; valid range is (0, 1e-3]")
-    from wmr_mujoco.robots.roller_wheels.stick_slip_steps import march
-
     n = platform.layout.n
-    rows = march(platform, BoxLcp(platform.delassus), _states(n), cmd, round(duration / step),
+    rows = march(platform, BoxLcp(platform.delassus), cmd, round(duration / step),
                  max(1, round(chunk / step)), step, settle_tol)
-    # Row 0 is the start at rest; then the steps of advance (stick_slip_steps: its floats).
+    # Row 0 is the start at rest; then the Moreau steps (stick_slip_steps).
     q = np.concatenate([np.zeros((1, 3 + n)), np.asarray(rows["q"]).reshape(-1, 3 + n)])
     return StepResponse(
         time=np.asarray([0.0, *rows["time"]]), twist=q[:, :3], wheel_rates=q[:, 3:],

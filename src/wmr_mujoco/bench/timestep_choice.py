@@ -1,0 +1,304 @@
+"""Is each robot's default step the cheapest that meets all its targets? (issue 24 § 4).
+
+``python -m wmr_mujoco.bench.timestep_choice [--quick] [--seeds 0 1] [--jobs 2]
+[--dampratios 0.5 0.8 1] [--write] [robots ...]`` answers, for every robot the
+random-steps family drives (:func:`wmr_mujoco.bench.default_speed.drivable`), with the
+robot's families rather than single runs:
+
+1. **Cost**: the real-time factor of a bare one-thread ``mj_step`` loop (member 0 of the
+   random-steps family, :func:`~wmr_mujoco.bench.default_speed.real_time_factors`: every
+   setting timed in alternating rounds of one run, median of the rounds) at the default
+   and at each longer step of :data:`STEPS`, and its cost ratio to the default.
+2. **Fidelity**: every scenario family of ``wmr validate ROBOT --seed S`` at that step,
+   compared row by row with the defaults' at the same seed
+   (:func:`wmr_mujoco.bench.solver_fidelity.compare`): the targets the default passes and
+   the longer step loses. A step is acceptable only if it loses none at any seed.
+
+A longer step scales the contact's time constant with it (``t_c/Δt`` kept: every robot's
+contact is set in steps of its timestep, the floor pairs' at
+:data:`~wmr_mujoco.models.builders.wheel_pairs.WHEEL_PAIR_STEPS` by the builder, the
+roller robots' ``contact_timeconst`` in their parameters), so a hand-over or an impact
+is resolved over the same number of steps. The pairs' damping ratio ``ζ`` is the
+robot's, or each of ``--dampratios``: ζ moves the rest depth, ``(1 − d) g ζ² t_c²``, and
+with it the rolling radius, at the same damping. Only steps that divide every control
+period users drive with (:data:`PERIODS`) are candidates: ``wmr_mujoco.drive`` refuses a
+period that is not a whole number of steps.
+
+Each candidate is validated on its own, families in registry order, ``--jobs`` at a time;
+its validation stops after the first families that lose a target (the table then names
+those; the later families are not run). The defaults' figures and a candidate's complete
+figures are kept in ``reports/solver_cost/`` (named by the model files' digest,
+:func:`~wmr_mujoco.bench.solver_fidelity.cache_file`): a rerun times again and reuses
+them. ``--write`` pastes the table between the ``timestep choice`` markers of
+``docs/floor-contact.md``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import json
+from collections.abc import Sequence
+from fractions import Fraction
+
+import numpy as np
+
+from wmr_mujoco.atomic import write_text_atomic
+from wmr_mujoco.bench.default_speed import (
+    FULL,
+    QUICK,
+    Rounds,
+    Timed,
+    drivable,
+    prepare_timed,
+    wall_seconds,
+)
+from wmr_mujoco.bench.solver_fidelity import (
+    CACHE,
+    Figures,
+    cache_file,
+    compare,
+    family_rows,
+    figures,
+    keep,
+    kept,
+)
+from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.lookup import validation_jobs
+from wmr_mujoco.models.params import RobotParams
+from wmr_mujoco.models.paths import DOCS_DIR
+from wmr_mujoco.robots import get_spec
+from wmr_mujoco.robots.spec import RobotSpec
+from wmr_mujoco.sim.stepped_inputs import CONTROL_PERIOD
+from wmr_mujoco.sim.stepping import SimulationDivergedError
+from wmr_mujoco.validation.jobs import check_jobs
+from wmr_mujoco.validation.pool import run_calls
+
+#: The control periods users drive with, s (``wmr_mujoco.drive``, the environments).
+PERIODS = (Fraction(1, 50), Fraction(1, 20), Fraction(1, 10))
+#: Steps considered, s: those from 1 to 5 ms, in quarter milliseconds, that divide every
+#: period of :data:`PERIODS` (1, 1.25, 2, 2.5 and 5 ms).
+STEPS = tuple(float(s) for s in (Fraction(k, 4000) for k in range(4, 21))
+              if all((p / s).denominator == 1 for p in PERIODS))
+
+DOC = DOCS_DIR / "floor-contact.md"
+MARKER = "timestep choice"
+
+
+@dataclasses.dataclass(frozen=True)
+class Candidate:
+    """A robot's default parameters at another step and damping ratio.
+
+    Attributes:
+        timestep: the step, s.
+        dampratio: the floor pairs' ζ.
+        params: the robot's defaults with these (``t_c/Δt`` kept).
+    """
+
+    timestep: float
+    dampratio: float
+    params: RobotParams
+
+
+def at_step(spec: RobotSpec, timestep: float, dampratio: float | None = None) -> Candidate:
+    """The robot's defaults at ``timestep`` (``t_c/Δt`` kept) and ``dampratio`` (None: its own).
+
+    Raises:
+        ValueError: a robot without parameters; a step or ζ its parameters refuse.
+    """
+    if spec.params_type is None:
+        raise ValueError(f"robot {spec.name!r} has no parameters to change")
+    base = spec.params_type()
+    sim = base.sim
+    zeta = sim.floor_dampratio if dampratio is None else dampratio
+    new_sim = dataclasses.replace(
+        sim, timestep=timestep, floor_dampratio=zeta,
+        contact_timeconst=sim.contact_timeconst * timestep / sim.timestep)
+    return Candidate(timestep, zeta, dataclasses.replace(base, sim=new_sim))
+
+
+def candidates(spec: RobotSpec, dampratios: Sequence[float] = ()) -> list[Candidate]:
+    """Every step of :data:`STEPS` longer than the default (the cheaper ones), at each ζ.
+
+    The robot's own ζ, then each of ``dampratios`` (ζ does not change a step's cost).
+    """
+    assert spec.params_type is not None
+    own = spec.params_type().sim
+    zetas = list(dict.fromkeys([own.floor_dampratio, *dampratios]))
+    return [at_step(spec, dt, z) for dt in STEPS if dt > own.timestep for z in zetas]
+
+
+@dataclasses.dataclass(frozen=True)
+class Fidelity:
+    """A candidate's validation at one seed against the defaults' at that seed.
+
+    Attributes:
+        lost: ``scenario / metric`` of the targets the defaults pass and it loses (or
+            whose rows it did not produce: a failed run).
+        families: how many of the robot's families it ran (all, or up to the first loss).
+        total: how many the robot has.
+    """
+
+    lost: tuple[str, ...]
+    families: int
+    total: int
+
+
+def fidelity(spec: RobotSpec, params: RobotParams, seed: int, default: Figures,
+             jobs: int) -> Fidelity:
+    """Validate ``params`` family by family, ``jobs`` at a time, up to the first loss."""
+    jobs_ = validation_jobs([spec.name])
+    whole = kept(spec, params, seed, CACHE)
+    if whole is not None:
+        v = compare(default, whole)
+        return Fidelity(v.lost + v.missing, len(jobs_), len(jobs_))
+    stopped = cache_file(spec, params, seed, CACHE).with_suffix(".stopped.json")
+    if stopped.exists():  # an earlier run stopped at a loss
+        f = json.loads(stopped.read_text())
+        return Fidelity(tuple(f["lost"]), int(f["families"]), int(f["total"]))
+    got: Figures = {}
+    for start in range(0, len(jobs_), jobs):
+        keys = range(start, min(len(jobs_), start + jobs))
+        for rows in run_calls([(family_rows, (spec, k, seed, params)) for k in keys], jobs):
+            got.update({(r.scenario, r.metric, r.unit): r for r in rows})  # type: ignore[attr-defined]
+        names = {jobs_[k][1].name for k in range(keys.stop)}
+        v = compare({k: r for k, r in default.items() if r.scenario in names}, got)
+        if v.lost or v.missing:
+            out = Fidelity(v.lost + v.missing, keys.stop, len(jobs_))
+            stopped.parent.mkdir(parents=True, exist_ok=True)
+            write_text_atomic(stopped, json.dumps(dataclasses.asdict(out)))
+            return out
+    keep(spec, params, seed, got, CACHE)
+    return Fidelity((), len(jobs_), len(jobs_))
+
+
+def real_time_factors(spec: RobotSpec, settings: Sequence[RobotParams | None], how: Rounds
+                      ) -> list[float]:
+    """Real-time factor of each setting, alternating rounds, median (NaN: it diverged).
+
+    As :func:`wmr_mujoco.bench.default_speed.real_time_factors`, but a setting whose
+    settle or drive diverges is reported as NaN and left out of the later rounds.
+    """
+    prepared: list[Timed | None] = []
+    for p in settings:
+        try:
+            prepared.append(prepare_timed(spec, p, how.seconds))
+        except SimulationDivergedError:
+            prepared.append(None)
+    walls: list[list[float]] = [[] for _ in settings]
+    for _ in range(how.rounds):
+        for k, t in enumerate(prepared):
+            if t is None:
+                continue
+            try:
+                walls[k].append(wall_seconds(t))
+            except SimulationDivergedError:
+                prepared[k], walls[k] = None, []
+    return [len(t.controls) * CONTROL_PERIOD / float(np.median(w)) if t is not None and w
+            else float("nan") for t, w in zip(prepared, walls, strict=True)]
+
+
+def study(spec: RobotSpec, seeds: Sequence[int], dampratios: Sequence[float], how: Rounds,
+          jobs: int) -> list[dict[str, object]]:
+    """One row per setting of ``spec``: the default first, then :func:`candidates`.
+
+    A candidate that loses a target at a seed is not validated at the later seeds.
+    """
+    assert spec.params_type is not None
+    cands = candidates(spec, dampratios)
+    rtf = real_time_factors(spec, [None, *(c.params for c in cands)], how)
+    own = spec.params_type()
+    out: list[dict[str, object]] = [{"robot": spec.name, "timestep": own.sim.timestep,
+                                     "dampratio": own.sim.floor_dampratio, "rtf": rtf[0],
+                                     "ratio": 1.0, "verdict": "the default"}]
+    verdicts: list[dict[int, Fidelity]] = [{} for _ in cands]
+    for seed in seeds:
+        base = figures(spec, own, seed, jobs, CACHE)
+        for c, v, r in zip(cands, verdicts, rtf[1:], strict=True):
+            if np.isfinite(r) and all(not f.lost for f in v.values()):
+                v[seed] = fidelity(spec, c.params, seed, base, jobs)
+                print(f"  {spec.name} {1e3 * c.timestep:g} ms ζ {c.dampratio:g} seed {seed}: "
+                      f"{verdict_text(v)}", flush=True)
+    for c, r, v in zip(cands, rtf[1:], verdicts, strict=True):
+        out.append({"robot": spec.name, "timestep": c.timestep, "dampratio": c.dampratio,
+                    "rtf": r, "ratio": rtf[0] / r,
+                    "verdict": verdict_text(v) if v else "diverged on the timing drive",
+                    "acceptable": bool(v) and all(not f.lost for f in v.values())})
+    return out
+
+
+def verdict_text(by_seed: dict[int, Fidelity]) -> str:
+    """One table cell: per seed, passes every target or which it loses."""
+    parts = []
+    for seed, f in by_seed.items():
+        if not f.lost:
+            parts.append(f"seed {seed}: passes every target")
+            continue
+        shown = "; ".join(f.lost[:3]) + (f"; … {len(f.lost) - 3} more" if len(f.lost) > 3 else "")
+        ran = ("" if f.families == f.total
+               else f" (stopped after {f.families} of {f.total} families)")
+        parts.append(f"seed {seed}: loses {len(f.lost)}{ran}: {shown}")
+    return "; ".join(parts)
+
+
+def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
+          quick: bool) -> str:
+    """The markdown table of :func:`study`'s rows, and a verdict line per robot."""
+    lines = [f"{'QUICK run: ' if quick else ''}`python -m wmr_mujoco.bench.timestep_choice`: "
+             f"each robot's families (`wmr validate ROBOT --seed S`, seeds "
+             f"{', '.join(map(str, seeds))}) at each longer step that divides the 20, 50 and "
+             f"100 ms control periods, contact time constant scaled with the step; cost: "
+             f"one-thread `mj_step` loop, {how.seconds:g} s of the random-steps family's "
+             f"member 0, median of {how.rounds} alternating rounds.", "",
+             "| robot | step | ζ | real-time × | cost ratio (candidate / default) | "
+             "targets the default passes |", "|---" * 6 + "|"]
+    for r in rows:
+        lines.append(f"| {r['robot']} | {1e3 * float(r['timestep']):g} ms "  # type: ignore[arg-type]
+                     f"| {float(r['dampratio']):g} | {float(r['rtf']):.0f}× "  # type: ignore[arg-type]
+                     f"| {float(r['ratio']):.2f} | {r['verdict']} |")  # type: ignore[arg-type]
+    lines.append("")
+    for name in dict.fromkeys(str(r["robot"]) for r in rows):
+        ok = [r for r in rows if r["robot"] == name and r.get("acceptable")]
+        cheaper = [r for r in ok if float(r["ratio"]) < 1.0]  # type: ignore[arg-type]
+        lines.append(f"- {name}: " + (
+            "no longer step keeps every target: the default is the cheapest." if not cheaper
+            else "cheaper and keeps every target: " + ", ".join(
+                f"{1e3 * float(r['timestep']):g} ms at ζ = {float(r['dampratio']):g}"  # type: ignore[arg-type]
+                for r in cheaper) + "."))
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Command line: print (and with ``--write`` publish) the table."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="shorter timing, seed 0 only")
+    parser.add_argument("--seeds", type=int, nargs="+", default=None,
+                        help="validation seeds (default 0 1; --quick: 0)")
+    parser.add_argument("--dampratios", type=float, nargs="+", default=(),
+                        help="floor pairs' ζ to try at each step (default: each robot's own)")
+    parser.add_argument("--jobs", type=int, default=2, help="worker processes (default 2)")
+    parser.add_argument("--write", action="store_true",
+                        help=f"paste the table into {DOC.name} ({MARKER!r} markers)")
+    parser.add_argument("robots", nargs="*", help="robots (default: every drivable robot)")
+    args = parser.parse_args(argv)
+    check_jobs(args.jobs)
+    for z in args.dampratios:
+        if not 0.1 <= z <= 1.0:
+            parser.error(f"--dampratios {z!r}: each must be in [0.1, 1]")
+    seeds = args.seeds or ([0] if args.quick else [0, 1])
+    if any(s < 0 for s in seeds):
+        parser.error(f"--seeds {seeds!r}: seeds are integers >= 0")
+    robots = [get_spec(r).name for r in args.robots] or drivable()  # unknown: fails here
+    how = QUICK if args.quick else FULL
+    rows = []
+    for name in robots:
+        rows += study(get_spec(name), seeds, args.dampratios, how, args.jobs)
+    text = table(rows, seeds, how, args.quick)
+    print(text)
+    if args.write:
+        replace_between(DOC, MARKER, text)
+        print(f"wrote {DOC}")
+
+
+if __name__ == "__main__":
+    main()
