@@ -92,13 +92,10 @@ class Path:
         """``(x, y, heading)`` at ``s = 0``."""
         return self.at(0.0).pose
 
-    def _s(self, s: float) -> float:
-        # np.mod's and np.clip's floats (Python's float modulo is numpy's; a NaN kept)
-        # without their per-call cost on one number
-        s, length = float(s), self.length
+    def _s(self, s: float) -> float:  # np.mod's, np.clip's floats without their call cost
         if self.closed:
-            return s % length if math.isfinite(s) else math.nan
-        return s if s != s else min(max(s, 0.0), length)
+            return float(s) % self.length if math.isfinite(s) else math.nan
+        return float(s) if s != s else min(max(float(s), 0.0), self.length)
 
     def at(self, s: float) -> PathPoint:
         """The point at arc length ``s`` (wrapped on a closed path, clipped on an open one)."""
@@ -118,25 +115,21 @@ class Path:
                 whole path.
             window: half-width of that search, m.
         """
-        p = np.asarray(point, float)[:2]
-        n = len(self.s)
-        # The segments searched: from ``first`` on (views, no copies), or those of ``idx``
-        first, idx, a, b = 0, None, self.xy[:-1], self.xy[1:]
+        p, n = np.asarray(point, float)[:2], len(self.s)
+        first, last = 0, n - 1  # the segments first..last - 1 (mod n - 1 on a closed path)
         if hint is not None:
             h = self._s(hint)
             lo, hi = (int(i) for i in np.searchsorted(self.s, [h - window, h + window]))
-            if not self.closed or (lo >= 1 and hi <= n - 2):  # no wrap: a range of them
-                first, last = max(lo - 1, 0), min(hi + 1, n - 1)
-                a, b = self.xy[first:last], self.xy[first + 1:last + 1]
-            else:  # the window wraps round a closed path's end
-                idx = np.mod(np.arange(lo - 1, hi + 1), n - 1)
-                a, b = self.xy[idx], self.xy[idx + 1]
+            first, last = (lo - 1, hi + 1) if self.closed else (max(lo - 1, 0), min(hi + 1, n - 1))
+        if first >= 0 and last <= n - 1:  # a range of them: views, no copies
+            a, b = self.xy[first:last], self.xy[first + 1:last + 1]
+        else:  # the window wraps round a closed path's end
+            a, b = self.xy[idx := np.mod(np.arange(first, last), n - 1)], self.xy[idx + 1]
         d = b - a
         t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.einsum("ij,ij->i", d, d), 0.0, 1.0)
         foot = a + t[:, None] * d
         k = int(np.argmin(np.einsum("ij,ij->i", foot - p, foot - p)))
-        i = first + k if idx is None else int(idx[k])
-        return self.at(self.s[i] + t[k] * (self.s[i + 1] - self.s[i]))
+        return self.at(self.s[i := (first + k) % (n - 1)] + t[k] * (self.s[i + 1] - self.s[i]))
 
     @cached_property
     def _rows(self) -> tuple[list[float], list[list[float]]]:
