@@ -98,3 +98,15 @@ def test_tilt_is_the_angle_of_the_body_z_axis():
     about_z = [math.cos(a / 2), 0.0, 0.0, math.sin(a / 2)]
     np.testing.assert_allclose(ff._tilt_deg(np.array([about_x, about_y, about_z])),
                                [30.0, 30.0, 0.0], atol=1e-9)
+
+
+def test_command_bounds_are_sampled_once_per_spec_and_handed_out_as_copies():
+    # The family's members share the sampled bounds: equal on every call, and a caller
+    # changing its copy changes no later member's.
+    spec = get_spec("bicycle")
+    assert spec.command_range is None  # its bounds are sampled from its scenarios
+    first = ff.command_bounds(spec)
+    first[:] = -1.0
+    again = ff.command_bounds(spec)
+    assert np.all(again > 0.0)
+    assert again.tobytes() == ff.command_bounds(spec).tobytes()

@@ -116,12 +116,22 @@ def command_bounds(spec: RobotSpec) -> np.ndarray:
                          "drive it")
     if spec.command_range is not None:
         return np.asarray(spec.command_range, float)
-    scenarios = [s for s in spec.scenarios if s.kind is ScenarioKind.KINEMATIC]
-    peak = np.zeros(len(scenarios[0].inputs))
-    for s in scenarios:
-        for t in np.arange(0.0, s.duration + RANGE_SAMPLE / 2, RANGE_SAMPLE):
-            peak = np.maximum(peak, np.abs(s.input_at(float(t))))
-    return peak
+    got = _BOUNDS.get(id(spec))
+    if got is None or got[0] is not spec:  # sampled once per spec (a family's members share it)
+        scenarios = [s for s in spec.scenarios if s.kind is ScenarioKind.KINEMATIC]
+        peak = np.zeros(len(scenarios[0].inputs))
+        for s in scenarios:
+            for t in np.arange(0.0, s.duration + RANGE_SAMPLE / 2, RANGE_SAMPLE):
+                peak = np.maximum(peak, np.abs(s.input_at(float(t))))
+        if len(_BOUNDS) >= 16:
+            _BOUNDS.pop(next(iter(_BOUNDS)))
+        got = _BOUNDS[id(spec)] = (spec, peak)
+    return got[1].copy()
+
+
+#: :func:`command_bounds` sampled from the scenarios, per spec (kept with its spec, so that
+#: an id reused by a later spec is not mistaken for it; a spec is frozen).
+_BOUNDS: dict[int, tuple[RobotSpec, np.ndarray]] = {}
 
 
 def family() -> Family:

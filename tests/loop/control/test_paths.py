@@ -158,3 +158,38 @@ def test_positions_are_at_vectorised():
     s = np.array([0.5, 3.0, 20.0])
     np.testing.assert_allclose(path.positions(s), [path.at(x).position for x in s],
                                atol=1e-12)
+
+
+def _closest_by_index(path, point, hint, window=paths.HINT_WINDOW):
+    """closest() as it was written with index arrays (the reference of the slices)."""
+    p = np.asarray(point, float)[:2]
+    n = len(path.s)
+    if hint is None:
+        idx = np.arange(n - 1)
+    else:
+        h = float(np.mod(hint, path.length) if path.closed else np.clip(hint, 0.0, path.length))
+        lo, hi = np.searchsorted(path.s, [h - window, h + window])
+        idx = np.arange(lo - 1, hi + 1)
+        idx = np.mod(idx, n - 1) if path.closed else idx[(idx >= 0) & (idx < n - 1)]
+    a, b = path.xy[idx], path.xy[idx + 1]
+    d = b - a
+    t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.einsum("ij,ij->i", d, d), 0.0, 1.0)
+    foot = a + t[:, None] * d
+    k = int(np.argmin(np.einsum("ij,ij->i", foot - p, foot - p)))
+    return path.at(path.s[idx[k]] + t[k] * (path.s[idx[k] + 1] - path.s[idx[k]]))
+
+
+@pytest.mark.parametrize("name", ["lane_change", "figure_eight", "circle", "random_spline"])
+def test_closest_searches_its_window_by_slices_with_the_same_floats(name):
+    # The window as array views (no fancy-index copies) must find the very same point,
+    # bit for bit: hints near both ends (a closed path's window wraps there), hints off
+    # an open path's ends, no hint; the wrapped and clipped arc lengths as numpy's.
+    path = paths.make_path(name, 1)
+    rng = np.random.default_rng(5)
+    for _ in range(400):
+        s0 = rng.uniform(-1.5, path.length + 1.5)
+        q = path.positions(np.array([s0]))[0] + rng.normal(scale=0.3, size=2)
+        hint = None if rng.random() < 0.1 else s0 + rng.normal(scale=0.4)
+        got, want = path.closest(q, hint), _closest_by_index(path, q, hint)
+        assert (got.s, got.heading, got.curvature) == (want.s, want.heading, want.curvature)
+        assert got.position.tobytes() == want.position.tobytes()

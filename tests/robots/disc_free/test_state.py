@@ -58,3 +58,42 @@ def test_run_stops_where_asked(free):
     rows = run.rows()
     assert abs(rows[-1, 4]) > 0.05 >= abs(rows[-2, 4])
     assert rows[-1, 0] < 2.0
+
+
+def test_cross_gives_numpys_floats():
+    # _cross replaces np.cross in the per-step readout: the same two products and one
+    # difference per entry, so the same floats bit for bit (signed zeros included).
+    import numpy as np
+
+    from wmr_mujoco.robots.disc_free.state import _cross
+
+    rng = np.random.default_rng(3)
+    for _ in range(2000):
+        a = rng.normal(size=3) * 10.0 ** rng.integers(-6, 6)
+        b = rng.normal(size=3) if rng.random() < 0.8 else np.array([0.0, 0.0, 1.0])
+        a[rng.integers(3)] *= rng.choice([0.0, -0.0, 1.0])
+        assert _cross(a.tolist(), b.tolist()).tobytes() == np.cross(a, b).tobytes()
+
+
+def test_free_pose_reads_the_tilted_frame_as_numpy_did(free):
+    # The readout's floats against the same formulas written with np.cross and np.clip
+    # (what free_pose computed before): a speed-up may not move a judged number.
+    import numpy as np
+
+    data = mujoco.MjData(free)
+    disc = disc_from_model(free)
+    set_free_state(free, data, disc, np.array([0.1, -0.2, 0.7, 0.3, 0.0, 1.5, -8.0, 0.4]))
+    for _ in range(200):
+        mujoco.mj_step(free, data)
+        b = free.body("disc").id
+        rot = data.xmat[b].reshape(3, 3)
+        e2 = rot[:, 1]
+        th = math.asin(float(np.clip(e2[2], -1.0, 1.0)))
+        e1 = np.cross(e2, [0.0, 0.0, 1.0])
+        e1 /= np.linalg.norm(e1)
+        e3 = np.cross(e1, e2)
+        p = data.xpos[b] - disc.radius * e3
+        w = rot @ data.qvel[3:6]
+        got = free_pose(free, data, disc.radius)
+        want = [p[0], p[1], math.atan2(e1[1], e1[0]), th, w @ e1, w @ e2, w @ e3]
+        assert got[:7].tobytes() == np.array(want).tobytes()

@@ -98,3 +98,17 @@ def test_planar_mass_with_known_rows_is_the_same_matrix():
     modes = MODEL.modes(thetas)
     ks, _ = MODEL.roller_rows(modes, thetas)
     assert np.array_equal(MODEL.planar_mass(modes, thetas, ks), MODEL.planar_mass(modes, thetas))
+
+
+def test_constraint_rows_shared_by_two_modes_are_the_fresh_rows():
+    # An impact reads the rows of its old and its new mode at the same wheel angles; the
+    # wheels that keep their roller share their rows (computed once): each mode's A must
+    # be, bit for bit, what a model that never saw the other mode computes.
+    thetas = np.array([0.31, -1.2, 2.05])
+    old, new = (0, 3, 7), (1, 3, 7)
+    shared = dataclasses.replace(MODEL)
+    a_old, a_new = shared.constraint_rows(old, thetas), shared.constraint_rows(new, thetas)
+    assert a_old.tobytes() == dataclasses.replace(MODEL).constraint_rows(old, thetas).tobytes()
+    assert a_new.tobytes() == dataclasses.replace(MODEL).constraint_rows(new, thetas).tobytes()
+    assert a_new[3:].tobytes() == a_old[3:].tobytes()  # wheels 1 and 2 kept their rollers
+    assert a_new[:3].tobytes() != a_old[:3].tobytes()

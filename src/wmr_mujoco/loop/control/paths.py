@@ -92,10 +92,10 @@ class Path:
         """``(x, y, heading)`` at ``s = 0``."""
         return self.at(0.0).pose
 
-    def _s(self, s: float) -> float:
+    def _s(self, s: float) -> float:  # np.mod's, np.clip's floats without their call cost
         if self.closed:
-            return float(np.mod(s, self.length))
-        return float(np.clip(s, 0.0, self.length))
+            return float(s) % self.length if math.isfinite(s) else math.nan
+        return float(s) if s != s else min(max(float(s), 0.0), self.length)
 
     def at(self, s: float) -> PathPoint:
         """The point at arc length ``s`` (wrapped on a closed path, clipped on an open one)."""
@@ -115,21 +115,21 @@ class Path:
                 whole path.
             window: half-width of that search, m.
         """
-        p = np.asarray(point, float)[:2]
-        n = len(self.s)
-        if hint is None:
-            idx = np.arange(n - 1)
-        else:
+        p, n = np.asarray(point, float)[:2], len(self.s)
+        first, last = 0, n - 1  # the segments first..last - 1 (mod n - 1 on a closed path)
+        if hint is not None:
             h = self._s(hint)
-            lo, hi = np.searchsorted(self.s, [h - window, h + window])
-            idx = np.arange(lo - 1, hi + 1)
-            idx = np.mod(idx, n - 1) if self.closed else idx[(idx >= 0) & (idx < n - 1)]
-        a, b = self.xy[idx], self.xy[idx + 1]
+            lo, hi = (int(i) for i in np.searchsorted(self.s, [h - window, h + window]))
+            first, last = (lo - 1, hi + 1) if self.closed else (max(lo - 1, 0), min(hi + 1, n - 1))
+        if first >= 0 and last <= n - 1:  # a range of them: views, no copies
+            a, b = self.xy[first:last], self.xy[first + 1:last + 1]
+        else:  # the window wraps round a closed path's end
+            a, b = self.xy[idx := np.mod(np.arange(first, last), n - 1)], self.xy[idx + 1]
         d = b - a
         t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.einsum("ij,ij->i", d, d), 0.0, 1.0)
         foot = a + t[:, None] * d
         k = int(np.argmin(np.einsum("ij,ij->i", foot - p, foot - p)))
-        return self.at(self.s[idx[k]] + t[k] * (self.s[idx[k] + 1] - self.s[idx[k]]))
+        return self.at(self.s[i := (first + k) % (n - 1)] + t[k] * (self.s[i + 1] - self.s[i]))
 
     @cached_property
     def _rows(self) -> tuple[list[float], list[list[float]]]:

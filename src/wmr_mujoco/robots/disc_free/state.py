@@ -70,10 +70,11 @@ def free_pose(model: mujoco.MjModel, data: mujoco.MjData, radius: float) -> np.n
     b = model.body("disc").id
     rot = data.xmat[b].reshape(3, 3)
     e2 = rot[:, 1]
-    th = math.asin(float(np.clip(e2[2], -1.0, 1.0)))
-    e1 = np.cross(e2, [0.0, 0.0, 1.0])
+    z = float(e2[2])  # np.clip's float (a NaN kept) without its per-call cost
+    th = math.asin(z if z != z else min(1.0, max(-1.0, z)))
+    e1 = _cross(e2.tolist(), (0.0, 0.0, 1.0))
     e1 /= np.linalg.norm(e1)
-    e3 = np.cross(e1, e2)
+    e3 = _cross(e1.tolist(), e2.tolist())
     p = data.xpos[b] - radius * e3
     w_world = rot @ data.qvel[3:6]
     m = model.body_mass[b]
@@ -83,6 +84,16 @@ def free_pose(model: mujoco.MjModel, data: mujoco.MjData, radius: float) -> np.n
               + m * g @ data.xpos[b])
     return np.array([p[0], p[1], math.atan2(e1[1], e1[0]), th, w_world @ e1,
                      w_world @ e2, w_world @ e3, energy])
+
+
+def _cross(a: list[float], b: tuple[float, ...] | list[float]) -> np.ndarray:
+    """``np.cross(a, b)`` of two 3-vectors, its floats at a tenth of its cost.
+
+    ``(a₁b₂ − a₂b₁, a₂b₀ − a₀b₂, a₀b₁ − a₁b₀)`` as numpy evaluates them: one rounding per
+    product and per difference.
+    """
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                     a[0] * b[1] - a[1] * b[0]])
 
 
 @dataclass(frozen=True)
@@ -120,7 +131,8 @@ class FreeRun:
         for k in range(n + 1):
             if k:
                 mujoco.mj_step(model, data)
-            row = np.array([data.time, *free_pose(model, data, disc.radius)])
+            row = np.empty(1 + len(POSE_NAMES))
+            row[0], row[1:] = data.time, free_pose(model, data, disc.radius)
             yield data, row
             if k and self.stop is not None and self.stop(row):
                 break

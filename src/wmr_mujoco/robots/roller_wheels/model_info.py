@@ -43,6 +43,14 @@ class OmniModelInfo:
     base_body: int
 
 
+#: Models whose layout was read, as their saved bytes, with the joints and the result: a
+#: family's members share one model, whose settle is then simulated once.
+_READ: list[tuple[np.ndarray, tuple[str, ...], OmniModelInfo]] = []
+#: Most models remembered (each its saved size, a few MB).
+_READ_MAX = 4
+_SCRATCH = [np.empty(0, np.uint8)]
+
+
 def layout_from_model(model: mujoco.MjModel, wheel_joints: Sequence[str]) -> OmniModelInfo:
     """Read the wheel layout of a settled model from its geometry.
 
@@ -50,9 +58,31 @@ def layout_from_model(model: mujoco.MjModel, wheel_joints: Sequence[str]) -> Omn
     the drive direction is ``a × ẑ`` (a positive rate rolls the centre that way) and the
     radius is the centre's height above the floor at rest.
 
+    A model equal to one read before (every byte of its saved form: ``mj_saveModel``,
+    a millisecond against the settle's many steps) gives that read's result again (the
+    same floats: the settle is deterministic; the layout's arrays are read-only).
+
     Raises:
         ValueError: a wheel joint without exactly one actuator.
     """
+    size = mujoco.mj_sizeModel(model)
+    if _SCRATCH[0].size != size:  # one buffer reused: its pages are not faulted in anew
+        _SCRATCH[0] = np.empty(size, np.uint8)
+    saved = _SCRATCH[0]
+    mujoco.mj_saveModel(model, None, saved)
+    joints = tuple(wheel_joints)
+    for bytes_, names, info in _READ:
+        if names == joints and np.array_equal(bytes_, saved):
+            return info
+    info = _read_layout(model, joints)
+    if len(_READ) >= _READ_MAX:
+        _READ.pop(0)
+    _READ.append((saved.copy(), joints, info))
+    return info
+
+
+def _read_layout(model: mujoco.MjModel, wheel_joints: Sequence[str]) -> OmniModelInfo:
+    """:func:`layout_from_model` read from the settled model."""
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     for _ in range(int(0.5 / model.opt.timestep)):  # settle on the floor

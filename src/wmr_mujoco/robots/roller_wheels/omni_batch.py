@@ -17,6 +17,7 @@ from wmr_mujoco.analytic.checks import as_array, positive
 from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.robots.roller_wheels.omni_heave import balance_loads as _normal_loads
 from wmr_mujoco.robots.roller_wheels.omni_heave import contact_inertia, heave_loads
+from wmr_mujoco.robots.roller_wheels.omni_impact_batch import planar_impacts
 
 if TYPE_CHECKING:
     from wmr_mujoco.robots.roller_wheels.omni_hybrid import OmniHybrid
@@ -347,22 +348,24 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                 st.slip_dir = np.where(st.slipping, st.slip_dir, 0.0)
             if changed.size:
                 new = _geometry(model, th, new_modes)
-            for b in changed:
-                old_m, new_m = tuple(int(m) for m in geo.modes[b]), tuple(
-                    int(m) for m in new.modes[b])
+            entering = np.empty((changed.size, 3))
+            for j, b in enumerate(changed):
                 current = geo.ks[b] @ nu[b]
                 for i in range(3):  # leaving rollers keep their spin
-                    spins[b, i, old_m[i]] = current[i]
-                entering = spins[b, np.arange(3), list(new_m)]
-                lost = 0.0
-                if impacts:
-                    before = nu[b].copy()
-                    nu[b], lost = model.planar_impact(nu[b], old_m, new_m, th[b], entering,
-                                                       thdd[b] if turning else None)
-                    pending[b] += before - nu[b]
-                for j, i in enumerate(i for i in range(3) if new_m[i] != old_m[i]):
+                    spins[b, i, geo.modes[b, i]] = current[i]
+                entering[j] = spins[b, np.arange(3), new.modes[b]]
+            lost = np.zeros(changed.size)
+            if impacts and changed.size:  # the runs' impacts at once (each its own floats)
+                before = nu[changed]
+                nu[changed], lost = planar_impacts(model, before, geo.modes[changed],
+                                                   new.modes[changed], th[changed], entering,
+                                                   thdd[changed] if turning else None)
+                pending[changed] += before - nu[changed]
+            for j, b in enumerate(changed):
+                old_m, new_m = geo.modes[b].tolist(), new.modes[b].tolist()
+                for first, i in enumerate(i for i in range(3) if new_m[i] != old_m[i]):
                     # One impact, its loss counted once (on the first switching wheel).
-                    switches[b].append(((k + 1) * dt, i, lost if j == 0 else 0.0))
+                    switches[b].append(((k + 1) * dt, i, float(lost[j]) if first == 0 else 0.0))
                 thd[b] = np.where(st.slipping[b], thd[b], new.H[b] @ nu[b])
             if changed.size:
                 geo = new

@@ -166,21 +166,39 @@ class HybridImpacts(_Host):
         ``a·(V + Ω×p) − ρ β̇ = 0`` (the roller takes the slide along the axle).
         """
         A = np.zeros((9, 12))
-        g = self.rollers
+        memo = self._wheel_rows
+        if len(memo) > 24:  # an impact's old and new modes share the unchanged wheels' rows
+            memo.clear()
         for i, (m, th) in enumerate(zip(modes, thetas, strict=True)):
-            phi = float(g.phases(float(th))[m])
-            rolling, ahead = g.rolling_radius(phi), g.contact_ahead(phi)
-            # contact_point(i, m, θ), its terms evaluated once
-            p = (self.distance * self.radial[i] + ahead * self.drive_dirs[i]
-                 - g.offsets[m] * self.radial[i] - np.array([0.0, 0.0, rolling]))
-            skew_p = np.array([[0, -p[2], p[1]], [p[2], 0, -p[0]], [-p[1], p[0], 0]])
-            for row, (d, coef, col) in enumerate((
-                    (self.drive_dirs[i], -rolling, 6 + i),
-                    (_UP, -ahead, 6 + i),
-                    (-self.radial[i], -g.contact_radius(phi), 9 + i))):
-                A[3 * i + row, :3] = d
-                A[3 * i + row, 3:6] = -d @ skew_p  # d·(Ω × p) = −d·(p × Ω)
-                A[3 * i + row, col] = coef
+            key = (i, int(m), float(th))
+            rows = memo.get(key)
+            if rows is None:
+                rows = memo[key] = self._wheel_constraint_rows(i, int(m), float(th))
+            A[3 * i:3 * i + 3] = rows
+        return A
+
+    @functools.cached_property
+    def _wheel_rows(self) -> dict[tuple[int, int, float], np.ndarray]:
+        return {}
+
+    def _wheel_constraint_rows(self, i: int, m: int, th: float) -> np.ndarray:
+        """Wheel ``i``'s three rows of :meth:`constraint_rows` (roller ``m``, angle ``th``)."""
+        A = np.zeros((3, 12))
+        g = self.rollers
+        phi = float(g.phases(float(th))[m])
+        rolling, ahead = g.rolling_radius(phi), g.contact_ahead(phi)
+        # contact_point(i, m, θ), its terms evaluated once
+        p = (self.distance * self.radial[i] + ahead * self.drive_dirs[i]
+             - g.offsets[m] * self.radial[i] - np.array([0.0, 0.0, rolling]))
+        skew_p = np.array([[0, -p[2], p[1]], [p[2], 0, -p[0]], [-p[1], p[0], 0]])
+        for row, (d, coef, col) in enumerate((
+                (self.drive_dirs[i], -rolling, 6 + i),
+                (_UP, -ahead, 6 + i),
+                (-self.radial[i], -g.contact_radius(phi), 9 + i))):
+            A[row, :3] = d
+            A[row, 3:6] = -d @ skew_p  # d·(Ω × p) = −d·(p × Ω)
+            A[row, col] = coef
+        A.setflags(write=False)
         return A
 
     def lift(self, nu: np.ndarray, modes: tuple[int, ...], thetas: np.ndarray,

@@ -41,8 +41,22 @@ def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniMod
     roller's measured spin rate. Contacts of wheels sliding slower than 1 mm/s are skipped.
     ``rollers``: :func:`roller_geoms` of the model (None: read here).
     """
+    got = roller_contacts(model, data, info, slide_speeds, rollers)
+    return [] if got is None else rate_errors(*got)
+
+
+def roller_contacts(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelInfo,
+                    slide_speeds: np.ndarray,
+                    rollers: tuple[np.ndarray, np.ndarray] | None = None
+                    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
+    """What :func:`roller_rate_errors` reads of the contacting rollers now (None: no contact).
+
+    Per roller contact: its offset from the roller's hinge anchor ``rel``, the hinge's
+    world axis, the wheel's slide speed ``|s|`` and the roller's spin ``|ω_r|``; rows of
+    several steps stacked give :func:`rate_errors` of each step, in order.
+    """
     if data.ncon == 0:
-        return []
+        return None
     wheel_of_geom, joint_of_geom = rollers if rollers is not None else roller_geoms(model,
                                                                                    info)
     con = data.contact
@@ -51,11 +65,19 @@ def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniMod
     wheel = wheel_of_geom[geom]
     roller = wheel >= 0
     jnt = joint_of_geom[geom[roller]]
-    axis = data.xaxis[jnt]
     rel = con.pos[:data.ncon][roller] - data.xanchor[jnt]
+    return (rel, data.xaxis[jnt], np.abs(np.asarray(slide_speeds, float)[wheel[roller]]),
+            np.abs(data.qvel[model.jnt_dofadr[jnt]]))
+
+
+def rate_errors(rel: np.ndarray, axis: np.ndarray, slide: np.ndarray, omega: np.ndarray
+                ) -> list[float]:
+    """``|ω_r ρ − s| / s`` of :func:`roller_contacts`' rows, ``ρ = |rel − (rel·â) â|``.
+
+    Row by row the same floats however many steps' rows are stacked (each row's sums
+    are its own three terms, in order).
+    """
     rho = np.linalg.norm(rel - axis * np.sum(rel * axis, axis=1)[:, None], axis=1)
-    slide = np.abs(np.asarray(slide_speeds, float)[wheel[roller]])
-    omega = np.abs(data.qvel[model.jnt_dofadr[jnt]])
     keep = (slide >= 1e-3) & (rho >= 1e-6)
     return (np.abs(omega * rho - slide)[keep] / slide[keep]).tolist()
 
@@ -115,6 +137,7 @@ class RollerRateProbe:
 
     _rollers: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False)
     _slides: dict[bytes, np.ndarray] = field(default_factory=dict, repr=False)
+    _pending: list[tuple[np.ndarray, ...]] = field(default_factory=list, repr=False)
 
     def observe(self, sample: Sample) -> None:
         """Errors of the rollers in contact at this step."""
@@ -128,11 +151,16 @@ class RollerRateProbe:
                     self._slides.clear()
                 slide = self._slides[key] = ok.roller_slide_speeds(self.adapter.layout,
                                                                    twist)
-            self.errors += roller_rate_errors(sample.model, sample.data, self.info, slide,
-                                              self._rollers)
+            got = roller_contacts(sample.model, sample.data, self.info, slide, self._rollers)
+            if got is not None:  # the errors of all steps at once, when asked for
+                self._pending.append(got)
 
     def metrics(self) -> list[Metric]:
         """Median (judged) and 95th percentile, in %."""
+        if self._pending:
+            self.errors += rate_errors(*(np.concatenate(p) for p in zip(*self._pending,
+                                                                        strict=True)))
+            self._pending.clear()
         if not self.errors:
             return []
         return [Metric("roller rate error (median)", 100.0 * float(np.median(self.errors)),
