@@ -62,6 +62,7 @@ study: $(STAMP)
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_study
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_phase
 	$(BIN)/python -m wmr_mujoco.bench.mecanum_drift
+	$(BIN)/python -m wmr_mujoco.bench.timestep_choice --seeds 0 1 2 3 --dampratios 0.5 0.6 0.8 1 --write
 
 bench: $(STAMP)
 	$(BIN)/wmr bench

@@ -46,6 +46,8 @@ import numpy as np
 
 from wmr_mujoco.atomic import write_text_atomic
 from wmr_mujoco.bench.default_speed import (
+    FULL,
+    QUICK,
     Rounds,
     Timed,
     drivable,
@@ -80,12 +82,6 @@ PERIODS = (Fraction(1, 50), Fraction(1, 20), Fraction(1, 10))
 STEPS = tuple(float(s) for s in (Fraction(k, 4000) for k in range(4, 21))
               if all((p / s).denominator == 1 for p in PERIODS))
 
-#: Timing of each setting: shorter runs than ``default_speed``'s, as a robot has up to
-#: 16 settings, in this process's CPU time (other work on a shared machine moves it
-#: less than wall time); the cost ratio to the default (same rounds) is the figure
-#: compared.
-FULL = Rounds(seconds=0.5, rounds=5)
-QUICK = Rounds(seconds=0.5, rounds=2)
 
 DOC = DOCS_DIR / "floor-contact.md"
 MARKER = "timestep choice"
