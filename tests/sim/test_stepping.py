@@ -47,6 +47,28 @@ def test_check_healthy_reads_warnings():
         check_healthy(model, data)
 
 
+@pytest.mark.parametrize("field", ["qpos", "qvel", "act"])
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_check_healthy_names_a_non_finite_field_without_a_warning(field, bad):
+    """No MuJoCo warning, one non-finite entry: named, whichever field and value."""
+    model = load("disc")  # it has an activation state (its steering servo's filter)
+    data = mujoco.MjData(model)
+    assert data.act.size
+    getattr(data, field)[0] = bad
+    with pytest.raises(SimulationDivergedError, match=f"non-finite {field}"):
+        check_healthy(model, data)
+
+
+def test_check_healthy_passes_finite_fields_whose_sum_overflows():
+    """Finite entries whose sum is infinite (1e308 twice) are healthy: the quick sum test
+    falls back to the field by field check."""
+    model = load("disc")
+    data = mujoco.MjData(model)
+    data.qvel[:2] = 1e308
+    assert not np.isfinite(data.qvel.sum())
+    check_healthy(model, data)
+
+
 @pytest.mark.parametrize("kwargs, match", [
     ({"duration": -1.0}, "duration = -1.0"),
     ({"duration": 1.0, "record_every": 0}, "record_every = 0"),
