@@ -93,7 +93,10 @@ def test_validation_stops_after_the_first_families_that_lose_a_target(monkeypatc
     assert "stopped after 3 of 4 families" in timestep_choice.verdict_text({0: f})
     ran.clear()
     assert timestep_choice.fidelity(spec, params, 0, default, jobs=1) == f
-    assert ran == []  # the stop is kept too
+    assert ran == []  # the stop is kept too, named by the candidate and by the defaults
+    defaults = timestep_choice.cache_file(spec, spec.params_type(), 0, tmp_path).stem
+    [stop] = tmp_path.glob("*.stopped.json")
+    assert stop.name.endswith(f".vs-{defaults.rsplit('-', 1)[-1]}.stopped.json")
     for kept_stop in tmp_path.glob("*.stopped.json"):
         kept_stop.unlink()
 

@@ -135,8 +135,9 @@ class Fidelity:
     """A candidate's validation at one seed against the defaults' at that seed.
 
     Attributes:
-        lost: ``scenario / metric`` of the targets the defaults pass and it loses (or
-            whose rows it did not produce: a failed run).
+        lost: ``scenario / metric`` of the targets the defaults meet and it does not
+            (:func:`~wmr_mujoco.bench.solver_fidelity.meets`), or whose rows it did not
+            produce (a failed run).
         families: how many of the robot's families it ran (all, or up to the first loss).
         total: how many the robot has.
     """
@@ -154,8 +155,12 @@ def fidelity(spec: RobotSpec, params: RobotParams, seed: int, default: Figures,
     if whole is not None:
         v = compare(default, whole)
         return Fidelity(v.lost + v.missing, len(jobs_), len(jobs_))
-    stopped = cache_file(spec, params, seed, CACHE).with_suffix(".stopped.json")
-    if stopped.exists():  # an earlier run stopped at a loss
+    # a stop is kept per candidate and defaults (both models' digests): new defaults
+    # judge the candidate again
+    base = spec.params_type() if spec.params_type is not None else params
+    digest = cache_file(spec, base, seed, CACHE).stem.rsplit("-", 1)[-1]
+    stopped = cache_file(spec, params, seed, CACHE).with_suffix(f".vs-{digest}.stopped.json")
+    if stopped.exists():  # an earlier run stopped at a loss against these defaults
         f = json.loads(stopped.read_text())
         return Fidelity(tuple(f["lost"]), int(f["families"]), int(f["total"]))
     got: Figures = {}
