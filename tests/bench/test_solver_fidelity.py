@@ -115,3 +115,12 @@ def test_an_open_target_met_by_the_defaults_is_lost_when_the_setting_misses_it()
     v = solver_fidelity.compare(default, setting)
     assert v.lost == ("s / met",)
     assert v.worst_rise == float("-inf")  # no judged row: no rise
+
+
+def test_a_failed_row_of_the_setting_alone_is_lost():
+    """A member that diverged leaves a failed ``run`` row the defaults do not have, while
+    its siblings still give every metric: the setting loses it."""
+    default = _rows(_row(0.5, True, metric="a"))
+    setting = _rows(_row(0.5, True, metric="a"), _row(math.nan, False, None, "run"))
+    v = solver_fidelity.compare(default, setting)
+    assert v.lost == ("s / run",) and not v.acceptable

@@ -24,31 +24,33 @@ def test_the_steps_are_those_that_divide_every_control_period():
 
 @pytest.mark.parametrize("robot", ["omni3", "diffdrive"])
 def test_a_longer_step_keeps_the_contact_time_constant_in_steps(robot):
-    """MuJoCo as the oracle: the compiled model's floor pairs at 2.5 ms have the same
-    ``t_c/Δt`` as at the default step (omni3 sets ``contact_timeconst`` itself, diffdrive's
-    pairs take it from the step), and the model runs at the new step."""
+    """MuJoCo as the oracle: the compiled model's floor pairs at the longest step (5 ms)
+    have the same ``t_c/Δt`` as at the default step (omni3 sets ``contact_timeconst``
+    itself, diffdrive's pairs take it from the step), and the model runs at the new step."""
     spec = get_spec(robot)
     default = load(spec, spec.params_type())
-    c = timestep_choice.at_step(spec, 0.0025)
-    longer = load(spec, c.params)
-    assert longer.opt.timestep == 0.0025
+    dt = timestep_choice.STEPS[-1]
+    assert dt > default.opt.timestep
+    longer = load(spec, timestep_choice.at_step(spec, dt).params)
+    assert longer.opt.timestep == dt
     assert default.npair > 0 and longer.npair == default.npair
     steps = default.pair_solref[:, 0] / default.opt.timestep
-    assert longer.pair_solref[:, 0] / 0.0025 == pytest.approx(steps, rel=1e-12)
+    assert longer.pair_solref[:, 0] / dt == pytest.approx(steps, rel=1e-12)
     # ζ kept unless asked for
     assert longer.pair_solref[:, 1] == pytest.approx(default.pair_solref[:, 1])
-    half = load(spec, timestep_choice.at_step(spec, 0.0025, 0.5).params)
+    half = load(spec, timestep_choice.at_step(spec, dt, 0.5).params)
     assert half.pair_solref[:, 1] == pytest.approx(0.5)
 
 
-def test_only_longer_steps_are_candidates_each_at_every_damping_ratio():
+def test_candidates_are_the_default_step_at_other_damping_ratios_then_longer_steps():
     spec = get_spec("omni3")  # default 1.25 ms
     own = spec.params_type().sim.floor_dampratio
     assert own not in (0.5, 1.0)
     cands = timestep_choice.candidates(spec, (0.5, 1.0, 0.5, own))
-    assert [(c.timestep, c.dampratio) for c in cands] == [
+    assert [(c.timestep, c.dampratio) for c in cands] == [(0.00125, 0.5), (0.00125, 1.0)] + [
         (dt, z) for dt in (0.002, 0.0025, 0.005) for z in (own, 0.5, 1.0)]
-    assert {c.dampratio for c in timestep_choice.candidates(spec)} == {own}
+    assert [(c.timestep, c.dampratio) for c in timestep_choice.candidates(spec)] == [
+        (dt, own) for dt in (0.002, 0.0025, 0.005)]
 
 
 def test_a_robot_without_parameters_is_refused_by_name():
@@ -93,10 +95,17 @@ def test_validation_stops_after_the_first_families_that_lose_a_target(monkeypatc
     assert "stopped after 3 of 4 families" in timestep_choice.verdict_text({0: f})
     ran.clear()
     assert timestep_choice.fidelity(spec, params, 0, default, jobs=1) == f
-    assert ran == []  # the stop is kept too, named by the candidate and by the defaults
-    defaults = timestep_choice.cache_file(spec, spec.params_type(), 0, tmp_path).stem
-    [stop] = tmp_path.glob("*.stopped.json")
-    assert stop.name.endswith(f".vs-{defaults.rsplit('-', 1)[-1]}.stopped.json")
+    assert ran == []  # the stop is kept too
+    # ... for these jobs only: two at a time (in worker processes) the stop comes after
+    # the batch (c, d), not the one-at-a-time stop's 3 families
+    f2 = timestep_choice.fidelity(spec, params, 0, default, jobs=2)
+    assert (f2.families, f2.lost) == (4, f.lost)
+    # a stop this module did not write is run again, not trusted
+    [stop] = [p for p in tmp_path.glob("*.j1.stopped.json")]
+    stop.write_text("{not json")
+    ran.clear()
+    assert timestep_choice.fidelity(spec, params, 0, default, jobs=1) == f
+    assert ran == ["a", "b", "c"]
     for kept_stop in tmp_path.glob("*.stopped.json"):
         kept_stop.unlink()
 
@@ -136,8 +145,21 @@ def test_the_table_names_the_cheapest_step_that_keeps_every_target():
     text = timestep_choice.table(rows, [0], timestep_choice.QUICK, quick=True)
     assert text.startswith("QUICK run")
     assert "| x | 2.5 ms | 1 | 125× | 0.80 | seed 0: passes every target |" in text
-    assert "- x: cheaper and keeps every target: 2.5 ms at ζ = 1." in text
-    assert "- y: no longer step keeps every target: the default is the cheapest." in text
+    assert ("- x: a longer step keeps every target the defaults meet: 2.5 ms at ζ = 1 "
+            "(cost ratio 0.80).") in text
+    assert ("- y: no longer step keeps every target the defaults meet: the default step is "
+            "the cheapest.") in text
+
+
+def test_the_default_step_at_another_damping_ratio_is_no_cheaper_step():
+    """A row at the default step that keeps every target (a ζ shown for comparison) does not
+    make the verdict line name a cheaper step."""
+    rows = [{"robot": "x", "timestep": 0.002, "dampratio": 1.0, "rtf": 100.0, "ratio": 1.0,
+             "verdict": "the default"},
+            {"robot": "x", "timestep": 0.002, "dampratio": 0.8, "rtf": 101.0, "ratio": 0.99,
+             "verdict": "seed 0: keeps every target", "acceptable": True}]
+    text = timestep_choice.table(rows, [0], timestep_choice.QUICK, quick=False)
+    assert "- x: no longer step keeps every target the defaults meet" in text
 
 
 @pytest.mark.parametrize("argv, message", [
@@ -148,6 +170,12 @@ def test_bad_options_are_refused_before_any_work(argv, message, capsys):
     with pytest.raises(SystemExit):
         timestep_choice.main(argv)
     assert message in capsys.readouterr().err
+
+
+def test_a_robot_the_family_does_not_drive_is_refused_by_name(capsys):
+    with pytest.raises(SystemExit):
+        timestep_choice.main(["--quick", "whipple"])
+    assert "'whipple' is not driven by the random-steps family" in capsys.readouterr().err
 
 
 def test_an_unknown_robot_is_refused_with_the_valid_names():

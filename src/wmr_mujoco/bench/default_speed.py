@@ -126,10 +126,12 @@ def prepare_timed(spec: RobotSpec, params: RobotParams | None, seconds: float) -
 
 
 def wall_seconds(t: Timed, clock: Callable[[], float] = time.perf_counter) -> float:
-    """Wall time, s, of the prepared run in a bare one-thread ``mj_step`` loop.
+    """Elapsed time, s, by ``clock`` of the prepared run in a bare one-thread ``mj_step`` loop.
 
-    ``clock``: the timer (``time.process_time`` for this process's CPU time, which other
-    work on a shared machine moves less).
+    Args:
+        t: the prepared run.
+        clock: the timer: wall time by default; ``time.process_time`` for this process's
+            CPU time, which other work on a shared machine moves less.
     """
     m, d = t.model, t.data
     mujoco.mj_setState(m, d, t.state, mujoco.mjtState.mjSTATE_INTEGRATION)

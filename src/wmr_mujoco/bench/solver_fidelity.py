@@ -11,8 +11,9 @@ families at the same seed beside it, and the two are compared row by row
 
 * **lost**: the rows the defaults meet and the setting does not (:func:`meets`: a judged
   row that passes, or an open target's row whose figure is within it, so that a setting
-  cannot hide behind a target that is open for another draw); the setting is rejected
-  if any, at any seed;
+  cannot hide behind a target that is open for another draw), and any failed row of
+  the setting's own (a member whose run failed or diverged); the setting is rejected if
+  any, at any seed;
 * **worst change**: the largest rise of a judged figure as a share of its target,
   ``max (|v_setting| − |v_default|) / target`` over the judged rows (positive: the
   setting comes closer to failing).
@@ -151,6 +152,9 @@ def compare(default: Figures, setting: Figures) -> Verdict:
     """The setting's rows against the defaults' (see the module docstring)."""
     lost, missing = [], []
     worst, where = float("-inf"), ""
+    for key, s in setting.items():  # a failed row of its own, e.g. a member that diverged
+        if key not in default and s.passed is False:
+            lost.append(f"{key[0]} / {key[1]} ({key[2]})" if key[2] else f"{key[0]} / {key[1]}")
     for key, d in default.items():
         name = f"{key[0]} / {key[1]} ({key[2]})" if key[2] else f"{key[0]} / {key[1]}"
         s = setting.get(key)

@@ -24,13 +24,15 @@ with it the rolling radius, at the same damping. Only steps that divide every co
 period users drive with (:data:`PERIODS`) are candidates: ``wmr_mujoco.drive`` refuses a
 period that is not a whole number of steps.
 
-Each candidate is validated on its own, families in registry order, ``--jobs`` at a time;
-its validation stops after the first families that lose a target (the table then names
-those; the later families are not run). The defaults' figures and a candidate's complete
-figures are kept in ``reports/solver_cost/`` (named by the model files' digest,
-:func:`~wmr_mujoco.bench.solver_fidelity.cache_file`): a rerun times again and reuses
-them. ``--write`` pastes the table between the ``timestep choice`` markers of
-``docs/floor-contact.md``.
+The default step is also validated at each other ζ (the same cost): its rows show why
+the robot's ζ is chosen. Each candidate is validated on its own, families in registry
+order, ``--jobs`` at a time; its validation stops after the first families that lose a
+target (the table then names those; the later families are not run). The defaults'
+figures, a candidate's complete figures and its stops are kept in
+``reports/solver_cost/`` (named by the model files' digests,
+:func:`~wmr_mujoco.bench.solver_fidelity.cache_file`; a stop also by the defaults' and
+``--jobs``): a rerun times again and reuses them. ``--write`` pastes the table between
+the ``timestep choice`` markers of ``docs/floor-contact.md``.
 """
 
 from __future__ import annotations
@@ -120,14 +122,17 @@ def at_step(spec: RobotSpec, timestep: float, dampratio: float | None = None) ->
 
 
 def candidates(spec: RobotSpec, dampratios: Sequence[float] = ()) -> list[Candidate]:
-    """Every step of :data:`STEPS` longer than the default (the cheaper ones), at each ζ.
+    """The default step at each other ζ, then every longer step of :data:`STEPS` at each ζ.
 
-    The robot's own ζ, then each of ``dampratios`` (ζ does not change a step's cost).
+    ζ: the robot's own, then each of ``dampratios``. ζ does not change a step's cost: the
+    default step's rows show why the robot's ζ is chosen, the longer steps' whether a
+    cheaper setting keeps every target.
     """
     assert spec.params_type is not None
     own = spec.params_type().sim
     zetas = list(dict.fromkeys([own.floor_dampratio, *dampratios]))
-    return [at_step(spec, dt, z) for dt in STEPS if dt > own.timestep for z in zetas]
+    same = [at_step(spec, own.timestep, z) for z in zetas if z != own.floor_dampratio]
+    return same + [at_step(spec, dt, z) for dt in STEPS if dt > own.timestep for z in zetas]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -149,7 +154,20 @@ class Fidelity:
 
 def fidelity(spec: RobotSpec, params: RobotParams, seed: int, default: Figures,
              jobs: int) -> Fidelity:
-    """Validate ``params`` family by family, ``jobs`` at a time, up to the first loss."""
+    """Validate ``params`` family by family, ``jobs`` at a time, up to the first loss.
+
+    Args:
+        spec: the robot.
+        params: the candidate's parameters.
+        seed: the families' seed.
+        default: the defaults' rows at ``seed``.
+        jobs: families run at once (the stop comes after the first batch that loses).
+
+    Returns:
+        What the candidate loses, and how many families it ran. A complete pass is kept
+        in :data:`CACHE` (its rows), as is a stop (named by the candidate, the defaults
+        and ``jobs``); an unreadable kept stop is run again.
+    """
     jobs_ = validation_jobs([spec.name])
     whole = kept(spec, params, seed, CACHE)
     if whole is not None:
@@ -159,10 +177,14 @@ def fidelity(spec: RobotSpec, params: RobotParams, seed: int, default: Figures,
     # judge the candidate again
     base = spec.params_type() if spec.params_type is not None else params
     digest = cache_file(spec, base, seed, CACHE).stem.rsplit("-", 1)[-1]
-    stopped = cache_file(spec, params, seed, CACHE).with_suffix(f".vs-{digest}.stopped.json")
+    stopped = cache_file(spec, params, seed, CACHE).with_suffix(
+        f".vs-{digest}.j{jobs}.stopped.json")
     if stopped.exists():  # an earlier run stopped at a loss against these defaults
-        f = json.loads(stopped.read_text())
-        return Fidelity(tuple(f["lost"]), int(f["families"]), int(f["total"]))
+        try:
+            f = json.loads(stopped.read_text())
+            return Fidelity(tuple(f["lost"]), int(f["families"]), int(f["total"]))
+        except (ValueError, KeyError, TypeError):
+            pass  # not a stop this module wrote: run again
     got: Figures = {}
     for start in range(0, len(jobs_), jobs):
         keys = range(start, min(len(jobs_), start + jobs))
@@ -183,8 +205,14 @@ def real_time_factors(spec: RobotSpec, settings: Sequence[RobotParams | None], h
                       ) -> list[float]:
     """Real-time factor (CPU time) of each setting, alternating rounds, median (NaN: diverged).
 
-    As :func:`wmr_mujoco.bench.default_speed.real_time_factors`, but a setting whose
-    settle or drive diverges is reported as NaN and left out of the later rounds.
+    As :func:`wmr_mujoco.bench.default_speed.real_time_factors`, but in CPU time, and a
+    setting whose settle or drive diverges is reported as NaN and left out of the later
+    rounds.
+
+    Args:
+        spec: the robot.
+        settings: its parameters per setting (None: the defaults).
+        how: the length of each timed run and the number of rounds.
     """
     prepared: list[Timed | None] = []
     for p in settings:
@@ -210,6 +238,17 @@ def study(spec: RobotSpec, seeds: Sequence[int], dampratios: Sequence[float], ho
     """One row per setting of ``spec``: the default first, then :func:`candidates`.
 
     A candidate that loses a target at a seed is not validated at the later seeds.
+
+    Args:
+        spec: the robot.
+        seeds: the families' seeds, in turn.
+        dampratios: the floor pairs' ζ to try besides the robot's own.
+        how: the timing.
+        jobs: families run at once.
+
+    Returns:
+        Dicts of ``robot``, ``timestep``, ``dampratio``, ``rtf``, ``ratio`` (cost against
+        the default), ``verdict`` (a table cell) and, for a candidate, ``acceptable``.
     """
     assert spec.params_type is not None
     cands = candidates(spec, dampratios)
@@ -239,7 +278,7 @@ def verdict_text(by_seed: dict[int, Fidelity]) -> str:
     parts = []
     for seed, f in by_seed.items():
         if not f.lost:
-            parts.append(f"seed {seed}: passes every target")
+            parts.append(f"seed {seed}: keeps every target")
             continue
         shown = "; ".join(f.lost[:3]) + (f"; … {len(f.lost) - 3} more" if len(f.lost) > 3 else "")
         ran = ("" if f.families == f.total
@@ -250,7 +289,14 @@ def verdict_text(by_seed: dict[int, Fidelity]) -> str:
 
 def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
           quick: bool) -> str:
-    """The markdown table of :func:`study`'s rows, and a verdict line per robot."""
+    """The markdown table of :func:`study`'s rows, and a verdict line per robot.
+
+    Args:
+        rows: :func:`study`'s rows.
+        seeds: the seeds validated (for the header).
+        how: the timing (for the header).
+        quick: the run was ``--quick`` (the header says so).
+    """
     lines = [f"{'QUICK run: ' if quick else ''}`python -m wmr_mujoco.bench.timestep_choice`: "
              f"each robot's families (`wmr validate ROBOT --seed S`, seeds "
              f"{', '.join(map(str, seeds))}) at each longer step that divides the 20, 50 and "
@@ -258,20 +304,24 @@ def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
              f"one-thread `mj_step` loop in CPU time, {how.seconds:g} s of the random-steps "
              f"family's member 0, median of {how.rounds} alternating rounds.", "",
              "| robot | step | ζ | real-time × | cost ratio (candidate / default) | "
-             "targets the default passes |", "|---" * 6 + "|"]
+             "targets the defaults meet (judged and passed, or open and met) |",
+             "|---" * 6 + "|"]
     for r in rows:
         lines.append(f"| {r['robot']} | {1e3 * float(r['timestep']):g} ms "  # type: ignore[arg-type]
                      f"| {float(r['dampratio']):g} | {float(r['rtf']):.0f}× "  # type: ignore[arg-type]
                      f"| {float(r['ratio']):.2f} | {r['verdict']} |")  # type: ignore[arg-type]
     lines.append("")
     for name in dict.fromkeys(str(r["robot"]) for r in rows):
-        ok = [r for r in rows if r["robot"] == name and r.get("acceptable")]
-        cheaper = [r for r in ok if float(r["ratio"]) < 1.0]  # type: ignore[arg-type]
+        own = float(next(r["timestep"] for r in rows if r["robot"] == name))  # type: ignore[arg-type]
+        longer = [r for r in rows if r["robot"] == name and r.get("acceptable")
+                  and float(r["timestep"]) > own]  # type: ignore[arg-type]
         lines.append(f"- {name}: " + (
-            "no longer step keeps every target: the default is the cheapest." if not cheaper
-            else "cheaper and keeps every target: " + ", ".join(
-                f"{1e3 * float(r['timestep']):g} ms at ζ = {float(r['dampratio']):g}"  # type: ignore[arg-type]
-                for r in cheaper) + "."))
+            "no longer step keeps every target the defaults meet: the default step is the "
+            "cheapest." if not longer
+            else "a longer step keeps every target the defaults meet: " + ", ".join(
+                f"{1e3 * float(r['timestep']):g} ms at ζ = {float(r['dampratio']):g} "  # type: ignore[arg-type]
+                f"(cost ratio {float(r['ratio']):.2f})"  # type: ignore[arg-type]
+                for r in longer) + "."))
     return "\n".join(lines)
 
 
@@ -296,6 +346,10 @@ def main(argv: list[str] | None = None) -> None:
     if any(s < 0 for s in seeds):
         parser.error(f"--seeds {seeds!r}: seeds are integers >= 0")
     robots = [get_spec(r).name for r in args.robots] or drivable()  # unknown: fails here
+    for r in robots:
+        if r not in drivable():
+            parser.error(f"robot {r!r} is not driven by the random-steps family; valid: "
+                         f"{', '.join(drivable())}")
     how = QUICK if args.quick else FULL
     rows = []
     for name in robots:

@@ -32,11 +32,14 @@ def check_healthy(model: mujoco.MjModel, data: mujoco.MjData) -> None:
 
     """
     counts = data.warning.number  # one array read, not one struct per warning
-    if not counts.any() and math.isfinite(
-            data.qpos.sum() + data.qvel.sum() + (data.act.sum() if data.act.size else 0.0)):
-        # NaN and ±Inf survive a sum (or make NaN): a finite sum means finite fields. (A
-        # sum of finite values may still overflow: the field by field check below.)
-        return
+    if not counts.any():
+        with np.errstate(over="ignore", invalid="ignore"):  # the check, not a warning
+            total = data.qpos.sum() + data.qvel.sum() + (data.act.sum() if data.act.size
+                                                         else 0.0)
+        if math.isfinite(total):
+            # NaN and ±Inf survive a sum (or make NaN): a finite sum means finite fields.
+            # (A sum of finite values may still overflow: the field by field check below.)
+            return
     raised = [f"{name} x{counts[i]}" for i, name in enumerate(WARNING_NAMES)
               if counts[i] > 0] if counts.any() else []
     bad = [f for f in ("qpos", "qvel", "act") if not np.isfinite(getattr(data, f)).all()]

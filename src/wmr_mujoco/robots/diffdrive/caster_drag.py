@@ -61,9 +61,9 @@ MANOEUVRES = (("straight", 0.5, 0.0), ("spin", 0.0, 1.5))
 #: (``I α = 0``). On the geom's own contact (no floor pair, ``d`` ≈ 0.95) the condim-6
 #: contact chatters (it is lost for one step in a few), so at single steps ``I α ≠ 0``;
 #: over each chatter cycle the spin returns to its value and ``∫ I α dt = 0``. A window of
-#: ``STEADY`` s holds ``n ≈ STEADY / T_c`` cycles (T_c ≈ 6 steps, 12 ms at a 2 ms step:
-#: n ≈ 80) and at most one partial cycle, whose share of the mean is at most
-#: (peak − mean)/mean / n ≈ 1/80; the bound doubles that. The default model pairs the
+#: ``STEADY`` s holds ``n ≈ STEADY / T_c`` cycles (T_c ≈ 6 steps, 15 ms at the 2.5 ms
+#: step: n ≈ 67) and at most one partial cycle, whose share of the mean is at most
+#: (peak − mean)/mean / n ≈ 1/67; the bound is 1.7 times that. The default model pairs the
 #: caster with the floor (the wheels' remedy, :mod:`wmr_mujoco.models.builders.wheel_pairs`):
 #: it touches at every step, no cycle is partial, and the mean's only residual is the
 #: ball's spin change across the window, which the same bound covers.
