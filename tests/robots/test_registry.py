@@ -100,11 +100,16 @@ def test_a_new_robot_runs_through_validate_report_and_render(tmp_path):
     assert worst.target == 0.5 and worst.basis.startswith("requirement")
     # The wider wheel (R = 0.2 m) is what was simulated: 0.8 m/s for 1.5 s after a
     # 0.5 s ramp is 1.0 m of path whatever the radius, and the wheel turned v/R; less
-    # 0.8 Δt/2, as each step holds the input read at its start (the ramp lags by Δt/2).
-    # Tolerance 1e-3: the path is summed from the first trace sample, a few steps in.
+    # 0.8 Δt/2, as each step holds the input read at its start (the ramp lags by Δt/2),
+    # and less what the (equally lagging) ramp covers before the first trace sample t₁,
+    # from which the path is summed: (0.8/0.5) (t₁ − Δt/2)²/2. Tolerance 1e-5 of the path:
+    # the arc's chords between samples (yaw rate 0.2 rad/s) and round-off.
     dt = spec.params_type().sim.timestep
+    arc_times = next(r for r in results if r is arc).trace.arrays()["time"]
+    t1 = float(arc_times[0])
     path_m = next(r.value for r in arc.rows if r.metric == "path length")
-    assert path_m == pytest.approx(0.8 * 1.5 - 0.8 * 0.5 / 2 - 0.8 * dt / 2, rel=1e-3)
+    expected = 0.8 * 1.5 - 0.8 * 0.5 / 2 - 0.8 * dt / 2 - 0.8 / 0.5 * (t1 - dt / 2) ** 2 / 2
+    assert path_m == pytest.approx(expected, rel=1e-5)
     assert inertia.rows[0].value == pytest.approx(1.0, rel=1e-12)
     assert f"{NAME}/gentle arc" in path.read_text()
     doc = json.loads((tmp_path / "validation.json").read_text())

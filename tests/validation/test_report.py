@@ -13,6 +13,7 @@ from wmr_mujoco.validation.signals import Piecewise, const
 def results():
     disc = get_spec("disc")
     return run_all([
+        # 2 s, as in test_runner: the ramp's start-up lag a small share of the path
         (disc, Scenario("disc", "short", (const(1.0, 0.5), const(0.0)), duration=2.0)),
         # const refuses NaN; a signal that yields one mid-run still must become a failed row.
         (disc, Scenario("disc", "nan input", (Piecewise(((0.0, float("nan")),)), const(0.0)),
