@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from wmr_mujoco.bench import default_speed as ds
@@ -39,3 +41,23 @@ def test_an_unchanged_robot_has_no_previous_row(monkeypatch):
 def test_unknown_robot_fails_before_any_run():
     with pytest.raises(ValueError, match="nosuch"):
         ds.main(["--quick", "nosuch"])
+
+
+def test_a_diverging_setting_raises_or_is_nan_when_asked(monkeypatch):
+    """The defaults' timing raises on a divergence; a candidate study asks for NaN, and the
+    other settings are still timed."""
+    from wmr_mujoco.sim.stepping import SimulationDivergedError
+
+    real = ds.prepare_timed
+
+    def prepare(spec, params, seconds):
+        if params is not None:
+            raise SimulationDivergedError("diverged at t=0.1 s")
+        return real(spec, params, seconds)
+
+    monkeypatch.setattr(ds, "prepare_timed", prepare)
+    spec = ds.get_spec("disc")
+    with pytest.raises(SimulationDivergedError):
+        ds.real_time_factors(spec, [None, spec.params_type()], TINY)
+    rtf = ds.real_time_factors(spec, [None, spec.params_type()], TINY, diverged_nan=True)
+    assert rtf[0] > 0 and math.isnan(rtf[1])

@@ -36,7 +36,7 @@ from wmr_mujoco.robots import ROBOTS, get_spec
 from wmr_mujoco.robots.roller_wheels.trials import find_peer
 from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.sim.stepped_inputs import CONTROL_PERIOD
-from wmr_mujoco.sim.stepping import check_healthy
+from wmr_mujoco.sim.stepping import SimulationDivergedError, check_healthy
 from wmr_mujoco.validation import floor_family
 from wmr_mujoco.validation.scenarios import ScenarioKind
 
@@ -147,15 +147,42 @@ def wall_seconds(t: Timed, clock: Callable[[], float] = time.perf_counter) -> fl
 
 
 def real_time_factors(spec: RobotSpec, settings: Sequence[RobotParams | None],
-                      how: Rounds) -> list[float]:
-    """Real-time factor of each setting, timed in alternating rounds; median of rounds."""
-    prepared = [prepare_timed(spec, p, how.seconds) for p in settings]
+                      how: Rounds, clock: Callable[[], float] = time.perf_counter,
+                      diverged_nan: bool = False) -> list[float]:
+    """Real-time factor of each setting, timed in alternating rounds; median of rounds.
+
+    Args:
+        spec: the robot.
+        settings: its parameters per setting (None: the defaults).
+        how: the length of each timed run and the number of rounds.
+        clock: the timer (:func:`wall_seconds`).
+        diverged_nan: a setting whose settle or drive diverges is NaN and left out of the
+            later rounds (a candidate study); False: the divergence raises.
+
+    Raises:
+        SimulationDivergedError: a setting diverged and ``diverged_nan`` is False.
+    """
+    prepared: list[Timed | None] = []
+    for p in settings:
+        try:
+            prepared.append(prepare_timed(spec, p, how.seconds))
+        except SimulationDivergedError:
+            if not diverged_nan:
+                raise
+            prepared.append(None)
     walls: list[list[float]] = [[] for _ in settings]
     for _ in range(how.rounds):
         for k, t in enumerate(prepared):
-            walls[k].append(wall_seconds(t))
-    return [len(t.controls) * CONTROL_PERIOD / float(np.median(w))
-            for t, w in zip(prepared, walls, strict=True)]
+            if t is None:
+                continue
+            try:
+                walls[k].append(wall_seconds(t, clock))
+            except SimulationDivergedError:
+                if not diverged_nan:
+                    raise
+                prepared[k], walls[k] = None, []
+    return [len(t.controls) * CONTROL_PERIOD / float(np.median(w)) if t is not None and w
+            else float("nan") for t, w in zip(prepared, walls, strict=True)]
 
 
 def describe(params: Any) -> str:

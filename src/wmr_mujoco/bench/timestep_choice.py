@@ -5,13 +5,14 @@
 random-steps family drives (:func:`wmr_mujoco.bench.default_speed.drivable`), with the
 robot's families rather than single runs:
 
-1. **Cost**: the real-time factor of a bare one-thread ``mj_step`` loop (member 0 of the
-   random-steps family, :func:`~wmr_mujoco.bench.default_speed.real_time_factors`: every
-   setting timed in alternating rounds of one run, median of the rounds) at the default
+1. **Cost**: the real-time factor of a bare one-thread ``mj_step`` loop in CPU time
+   (member 0 of the random-steps family,
+   :func:`~wmr_mujoco.bench.default_speed.real_time_factors`: every setting timed in
+   alternating rounds of one run, median of the rounds; NaN: it diverged) at the default
    and at each longer step of :data:`STEPS`, and its cost ratio to the default.
 2. **Fidelity**: every scenario family of ``wmr validate ROBOT --seed S`` at that step,
    compared row by row with the defaults' at the same seed
-   (:func:`wmr_mujoco.bench.solver_fidelity.compare`): the targets the default passes and
+   (:func:`wmr_mujoco.bench.solver_fidelity.compare`): the targets the defaults meet and
    the longer step loses. A step is acceptable only if it loses none at any seed.
 
 A longer step scales the contact's time constant with it (``t_c/Δt`` kept: every robot's
@@ -51,10 +52,8 @@ from wmr_mujoco.bench.default_speed import (
     FULL,
     QUICK,
     Rounds,
-    Timed,
     drivable,
-    prepare_timed,
-    wall_seconds,
+    real_time_factors,
 )
 from wmr_mujoco.bench.solver_fidelity import (
     CACHE,
@@ -72,8 +71,6 @@ from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import DOCS_DIR
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.robots.spec import RobotSpec
-from wmr_mujoco.sim.stepped_inputs import CONTROL_PERIOD
-from wmr_mujoco.sim.stepping import SimulationDivergedError
 from wmr_mujoco.validation.jobs import check_jobs
 from wmr_mujoco.validation.pool import run_calls
 
@@ -201,38 +198,6 @@ def fidelity(spec: RobotSpec, params: RobotParams, seed: int, default: Figures,
     return Fidelity((), len(jobs_), len(jobs_))
 
 
-def real_time_factors(spec: RobotSpec, settings: Sequence[RobotParams | None], how: Rounds
-                      ) -> list[float]:
-    """Real-time factor (CPU time) of each setting, alternating rounds, median (NaN: diverged).
-
-    As :func:`wmr_mujoco.bench.default_speed.real_time_factors`, but in CPU time, and a
-    setting whose settle or drive diverges is reported as NaN and left out of the later
-    rounds.
-
-    Args:
-        spec: the robot.
-        settings: its parameters per setting (None: the defaults).
-        how: the length of each timed run and the number of rounds.
-    """
-    prepared: list[Timed | None] = []
-    for p in settings:
-        try:
-            prepared.append(prepare_timed(spec, p, how.seconds))
-        except SimulationDivergedError:
-            prepared.append(None)
-    walls: list[list[float]] = [[] for _ in settings]
-    for _ in range(how.rounds):
-        for k, t in enumerate(prepared):
-            if t is None:
-                continue
-            try:
-                walls[k].append(wall_seconds(t, time.process_time))
-            except SimulationDivergedError:
-                prepared[k], walls[k] = None, []
-    return [len(t.controls) * CONTROL_PERIOD / float(np.median(w)) if t is not None and w
-            else float("nan") for t, w in zip(prepared, walls, strict=True)]
-
-
 def study(spec: RobotSpec, seeds: Sequence[int], dampratios: Sequence[float], how: Rounds,
           jobs: int) -> list[dict[str, object]]:
     """One row per setting of ``spec``: the default first, then :func:`candidates`.
@@ -252,7 +217,8 @@ def study(spec: RobotSpec, seeds: Sequence[int], dampratios: Sequence[float], ho
     """
     assert spec.params_type is not None
     cands = candidates(spec, dampratios)
-    rtf = real_time_factors(spec, [None, *(c.params for c in cands)], how)
+    rtf = real_time_factors(spec, [None, *(c.params for c in cands)], how,
+                            clock=time.process_time, diverged_nan=True)
     own = spec.params_type()
     out: list[dict[str, object]] = [{"robot": spec.name, "timestep": own.sim.timestep,
                                      "dampratio": own.sim.floor_dampratio, "rtf": rtf[0],
