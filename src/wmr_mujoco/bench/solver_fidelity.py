@@ -152,11 +152,14 @@ def compare(default: Figures, setting: Figures) -> Verdict:
     """The setting's rows against the defaults' (see the module docstring)."""
     lost, missing = [], []
     worst, where = float("-inf"), ""
+    def label(key: tuple[str, str, str]) -> str:
+        return f"{key[0]} / {key[1]} ({key[2]})" if key[2] else f"{key[0]} / {key[1]}"
+
     for key, s in setting.items():  # a failed row of its own, e.g. a member that diverged
         if key not in default and s.passed is False:
-            lost.append(f"{key[0]} / {key[1]} ({key[2]})" if key[2] else f"{key[0]} / {key[1]}")
+            lost.append(label(key))
     for key, d in default.items():
-        name = f"{key[0]} / {key[1]} ({key[2]})" if key[2] else f"{key[0]} / {key[1]}"
+        name = label(key)
         s = setting.get(key)
         if s is None:
             missing.append(name)
