@@ -98,6 +98,7 @@ def test_the_table_names_the_cheapest_step_that_keeps_every_target():
             "(cost ratio 0.80).") in text
     assert ("- y: no longer step keeps every target the defaults meet: the default step is "
             "the cheapest.") in text
+    assert "| y | 5 ms | 1 | diverged | diverged | diverged on the timing drive |" in text
 
 
 def test_the_default_step_at_another_damping_ratio_is_no_cheaper_step():

@@ -248,8 +248,8 @@ def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
              "|---" * 6 + "|"]
     for r in rows:
         lines.append(f"| {r['robot']} | {1e3 * float(r['timestep']):g} ms "  # type: ignore[arg-type]
-                     f"| {float(r['dampratio']):.3g} | {float(r['rtf']):.0f}× "  # type: ignore[arg-type]
-                     f"| {float(r['ratio']):.2f} | {r['verdict']} |")  # type: ignore[arg-type]
+                     f"| {float(r['dampratio']):.3g} | {_cell(r['rtf'], '.0f', '×')} "
+                     f"| {_cell(r['ratio'], '.2f')} | {r['verdict']} |")
     lines.append("")
     for name in dict.fromkeys(str(r["robot"]) for r in rows):
         own = float(next(r["timestep"] for r in rows if r["robot"] == name))  # type: ignore[arg-type]
@@ -263,6 +263,12 @@ def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
                 f"(cost ratio {float(r['ratio']):.2f})"  # type: ignore[arg-type]
                 for r in longer) + "."))
     return "\n".join(lines)
+
+
+def _cell(value: object, fmt: str, unit: str = "") -> str:
+    """A figure of the table, or ``diverged`` for a NaN (the timing drive diverged)."""
+    x = float(value)  # type: ignore[arg-type]
+    return f"{x:{fmt}}{unit}" if np.isfinite(x) else "diverged"
 
 
 def main(argv: list[str] | None = None) -> None:
