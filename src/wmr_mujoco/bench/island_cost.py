@@ -27,7 +27,14 @@ from collections.abc import Sequence
 import mujoco
 import numpy as np
 
-from wmr_mujoco.bench.default_speed import FULL, QUICK, Rounds, Timed, drivable, prepare_timed
+from wmr_mujoco.bench.default_speed import (
+    FULL,
+    QUICK,
+    Rounds,
+    Timed,
+    chosen,
+    prepare_timed,
+)
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.models.paths import DOCS_DIR
 from wmr_mujoco.robots import get_spec
@@ -129,11 +136,7 @@ def main(argv: list[str] | None = None) -> None:
                         help=f"paste the table into {DOC.name} ({MARKER!r} markers)")
     parser.add_argument("robots", nargs="*", help="robots (default: every drivable robot)")
     args = parser.parse_args(argv)
-    robots = [get_spec(r).name for r in args.robots] or drivable()
-    for r in robots:
-        if r not in drivable():
-            parser.error(f"robot {r!r} is not driven by the random-steps family; valid: "
-                         f"{', '.join(drivable())}")
+    robots = chosen(parser, args.robots)
     how = QUICK if args.quick else FULL
     results = []
     for name in robots:

@@ -58,7 +58,7 @@ from wmr_mujoco.bench.default_speed import (
     FULL,
     QUICK,
     Rounds,
-    drivable,
+    chosen,
     real_time_factors,
 )
 from wmr_mujoco.bench.solver_fidelity import (
@@ -296,11 +296,7 @@ def main(argv: list[str] | None = None) -> None:
     seeds = args.seeds or ([0] if args.quick else [0, 1])
     if any(s < 0 for s in seeds):
         parser.error(f"--seeds {seeds!r}: seeds are integers >= 0")
-    robots = [get_spec(r).name for r in args.robots] or drivable()  # unknown: fails here
-    for r in robots:
-        if r not in drivable():
-            parser.error(f"robot {r!r} is not driven by the random-steps family; valid: "
-                         f"{', '.join(drivable())}")
+    robots = chosen(parser, args.robots)
     how = QUICK if args.quick else FULL
     rows = []
     for name in robots:
