@@ -116,3 +116,10 @@ def test_a_step_whose_kept_stiffness_needs_a_damping_ratio_under_the_least_is_re
     """omni3 at 12.5 ms: t_c' = 3 Δt = 37.5 ms, ζ' = 0.8 · 3.75/37.5 = 0.08 < 0.1."""
     with pytest.raises(ValueError, match="floor_dampratio"):
         tc.at_step_same_stiffness(get_spec("omni3"), 0.0125)
+
+
+def test_a_robot_without_floor_pairs_is_refused_not_skipped(monkeypatch):
+    monkeypatch.setattr(tc, "load", lambda spec, params: type(
+        "M", (), {"pair_solref": np.zeros((0, 2))})())
+    with pytest.raises(ValueError, match="time constants are"):
+        tc.stiffness_candidates(get_spec("omni3"))

@@ -33,7 +33,9 @@ class Candidate:
     Attributes:
         timestep: the step, s.
         dampratio: the floor pairs' ζ.
-        params: the robot's defaults with these (``t_c/Δt`` kept).
+        params: the robot's defaults with these (``t_c/Δt`` kept, or with
+            ``stiffness_kept`` the contact's own ``t_c``).
+        stiffness_kept: made by :func:`at_step_same_stiffness`.
     """
 
     timestep: float
@@ -119,8 +121,13 @@ def at_step_same_stiffness(spec: RobotSpec, timestep: float) -> Candidate:
 
 
 def stiffness_candidates(spec: RobotSpec) -> list[Candidate]:
-    """:func:`at_step_same_stiffness` at every longer step of :data:`STEPS` (ζ' ≥ 0.1)."""
+    """:func:`at_step_same_stiffness` at every longer step of :data:`STEPS` (ζ' ≥ 0.1).
+
+    Raises:
+        ValueError: the robot has no floor pairs (:func:`pair_timeconst`).
+    """
     assert spec.params_type is not None
+    pair_timeconst(spec, spec.params_type())  # no pairs: refused here, not skipped below
     own = spec.params_type().sim.timestep
     out = []
     for dt in STEPS:
