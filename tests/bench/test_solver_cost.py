@@ -32,11 +32,16 @@ def test_a_setting_as_parameters_builds_the_model_the_option_route_times(robot, 
         assert getattr(built.opt, name) == getattr(timed.opt, name), name
 
 
-def test_the_reduced_robot_expresses_no_setting_as_parameters():
-    """omni3_reduced inherits the fields but its builder ignores them (UNUSED): no
-    validation of a setting its model would not carry."""
+def test_the_reduced_robot_expresses_only_the_solver_as_parameters():
+    """omni3_reduced inherits the fields but its builder writes only ``solver`` (the rest
+    are UNUSED): no validation of a setting its model would not carry, and each solver
+    setting's parameters build a model that runs that solver."""
     spec = get_spec("omni3_reduced")
-    assert all(s.robot_params(spec) is None for s in SETTINGS)
+    expressed = {s.label: s.robot_params(spec) for s in SETTINGS
+                 if s.robot_params(spec) is not None}
+    assert set(expressed) == {"Newton", "CG", "PGS"}
+    for label, params in expressed.items():
+        assert load(spec, params).opt.solver == getattr(mujoco.mjtSolver, f"mjSOL_{label.upper()}")
 
 
 def test_apply_adds_a_disable_flag_to_the_models_own():
