@@ -179,10 +179,10 @@ class PathArrays(TaskArrays):
         self._after[i] = base + size - 3
 
     def _walk(self, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The flat index of each world's segment walked to from ``here`` (the scalar
-        ``_walk``: module docstring), and its window values (rows :data:`RX` …, worlds).
+        """Each world's segment walked to from ``here`` (the scalar ``_walk``).
 
-        ``p``: the worlds' ``(x, y)``, (2, n). Window first (rows: the window's segments,
+        Returns its flat index and its window values (rows :data:`RX` …, worlds); module
+        docstring. ``p``: the worlds' ``(x, y)``, (2, n). Window first (rows: the window's segments,
         columns: the worlds), so that a world's ``x`` and ``y`` broadcast along rows.
         """
         cols = WINDOW + self.here
