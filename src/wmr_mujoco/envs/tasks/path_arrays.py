@@ -15,10 +15,11 @@ quantity stacked so that one call computes both:
   by the scalar code. The window holds, per candidate segment, ``p − a − t d``, ``t`` and
   the segment's ``s, ψ, Δs, Δψ``, so that one gather picks every value of the segment
   walked to;
-* the look-ahead samples ``k = min(bisect_right(s, q) − 1, last segment)``: guessed from
-  the mean sample spacing, checked and completed in a window of 4 samples around the guess
-  (the samples are sorted: ``k`` is the window's start plus the number of its samples
-  ``≤ q``, less one); a query outside its window is searched by
+* the look-ahead samples ``k = min(bisect_right(s, q) − 1, last segment)``: guessed as
+  the walk's segment plus the look-ahead distance over the mean sample spacing (exact for
+  evenly spaced samples, up to one sample), checked and completed in a window of 4
+  samples around the guess (the samples are sorted: ``k`` is the window's start plus the
+  number of its samples ``≤ q``, less one); a query outside its window is searched by
   :func:`bisect.bisect_right`. The search's copy of the samples holds ``−∞`` before them
   and ``+∞`` from the last one on: the windows need no clipping, and ``k`` never passes
   the last segment.
@@ -76,8 +77,8 @@ class PathArrays(TaskArrays):
     """:class:`~wmr_mujoco.envs.tasks.follow.FollowPath` over n worlds (module docstring).
 
     Per world: ``here`` (the flat index of its last segment), ``s`` (its last ``s*``),
-    ``base`` (the flat index of its sample 0), ``send`` (its path's last ``s``) and
-    ``inv_spacing`` (samples per m: the look-ahead's guess), the last two as columns.
+    ``base`` (the flat index of its sample 0) and ``send`` (its path's last ``s``, a
+    column).
     """
 
     def __init__(self, tasks: Sequence[Task]) -> None:
@@ -90,12 +91,11 @@ class PathArrays(TaskArrays):
         self.s = np.zeros(n)
         self.base = np.zeros(n, np.intp)
         self.send = np.zeros((n, 1))
-        self.inv_spacing = np.zeros((n, 1))
         self._rows = np.arange(n)
-        #: Per world the look-ahead window's start less one for a guess of sample 0, as a
-        #: float (``base − 2``), and its largest (the window then starts at the last
-        #: segment, before the ``+∞``).
-        self._offset = np.zeros((n, 1))
+        #: Per world and look-ahead distance ``a``: the look-ahead window's start less one
+        #: from the walk's segment (``⌊a / mean spacing⌋ − 2``); per world the largest
+        #: (the window then starts at the last segment, before the ``+∞``).
+        self.skip = np.zeros((n, len(self.ahead)), np.intp)
         self._after = np.zeros((n, 1), np.intp)
         rows = BACK + AHEAD + 1
         self._win = win = np.zeros((W0 + 9, rows, n))
@@ -135,7 +135,6 @@ class PathArrays(TaskArrays):
             shift = self._rows * (width - old)
             for a in (self.here, self.base):
                 a += shift
-            self._offset += shift[:, None]
             self._after += shift[:, None]
         self.width = width
         self.walk = walk.reshape(n * width, 9)
@@ -174,8 +173,8 @@ class PathArrays(TaskArrays):
         self.s[i] = proj.s
         self.base[i] = base
         self.send[i] = s[-1]
-        self.inv_spacing[i] = (size - 1) / s[-1] if s[-1] > 0 else 0.0
-        self._offset[i] = base - 2
+        self.skip[i] = (self.ahead * ((size - 1) / s[-1] if s[-1] > 0 else 0.0)
+                        ).astype(np.intp) - 2
         self._after[i] = base + size - 3
 
     def _walk(self, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -223,11 +222,13 @@ class PathArrays(TaskArrays):
                 at[:W0, w] = (x - ax - tw * dx, y - ay - tw * dy, tw)
         return here, at
 
-    def _search(self, q: np.ndarray) -> np.ndarray:
-        """Flat indices of ``min(bisect_right(s, q) − 1, last segment)``, q (n, …) ≥ 0."""
-        j = q * self.inv_spacing
-        j += self._offset
-        j = np.minimum(j.astype(np.intp), self._after)  # the window: j + 1 … j + LOOK
+    def _search(self, q: np.ndarray, here: np.ndarray) -> np.ndarray:
+        """Flat indices of ``min(bisect_right(s, q) − 1, last segment)``, q (n, …) ≥ 0.
+
+        ``here``: flat indices of a sample at or before each world's queries.
+        """
+        j = self.skip + here[:, None]
+        j = np.minimum(j, self._after, out=j)  # the window: j + 1 … j + LOOK
         count = (self._looks[j] <= q[..., None]).view(np.uint8) @ ONES
         k = j + count
         counts = count.tobytes()
@@ -262,7 +263,7 @@ class PathArrays(TaskArrays):
         # the look-ahead points (FollowPath._observe), (x, y) stacked: (2, n, 5)
         q = sp[:, None] + self.ahead
         np.minimum(q, self.send, out=q)
-        np.take(self.samples, self._search(q), axis=0, out=self._looked, mode="clip")
+        np.take(self.samples, self._search(q, here), axis=0, out=self._looked, mode="clip")
         g = self._fields
         np.copyto(g, self._looked.transpose(2, 0, 1))
         tk = q - g[QS]
