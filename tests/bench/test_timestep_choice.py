@@ -161,3 +161,21 @@ def test_keep_stiffness_with_damping_ratios_is_refused(capsys):
     with pytest.raises(SystemExit):
         timestep_choice.main(["omni3", "--keep-stiffness", "--dampratios", "0.5"])
     assert "leave --dampratios out" in capsys.readouterr().err
+
+
+def test_a_robots_rows_are_replaced_and_the_others_kept():
+    """``--write`` with robots named: their rows and verdict lines come from the new run,
+    every other robot's stay as the table had them, in registry order, the new header."""
+    old = "\n".join([
+        "old header", "", "| robot | step |", "|---|---|",
+        "| disc | 2.5 ms | old |", "| omni3 | 1.25 ms | old |",
+        "| omni3_reduced | 1.25 ms | old |", "| omni3_reduced | 2 ms | old |", "",
+        "- disc: old.", "- omni3: old.", "- omni3_reduced: old."])
+    new = "\n".join([
+        "new header", "", "| robot | step |", "|---|---|",
+        "| omni3_reduced | 1.25 ms | new |", "", "- omni3_reduced: new."])
+    got = timestep_choice.merged(old, new, ["omni3_reduced"]).splitlines()
+    assert got == ["new header", "", "| robot | step |", "|---|---|",
+                   "| disc | 2.5 ms | old |", "| omni3 | 1.25 ms | old |",
+                   "| omni3_reduced | 1.25 ms | new |", "",
+                   "- disc: old.", "- omni3: old.", "- omni3_reduced: new."]

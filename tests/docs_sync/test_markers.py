@@ -3,6 +3,7 @@
 import pytest
 
 from wmr_mujoco.docs_sync.markers import (
+    between,
     fixed,
     has_markers,
     markers,
@@ -19,6 +20,9 @@ def test_replace_between_keeps_the_rest(tmp_path):
     replace_between(path, "table", "\nnew | row\n")
     assert path.read_text() == f"intro\n{begin}\nnew | row\n{end}\noutro\n"
     assert has_markers(path, "table") and not has_markers(path, "other")
+    assert between(path, "table") == "new | row"
+    with pytest.raises(ValueError, match="must hold '<!-- other: begin -->' once"):
+        between(path, "other")
 
 
 @pytest.mark.parametrize("text", ["no markers", "<!-- t: end -->\n<!-- t: begin -->",

@@ -59,6 +59,7 @@ from wmr_mujoco.bench.default_speed import (
     QUICK,
     Rounds,
     chosen,
+    drivable,
     real_time_factors,
 )
 from wmr_mujoco.bench.solver_fidelity import (
@@ -81,7 +82,7 @@ from wmr_mujoco.bench.timestep_candidates import (  # noqa: F401 (re-exported)
     pair_timeconst,
     stiffness_candidates,
 )
-from wmr_mujoco.docs_sync.markers import replace_between
+from wmr_mujoco.docs_sync.markers import between, replace_between
 from wmr_mujoco.lookup import validation_jobs
 from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.models.paths import DOCS_DIR
@@ -265,6 +266,38 @@ def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
     return "\n".join(lines)
 
 
+def merged(old: str, new: str, robots: Sequence[str]) -> str:
+    """``old`` table with the rows and verdict lines of ``robots`` taken from ``new``.
+
+    The header is ``new``'s; rows and verdict lines come in registry order
+    (:func:`~wmr_mujoco.bench.default_speed.drivable`), each robot's from ``new`` if it is
+    one of ``robots``, else from ``old``. A robot ``old`` does not hold and ``new`` does
+    not give is left out.
+    """
+    def parts(text: str) -> tuple[list[str], dict[str, list[str]], dict[str, list[str]]]:
+        head: list[str] = []
+        rows: dict[str, list[str]] = {}
+        verdicts: dict[str, list[str]] = {}
+        for line in text.strip().splitlines():
+            name = line.split("|")[1].strip() if line.startswith("| ") else ""
+            if name and name != "robot":
+                rows.setdefault(name, []).append(line)
+            elif line.startswith("- ") and ":" in line:
+                verdicts.setdefault(line[2:].split(":", 1)[0], []).append(line)
+            elif not rows:
+                head.append(line)
+        return head, rows, verdicts
+
+    _, old_rows, old_verdicts = parts(old)
+    head, new_rows, new_verdicts = parts(new)
+    order = [r for r in drivable() if r in old_rows or r in new_rows]
+    pick = {r: (new_rows, new_verdicts) if r in robots else (old_rows, old_verdicts)
+            for r in order}
+    body = [line for r in order for line in pick[r][0].get(r, [])]
+    tail = [line for r in order for line in pick[r][1].get(r, [])]
+    return "\n".join([*head, *body, "", *tail])
+
+
 def _cell(value: object, fmt: str, unit: str = "") -> str:
     """A figure of the table, or ``diverged`` for a NaN (the timing drive diverged)."""
     x = float(value)  # type: ignore[arg-type]
@@ -305,7 +338,10 @@ def main(argv: list[str] | None = None) -> None:
     text = table(rows, seeds, how, args.quick, stiffness_kept=args.keep_stiffness)
     print(text)
     if args.write:
-        replace_between(DOC, STIFFNESS_MARKER if args.keep_stiffness else MARKER, text)
+        marker = STIFFNESS_MARKER if args.keep_stiffness else MARKER
+        if args.robots:  # the other robots' rows stay as the table has them
+            text = merged(between(DOC, marker), text, robots)
+        replace_between(DOC, marker, text)
         print(f"wrote {DOC}")
 
 

@@ -27,8 +27,8 @@ def has_markers(path: Path, key: str) -> bool:
     return all(m in text for m in markers(key))
 
 
-def replace_between(path: Path, key: str, body: str) -> None:
-    """Replace the text between the markers of ``key`` in ``path`` with ``body`` (atomic).
+def _split(path: Path, key: str) -> tuple[str, str, str]:
+    """``(head, body, tail)`` of ``path`` around the markers of ``key`` (markers left out).
 
     Raises:
         FileNotFoundError: ``path`` does not exist.
@@ -40,8 +40,31 @@ def replace_between(path: Path, key: str, body: str) -> None:
     if text.count(begin) != 1 or text.count(end) != 1 or text.index(begin) > text.index(end):
         raise ValueError(f"{path} must hold {begin!r} once, then {end!r} once")
     head, rest = text.split(begin, 1)
-    _, tail = rest.split(end, 1)
+    body, tail = rest.split(end, 1)
+    return head, body, tail
+
+
+def replace_between(path: Path, key: str, body: str) -> None:
+    """Replace the text between the markers of ``key`` in ``path`` with ``body`` (atomic).
+
+    Raises:
+        FileNotFoundError: ``path`` does not exist.
+        ValueError: the markers are missing, repeated or out of order; the message names
+            them and the file.
+    """
+    begin, end = markers(key)
+    head, _, tail = _split(path, key)
     write_text_atomic(Path(path), f"{head}{begin}\n{body.strip()}\n{end}{tail}")
+
+
+def between(path: Path, key: str) -> str:
+    """The text between the markers of ``key`` in ``path``, stripped (as pasted).
+
+    Raises:
+        FileNotFoundError: ``path`` does not exist.
+        ValueError: the markers are missing, repeated or out of order.
+    """
+    return _split(path, key)[1].strip()
 
 
 def study_parser(description: str | None) -> argparse.ArgumentParser:

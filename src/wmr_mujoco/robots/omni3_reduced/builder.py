@@ -74,7 +74,8 @@ def build(params: OmniParams, row_fraction: float = CAPSULE_ROW_FRACTION) -> mjc
     The platform, wheel poses, hinges (armature included), actuators and sensors are
     omni3's (:func:`wmr_mujoco.robots.omni3.builder.build`); each wheel's hub and
     rollers are one body (:func:`wheel_inertia`) whose collider is a capsule of radius r
-    along the axle, touching the floor only through :func:`floor_pairs`.
+    along the axle, touching the floor only through :func:`floor_pairs`. The solver is
+    ``params.solver`` (``OmniReducedParams``: CG).
 
     Args:
         params: omni3's parameters.
@@ -83,6 +84,8 @@ def build(params: OmniParams, row_fraction: float = CAPSULE_ROW_FRACTION) -> mjc
     p = params
     r, L = p.wheel_radius, p.wheel_distance
     root = common.new_root("omni3_reduced", p.sim)
+    if p.solver != "Newton":  # MuJoCo's default: the file says nothing
+        root.option.solver = p.solver
     platform = root.worldbody.add("body", name="platform", pos=(0, 0, r))
     platform.add("freejoint", name="platform")
     m, R, t = p.platform_mass, p.platform_radius, full.PLATFORM_THICKNESS

@@ -21,8 +21,14 @@ class OmniReducedParams(OmniParams):
 
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "roller_shape", "roller_armature",
                                          "roller_damping", "sim.floor_impedance",
-                                         "solver", "jacobian", "cone",
-                                         *PAIRS_SET_IMPRATIO)
+                                         "jacobian", "cone", *PAIRS_SET_IMPRATIO)
+    #: MuJoCo's CG solver: the cheapest that keeps every target (issue 24 § 4). Nine
+    #: degrees of freedom and 18 contact rows sliding sideways (the capsules) take
+    #: Newton several iterations and line searches a step, each with its Hessian; CG's
+    #: iterations are cheaper (`python -m wmr_mujoco.bench.solver_cost --physics`:
+    #: the cost ratio and every target kept at the seeds validated, the `Newton` row the
+    #: previous default's). :meth:`from_full` copies omni3's solver, as every field.
+    solver: str = "CG"
     #: The cheapest step that meets every target (issue 24 § 4, ``docs/floor-contact.md``
     #: § 4): 1.25 ms, ``contact_timeconst`` 2 Δt (MuJoCo's floor; the collision class's
     #: contact, the tests' stiff one), the capsule pairs at ``t_c = 4 Δt`` = 5 ms
