@@ -132,11 +132,13 @@ def test_effort_and_each_are_the_scalar_sums_and_functions():
     assert each(math.remainder, x, math.tau).tolist() == [math.remainder(v, math.tau) for v in x]
 
 
-@pytest.mark.parametrize("spacing", [1 / 3, 1.0, 3.0])
-def test_the_look_ahead_search_is_bisect_whatever_its_guess(spacing):
-    # The search guesses from the path's mean sample spacing and counts the samples <= q
-    # in a window of 4 around the guess; a query outside it goes to bisect. A wrong guess
-    # (the spacing scaled: most queries outside their window) must change nothing.
+@pytest.mark.parametrize("error", [-5, 0, 3])
+def test_the_look_ahead_search_is_bisect_whatever_its_guess(error):
+    # The search guesses each query's sample from a sample at or before it (the walk's
+    # segment) plus the look-ahead distance over the mean spacing, and counts the samples
+    # <= q in a window of 4 around the guess; a query outside it goes to bisect. A wrong
+    # guess (off by `error` samples: most queries outside their window) must change
+    # nothing, nor may a query on a sample or at the path's end.
     import bisect
 
     tasks, starts = _tasks("FollowPath", "disc", 3, 11)
@@ -145,13 +147,18 @@ def test_the_look_ahead_search_is_bisect_whatever_its_guess(spacing):
         state = Fake(tuple(start.tolist()), (0.0, 0.0, 0.0), {})
         task.observe(state)
         arrays.load(i, state)
-    arrays.inv_spacing /= spacing
+    arrays.skip += error
     rng = np.random.default_rng(12)
     i = np.array([rng.integers(0, len(t._s) - 1) for t in tasks])
     s_i = np.array([t._s[k] for t, k in zip(tasks, i, strict=True)])
-    q = np.minimum(s_i[:, None] + rng.uniform(0, 3, (3, 5)), arrays.send[:, None])
-    q[0, 0] = 0.0  # the path's first sample
-    k = arrays._search(q) - arrays.base[:, None]
+    q = np.minimum(s_i[:, None] + rng.uniform(0, 3, (3, 5)), arrays.send)
+    q[0, 0] = s_i[0]  # on the sample guessed from
+    # exactly on samples (bisect_right counts a tie), on the last sample (k stops at the
+    # last segment), between the last two
+    last = len(tasks[1]._s) - 1
+    q[1, :3] = [tasks[1]._s[min(j, last)] for j in (i[1], i[1] + 7, i[1] + 30)]
+    q[2, 3:] = [tasks[2]._s[-1], 0.5 * (tasks[2]._s[-2] + tasks[2]._s[-1])]
+    k = arrays._search(q, arrays.base + i) - arrays.base[:, None]
     for w, task in enumerate(tasks):
         assert k[w].tolist() == [min(bisect.bisect_right(task._s, v) - 1, len(task._s) - 2)
                                  for v in q[w].tolist()]

@@ -10,7 +10,8 @@ every world are computed once per step on arrays of shape ``(n, …)``:
 * pose: the ``base`` site's ``x, y`` and ``ψ = ψ₋ + remainder(atan2(R₁₀, R₀₀) − ψ₋, 2π)``
   (unwrapped next to the last heading ``ψ₋``, as :meth:`Stepper.read`);
 * twist ``(u, v, r)`` from ``mj_objectVelocity`` (local frame), one C call per world into
-  a row of one ``(n, 6)`` buffer;
+  a row of one ``(n, 6)`` buffer (made right after the world's physics where that is
+  inlined, while its data is in the cache);
 * wheel rates ``q̇[wheel rows]`` and the command map's extras, and ``time`` since the reset.
 
 The transcendental functions run through :mod:`math` over the worlds' floats (a C loop:
@@ -132,15 +133,21 @@ class Worlds:
         self.steppers = [e.stepper for e in self.episodes]
         self._advance = [s.advance for s in self.steppers]
         #: The usual physics inlined (a command map ``ctrl = W u``, a split step): each
-        #: world's ``(W.dot, model, data, ctrl)``; None: each stepper's own ``advance``.
+        #: world's ``(W.dot, model, data, ctrl, site, twist row)``; None: each stepper's
+        #: own ``advance``.
         st0 = first.stepper
         self._inline = None
         self._servo = _servo(first)
         self._cmap = first.robot.spec.command
+        self._vel = np.zeros((n, 6))
         w = st0._w if self._servo is None else self._servo[0]
         if w is not None and st0.split and st0.nstep > 1:
-            self._inline = [(w.dot, s.model, s.data, s._ctrl) for s in self.steppers]
+            self._inline = [(w.dot, s.model, s.data, s._ctrl, s.site, self._vel[i])
+                            for i, s in enumerate(self.steppers)]
             self._nstep = st0.nstep
+        #: Whether ``_vel`` holds the twists of the last inlined physics (read there, while
+        #: each world's data is in the cache).
+        self._twists = False
         self._c, self._h = np.array(first._c), np.array(first._h)
         st = self.steppers
         self._datas = [s.data for s in st]
@@ -153,7 +160,6 @@ class Worlds:
         self._warnings = [s._warnings for s in st]
         rows = first.stepper._rows  # a slice or indices
         self._rows = rows if isinstance(rows, slice) else np.asarray(rows, np.intp)
-        self._vel = np.zeros((n, 6))
         self._objvel = [(s.model, s.data, _SITE, s.site, self._vel[i])
                         for i, s in enumerate(st)]
         self._extras = first.stepper.extras
@@ -187,12 +193,15 @@ class Worlds:
             commands = u
         if active is None and self._inline is not None:  # Stepper.advance, inlined
             step1, step, step2 = mujoco.mj_step1, mujoco.mj_step, mujoco.mj_step2
-            n1 = self._nstep - 1
-            for (dot, model, data, ctrl), u in zip(self._inline, commands, strict=True):
+            objvel, n1 = mujoco.mj_objectVelocity, self._nstep - 1
+            for (dot, model, data, ctrl, site, vel), u in zip(self._inline, commands,
+                                                              strict=True):
                 dot(u, ctrl)  # ctrl = W u, as the stepper and the command map write it
                 step2(model, data)
                 step(model, data, n1)
                 step1(model, data)
+                objvel(model, data, _SITE, site, vel, 1)  # read's twist (local frame)
+            self._twists = True
         elif active is None:
             for advance, u in zip(self._advance, commands, strict=True):
                 advance(u)
@@ -210,9 +219,12 @@ class Worlds:
             for i, w in enumerate(self._warnings):
                 if w.any():
                     self.steppers[i].reader.check()
-        objvel = mujoco.mj_objectVelocity
-        for args in self._objvel:
-            objvel(*args, 1)
+        if self._twists:  # read with the physics
+            self._twists = False
+        else:
+            objvel = mujoco.mj_objectVelocity
+            for args in self._objvel:
+                objvel(*args, 1)
         pos = np.array(self._xpos)
         mat = np.array(self._xmat)
         # ψ = ψ₋ + remainder(atan2(R₁₀, R₀₀) − ψ₋, 2π) on floats, in one pass (a C loop)
