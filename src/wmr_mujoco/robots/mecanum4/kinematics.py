@@ -28,7 +28,7 @@ import numpy as np
 from wmr_mujoco.analytic.planar import twist_step, twist_steps, wrap_angle
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams, params_or_default
-from wmr_mujoco.robots.mecanum4 import collider, traction
+from wmr_mujoco.robots.mecanum4 import collider, step_batch, traction
 from wmr_mujoco.robots.mecanum4.builder import WHEEL_NAMES
 from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
 from wmr_mujoco.robots.mecanum4.params import MecanumParams
@@ -229,9 +229,11 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
     if not np.array_equal(scenario.input_at(scenario.duration), twist):
         raise ValueError(f"{scenario.key}: a step command must be held over the run "
                          f"(u(0) = {twist}, u(end) = {scenario.input_at(scenario.duration)})")
-    platform, command = traction.step_platform(model, p, twist)
-    return MecanumKinematics(p, step_response(platform, command, scenario.duration),
-                             scenario.settle)
+    response = step_batch.take(twist, scenario.duration, params)  # prepared with others
+    if response is None:
+        platform, command = traction.step_platform(model, p, twist)
+        response = step_response(platform, command, scenario.duration)
+    return MecanumKinematics(p, response, scenario.settle)
 
 
 def _reported(scenario: Scenario, trace: Trace, adapter: MecanumKinematics,
