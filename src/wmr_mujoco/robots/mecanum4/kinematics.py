@@ -21,6 +21,7 @@ import functools
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -58,6 +59,9 @@ class MecanumKinematics:
         step: for a step command, the step model's response from rest; None for a ramp.
         start_time: the simulation time at which the command starts, s (the settle).
     """
+
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
 
     params: MecanumParams
     step: StepResponse | None = None

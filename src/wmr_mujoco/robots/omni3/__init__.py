@@ -16,6 +16,7 @@ import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -60,6 +61,9 @@ class OmniKinematics:
     With ``world_frame`` the inputs are world rates ``(Ẋ, Ẏ, ψ̇)``, turned into a body
     twist with the analytic heading (an open-loop schedule, known in advance).
     """
+
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
 
     params: OmniParams
     world_frame: bool = False
