@@ -6,24 +6,20 @@ import numpy as np
 import pytest
 
 from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
-from wmr_mujoco.robots.roller_wheels.roller_stick_slip import (
-    BoxLcp,
-    RollerPlatform,
-    step_response,
-    step_responses,
-)
+from wmr_mujoco.robots.roller_wheels import roller_stick_slip as rss
 from wmr_mujoco.robots.roller_wheels.stick_slip_batch import march_many
 from wmr_mujoco.robots.roller_wheels.stick_slip_steps import march
 
+BoxLcp, step_response, step_responses = rss.BoxLcp, rss.step_response, rss.step_responses
+#: A mecanum platform (test_stick_slip_steps' numbers): mass, inertias, servo, contact.
 LAY = ok.mecanum_layout(0.05, 0.15, 0.12)
 H = ok.wheel_jacobian(LAY)
+NUMBERS = {"mass": 4.0, "yaw_inertia": 0.08, "wheel_inertia": 0.004, "servo_gain": 2.0,
+           "torque_limit": 3.0, "friction": 0.8, "com_height": 0.05}
 
 
 def platform(layout=LAY, **kw):
-    args = {"layout": layout, "mass": 4.0, "yaw_inertia": 0.08, "wheel_inertia": 0.004,
-            "servo_gain": 2.0, "torque_limit": 3.0, "friction": 0.8, "com_height": 0.05}
-    args.update(kw)
-    return RollerPlatform(**args)
+    return rss.RollerPlatform(layout, **{**NUMBERS, **kw})
 
 
 # The cases of test_stick_slip_steps (slip along x: every contact at its bound; a
