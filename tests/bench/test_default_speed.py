@@ -61,3 +61,14 @@ def test_a_diverging_setting_raises_or_is_nan_when_asked(monkeypatch):
         ds.real_time_factors(spec, [None, spec.params_type()], TINY)
     rtf = ds.real_time_factors(spec, [None, spec.params_type()], TINY, diverged_nan=True)
     assert rtf[0] > 0 and math.isnan(rtf[1])
+
+
+def test_chosen_refuses_a_robot_the_family_does_not_drive(capsys):
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="x")
+    assert ds.chosen(parser, []) == ds.drivable()
+    assert ds.chosen(parser, ["omni3"]) == ["omni3"]
+    with pytest.raises(SystemExit):
+        ds.chosen(parser, ["whipple"])
+    assert "'whipple' is not driven by the random-steps family" in capsys.readouterr().err

@@ -3,63 +3,12 @@
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 
 import pytest
 
 from wmr_mujoco.bench import timestep_choice
-from wmr_mujoco.models.loading import load
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.validation.targets import Row
-
-
-def test_the_steps_are_those_that_divide_every_control_period():
-    """1, 1.25, 2, 2.5 and 5 ms divide 20, 50 and 100 ms; 1.5 ms (20/1.5) and 4 ms (50/4)
-    do not. Checked by exact rational arithmetic, independently of the module's rule."""
-    in_ms = [Fraction(s).limit_denominator(100000) * 1000 for s in timestep_choice.STEPS]
-    assert in_ms == [1, Fraction(5, 4), 2, Fraction(5, 2), 5]
-    for period_ms in (20, 50, 100):
-        assert all((period_ms / s).denominator == 1 for s in in_ms)
-
-
-@pytest.mark.parametrize("robot", ["omni3", "diffdrive"])
-def test_a_longer_step_keeps_the_contact_time_constant_in_steps(robot):
-    """MuJoCo as the oracle: the compiled model's floor pairs at the longest step (5 ms)
-    have the same ``t_c/Δt`` as at the default step (omni3 sets ``contact_timeconst``
-    itself, diffdrive's pairs take it from the step), and the model runs at the new step."""
-    spec = get_spec(robot)
-    default = load(spec, spec.params_type())
-    dt = timestep_choice.STEPS[-1]
-    assert dt > default.opt.timestep
-    longer = load(spec, timestep_choice.at_step(spec, dt).params)
-    assert longer.opt.timestep == dt
-    assert default.npair > 0 and longer.npair == default.npair
-    steps = default.pair_solref[:, 0] / default.opt.timestep
-    assert longer.pair_solref[:, 0] / dt == pytest.approx(steps, rel=1e-12)
-    # ζ kept unless asked for
-    assert longer.pair_solref[:, 1] == pytest.approx(default.pair_solref[:, 1])
-    half = load(spec, timestep_choice.at_step(spec, dt, 0.5).params)
-    assert half.pair_solref[:, 1] == pytest.approx(0.5)
-
-
-def test_candidates_are_the_default_step_at_other_damping_ratios_then_longer_steps():
-    spec = get_spec("omni3")  # default 1.25 ms
-    own = spec.params_type().sim.floor_dampratio
-    assert own not in (0.5, 1.0)
-    cands = timestep_choice.candidates(spec, (0.5, 1.0, 0.5, own))
-    assert [(c.timestep, c.dampratio) for c in cands] == [(0.00125, 0.5), (0.00125, 1.0)] + [
-        (dt, z) for dt in (0.002, 0.0025, 0.005) for z in (own, 0.5, 1.0)]
-    assert [(c.timestep, c.dampratio) for c in timestep_choice.candidates(spec)] == [
-        (dt, own) for dt in (0.002, 0.0025, 0.005)]
-
-
-def test_a_robot_without_parameters_is_refused_by_name():
-    spec = get_spec("omni3")
-    bare = type(spec).__new__(type(spec))
-    object.__setattr__(bare, "name", "nameless")
-    object.__setattr__(bare, "params_type", None)
-    with pytest.raises(ValueError, match="'nameless' has no parameters"):
-        timestep_choice.at_step(bare, 0.002)
 
 
 def _row(scenario, value, passed):
@@ -149,6 +98,7 @@ def test_the_table_names_the_cheapest_step_that_keeps_every_target():
             "(cost ratio 0.80).") in text
     assert ("- y: no longer step keeps every target the defaults meet: the default step is "
             "the cheapest.") in text
+    assert "| y | 5 ms | 1 | diverged | diverged | diverged on the timing drive |" in text
 
 
 def test_the_default_step_at_another_damping_ratio_is_no_cheaper_step():
@@ -181,3 +131,33 @@ def test_a_robot_the_family_does_not_drive_is_refused_by_name(capsys):
 def test_an_unknown_robot_is_refused_with_the_valid_names():
     with pytest.raises(ValueError, match="nosuchbot"):
         timestep_choice.main(["--quick", "nosuchbot"])
+
+
+def test_keep_stiffness_studies_those_candidates_and_stops_the_defaults_with_them(
+        monkeypatch):
+    """``stiffness_kept``: the candidates are ``stiffness_candidates``; once every candidate
+    has lost a target, the defaults are not validated at the later seeds either."""
+    spec = get_spec("omni3")
+    monkeypatch.setattr(timestep_choice, "real_time_factors",
+                        lambda s, settings, how, **kw: [50.0] * len(settings))
+    seeds_run = []
+    monkeypatch.setattr(timestep_choice, "figures",
+                        lambda s, p, seed, jobs, cache: seeds_run.append(seed) or {})
+    lost = timestep_choice.Fidelity(("random steps / run",), 1, 9)
+    monkeypatch.setattr(timestep_choice, "fidelity", lambda *a: lost)
+    rows = timestep_choice.study(spec, [0, 1, 2], (), timestep_choice.QUICK, 1,
+                                 stiffness_kept=True)
+    expected = timestep_choice.stiffness_candidates(spec)
+    assert [(r["timestep"], r["dampratio"]) for r in rows[1:]] == [
+        (c.timestep, c.dampratio) for c in expected]
+    assert all(r["stiffness_kept"] and not r["acceptable"] for r in rows[1:])
+    assert seeds_run == [0]
+    text = timestep_choice.table(rows, [0], timestep_choice.QUICK, quick=False,
+                                 stiffness_kept=True)
+    assert "stiffness kept" in text and "| omni3 | 2.5 ms | 0.4 |" in text
+
+
+def test_keep_stiffness_with_damping_ratios_is_refused(capsys):
+    with pytest.raises(SystemExit):
+        timestep_choice.main(["omni3", "--keep-stiffness", "--dampratios", "0.5"])
+    assert "leave --dampratios out" in capsys.readouterr().err

@@ -266,13 +266,28 @@ def drivable() -> list[str]:
     return [n for n, s in ROBOTS.items() if floor_family.applies(s)]
 
 
+def chosen(parser: argparse.ArgumentParser, names: Sequence[str]) -> list[str]:
+    """The drivable robots a command line names (none: every one), checked before any work.
+
+    Raises:
+        ValueError: an unknown name (:func:`~wmr_mujoco.robots.get_spec`'s message).
+        SystemExit: through ``parser.error``, a robot the random-steps family does not drive.
+    """
+    robots = [get_spec(r).name for r in names] or drivable()
+    for r in robots:
+        if r not in drivable():
+            parser.error(f"robot {r!r} is not driven by the random-steps family; valid: "
+                         f"{', '.join(drivable())}")
+    return robots
+
+
 def main(argv: list[str] | None = None) -> None:
     """Command line: print the tables."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="shorter, fewer rounds")
     parser.add_argument("robots", nargs="*", help="robots (default: every drivable robot)")
     args = parser.parse_args(argv)
-    robots = [get_spec(r).name for r in args.robots] or drivable()  # unknown: fails here
+    robots = chosen(parser, args.robots)
     how = QUICK if args.quick else FULL
     print(table(rows(robots, how), peer_rows(robots, args.quick), how, args.quick))
 

@@ -1,7 +1,7 @@
 """Is each robot's default step the cheapest that meets all its targets? (issue 24 § 4).
 
 ``python -m wmr_mujoco.bench.timestep_choice [--quick] [--seeds 0 1] [--jobs 2]
-[--dampratios 0.5 0.8 1] [--write] [robots ...]`` answers, for every robot the
+[--dampratios 0.5 0.8 1 | --keep-stiffness] [--write] [robots ...]`` answers, for every robot the
 random-steps family drives (:func:`wmr_mujoco.bench.default_speed.drivable`), with the
 robot's families rather than single runs:
 
@@ -25,6 +25,13 @@ with it the rolling radius, at the same damping. Only steps that divide every co
 period users drive with (:data:`PERIODS`) are candidates: ``wmr_mujoco.drive`` refuses a
 period that is not a whole number of steps.
 
+``--keep-stiffness`` validates another family of candidates instead, in its own table:
+each longer step with the default contact's spring kept
+(:func:`~wmr_mujoco.bench.timestep_candidates.at_step_same_stiffness`: the robot's own
+``t_c`` as far as the builder's least ``steps · Δt`` allows, and ζ lowered so that the
+stiffness ``1/(d ζ² t_c²)``, the rest depth and the rolling radius stay the default's):
+what a longer step costs when the contact is not made softer with it.
+
 The default step is also validated at each other ζ (the same cost): its rows show why
 the robot's ζ is chosen. Each candidate is validated on its own, families in registry
 order, ``--jobs`` at a time; its validation stops after the first families that lose a
@@ -43,7 +50,6 @@ import dataclasses
 import json
 import time
 from collections.abc import Sequence
-from fractions import Fraction
 
 import numpy as np
 
@@ -52,7 +58,7 @@ from wmr_mujoco.bench.default_speed import (
     FULL,
     QUICK,
     Rounds,
-    drivable,
+    chosen,
     real_time_factors,
 )
 from wmr_mujoco.bench.solver_fidelity import (
@@ -65,6 +71,16 @@ from wmr_mujoco.bench.solver_fidelity import (
     keep,
     kept,
 )
+from wmr_mujoco.bench.timestep_candidates import (  # noqa: F401 (re-exported)
+    PERIODS,
+    STEPS,
+    Candidate,
+    at_step,
+    at_step_same_stiffness,
+    candidates,
+    pair_timeconst,
+    stiffness_candidates,
+)
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.lookup import validation_jobs
 from wmr_mujoco.models.params import RobotParams
@@ -74,62 +90,9 @@ from wmr_mujoco.robots.spec import RobotSpec
 from wmr_mujoco.validation.jobs import check_jobs
 from wmr_mujoco.validation.pool import run_calls
 
-#: The control periods users drive with, s (``wmr_mujoco.drive``, the environments).
-PERIODS = (Fraction(1, 50), Fraction(1, 20), Fraction(1, 10))
-#: Steps considered, s: those from 1 to 5 ms, in quarter milliseconds, that divide every
-#: period of :data:`PERIODS` (1, 1.25, 2, 2.5 and 5 ms).
-STEPS = tuple(float(s) for s in (Fraction(k, 4000) for k in range(4, 21))
-              if all((p / s).denominator == 1 for p in PERIODS))
-
-
 DOC = DOCS_DIR / "floor-contact.md"
 MARKER = "timestep choice"
-
-
-@dataclasses.dataclass(frozen=True)
-class Candidate:
-    """A robot's default parameters at another step and damping ratio.
-
-    Attributes:
-        timestep: the step, s.
-        dampratio: the floor pairs' ζ.
-        params: the robot's defaults with these (``t_c/Δt`` kept).
-    """
-
-    timestep: float
-    dampratio: float
-    params: RobotParams
-
-
-def at_step(spec: RobotSpec, timestep: float, dampratio: float | None = None) -> Candidate:
-    """The robot's defaults at ``timestep`` (``t_c/Δt`` kept) and ``dampratio`` (None: its own).
-
-    Raises:
-        ValueError: a robot without parameters; a step or ζ its parameters refuse.
-    """
-    if spec.params_type is None:
-        raise ValueError(f"robot {spec.name!r} has no parameters to change")
-    base = spec.params_type()
-    sim = base.sim
-    zeta = sim.floor_dampratio if dampratio is None else dampratio
-    new_sim = dataclasses.replace(
-        sim, timestep=timestep, floor_dampratio=zeta,
-        contact_timeconst=sim.contact_timeconst * timestep / sim.timestep)
-    return Candidate(timestep, zeta, dataclasses.replace(base, sim=new_sim))
-
-
-def candidates(spec: RobotSpec, dampratios: Sequence[float] = ()) -> list[Candidate]:
-    """The default step at each other ζ, then every longer step of :data:`STEPS` at each ζ.
-
-    ζ: the robot's own, then each of ``dampratios``. ζ does not change a step's cost: the
-    default step's rows show why the robot's ζ is chosen, the longer steps' whether a
-    cheaper setting keeps every target.
-    """
-    assert spec.params_type is not None
-    own = spec.params_type().sim
-    zetas = list(dict.fromkeys([own.floor_dampratio, *dampratios]))
-    same = [at_step(spec, own.timestep, z) for z in zetas if z != own.floor_dampratio]
-    return same + [at_step(spec, dt, z) for dt in STEPS if dt > own.timestep for z in zetas]
+STIFFNESS_MARKER = "timestep choice, stiffness kept"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -199,10 +162,11 @@ def fidelity(spec: RobotSpec, params: RobotParams, seed: int, default: Figures,
 
 
 def study(spec: RobotSpec, seeds: Sequence[int], dampratios: Sequence[float], how: Rounds,
-          jobs: int) -> list[dict[str, object]]:
+          jobs: int, stiffness_kept: bool = False) -> list[dict[str, object]]:
     """One row per setting of ``spec``: the default first, then :func:`candidates`.
 
-    A candidate that loses a target at a seed is not validated at the later seeds.
+    A candidate that loses a target at a seed is not validated at the later seeds (nor are
+    the defaults, once no candidate is left).
 
     Args:
         spec: the robot.
@@ -210,13 +174,15 @@ def study(spec: RobotSpec, seeds: Sequence[int], dampratios: Sequence[float], ho
         dampratios: the floor pairs' ζ to try besides the robot's own.
         how: the timing.
         jobs: families run at once.
+        stiffness_kept: the candidates are :func:`stiffness_candidates` instead
+            (``dampratios`` unused).
 
     Returns:
         Dicts of ``robot``, ``timestep``, ``dampratio``, ``rtf``, ``ratio`` (cost against
         the default), ``verdict`` (a table cell) and, for a candidate, ``acceptable``.
     """
     assert spec.params_type is not None
-    cands = candidates(spec, dampratios)
+    cands = stiffness_candidates(spec) if stiffness_kept else candidates(spec, dampratios)
     rtf = real_time_factors(spec, [None, *(c.params for c in cands)], how,
                             clock=time.process_time, diverged_nan=True)
     own = spec.params_type()
@@ -225,15 +191,19 @@ def study(spec: RobotSpec, seeds: Sequence[int], dampratios: Sequence[float], ho
                                      "ratio": 1.0, "verdict": "the default"}]
     verdicts: list[dict[int, Fidelity]] = [{} for _ in cands]
     for seed in seeds:
+        alive = [np.isfinite(r) and all(not f.lost for f in v.values())
+                 for v, r in zip(verdicts, rtf[1:], strict=True)]
+        if not any(alive):
+            break
         base = figures(spec, own, seed, jobs, CACHE)
-        for c, v, r in zip(cands, verdicts, rtf[1:], strict=True):
-            if np.isfinite(r) and all(not f.lost for f in v.values()):
+        for c, v, go in zip(cands, verdicts, alive, strict=True):
+            if go:
                 v[seed] = fidelity(spec, c.params, seed, base, jobs)
                 print(f"  {spec.name} {1e3 * c.timestep:g} ms ζ {c.dampratio:g} seed {seed}: "
                       f"{verdict_text(v)}", flush=True)
     for c, r, v in zip(cands, rtf[1:], verdicts, strict=True):
         out.append({"robot": spec.name, "timestep": c.timestep, "dampratio": c.dampratio,
-                    "rtf": r, "ratio": rtf[0] / r,
+                    "stiffness_kept": c.stiffness_kept, "rtf": r, "ratio": rtf[0] / r,
                     "verdict": verdict_text(v) if v else "diverged on the timing drive",
                     "acceptable": bool(v) and all(not f.lost for f in v.values())})
     return out
@@ -254,7 +224,7 @@ def verdict_text(by_seed: dict[int, Fidelity]) -> str:
 
 
 def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
-          quick: bool) -> str:
+          quick: bool, stiffness_kept: bool = False) -> str:
     """The markdown table of :func:`study`'s rows, and a verdict line per robot.
 
     Args:
@@ -262,11 +232,15 @@ def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
         seeds: the seeds validated (for the header).
         how: the timing (for the header).
         quick: the run was ``--quick`` (the header says so).
+        stiffness_kept: the rows are :func:`stiffness_candidates` (the header says so).
     """
+    contact = ("the contact's stiffness kept (`--keep-stiffness`: its own t_c, raised by the "
+               "builder to its least steps · Δt, t_c', and ζ' = ζ t_c/t_c')"
+               if stiffness_kept else "contact time constant scaled with the step")
     lines = [f"{'QUICK run: ' if quick else ''}`python -m wmr_mujoco.bench.timestep_choice`: "
              f"each robot's families (`wmr validate ROBOT --seed S`, seeds "
              f"{', '.join(map(str, seeds))}) at each longer step that divides the 20, 50 and "
-             f"100 ms control periods, contact time constant scaled with the step; cost: "
+             f"100 ms control periods, {contact}; cost: "
              f"one-thread `mj_step` loop in CPU time, {how.seconds:g} s of the random-steps "
              f"family's member 0, median of {how.rounds} alternating rounds.", "",
              "| robot | step | ζ | real-time × | cost ratio (candidate / default) | "
@@ -274,8 +248,8 @@ def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
              "|---" * 6 + "|"]
     for r in rows:
         lines.append(f"| {r['robot']} | {1e3 * float(r['timestep']):g} ms "  # type: ignore[arg-type]
-                     f"| {float(r['dampratio']):g} | {float(r['rtf']):.0f}× "  # type: ignore[arg-type]
-                     f"| {float(r['ratio']):.2f} | {r['verdict']} |")  # type: ignore[arg-type]
+                     f"| {float(r['dampratio']):.3g} | {_cell(r['rtf'], '.0f', '×')} "
+                     f"| {_cell(r['ratio'], '.2f')} | {r['verdict']} |")
     lines.append("")
     for name in dict.fromkeys(str(r["robot"]) for r in rows):
         own = float(next(r["timestep"] for r in rows if r["robot"] == name))  # type: ignore[arg-type]
@@ -285,10 +259,16 @@ def table(rows: list[dict[str, object]], seeds: Sequence[int], how: Rounds,
             "no longer step keeps every target the defaults meet: the default step is the "
             "cheapest." if not longer
             else "a longer step keeps every target the defaults meet: " + ", ".join(
-                f"{1e3 * float(r['timestep']):g} ms at ζ = {float(r['dampratio']):g} "  # type: ignore[arg-type]
+                f"{1e3 * float(r['timestep']):g} ms at ζ = {float(r['dampratio']):.3g} "  # type: ignore[arg-type]
                 f"(cost ratio {float(r['ratio']):.2f})"  # type: ignore[arg-type]
                 for r in longer) + "."))
     return "\n".join(lines)
+
+
+def _cell(value: object, fmt: str, unit: str = "") -> str:
+    """A figure of the table, or ``diverged`` for a NaN (the timing drive diverged)."""
+    x = float(value)  # type: ignore[arg-type]
+    return f"{x:{fmt}}{unit}" if np.isfinite(x) else "diverged"
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -299,31 +279,33 @@ def main(argv: list[str] | None = None) -> None:
                         help="validation seeds (default 0 1; --quick: 0)")
     parser.add_argument("--dampratios", type=float, nargs="+", default=(),
                         help="floor pairs' ζ to try at each step (default: each robot's own)")
+    parser.add_argument("--keep-stiffness", action="store_true",
+                        help="candidates: each longer step with the contact's stiffness kept "
+                             f"(its own table, {STIFFNESS_MARKER!r} markers)")
     parser.add_argument("--jobs", type=int, default=2, help="worker processes (default 2)")
     parser.add_argument("--write", action="store_true",
                         help=f"paste the table into {DOC.name} ({MARKER!r} markers)")
     parser.add_argument("robots", nargs="*", help="robots (default: every drivable robot)")
     args = parser.parse_args(argv)
     check_jobs(args.jobs)
+    if args.keep_stiffness and args.dampratios:
+        parser.error("--keep-stiffness sets each candidate's ζ; leave --dampratios out")
     for z in args.dampratios:
         if not 0.1 <= z <= 1.0:
             parser.error(f"--dampratios {z!r}: each must be in [0.1, 1]")
     seeds = args.seeds or ([0] if args.quick else [0, 1])
     if any(s < 0 for s in seeds):
         parser.error(f"--seeds {seeds!r}: seeds are integers >= 0")
-    robots = [get_spec(r).name for r in args.robots] or drivable()  # unknown: fails here
-    for r in robots:
-        if r not in drivable():
-            parser.error(f"robot {r!r} is not driven by the random-steps family; valid: "
-                         f"{', '.join(drivable())}")
+    robots = chosen(parser, args.robots)
     how = QUICK if args.quick else FULL
     rows = []
     for name in robots:
-        rows += study(get_spec(name), seeds, args.dampratios, how, args.jobs)
-    text = table(rows, seeds, how, args.quick)
+        rows += study(get_spec(name), seeds, args.dampratios, how, args.jobs,
+                      stiffness_kept=args.keep_stiffness)
+    text = table(rows, seeds, how, args.quick, stiffness_kept=args.keep_stiffness)
     print(text)
     if args.write:
-        replace_between(DOC, MARKER, text)
+        replace_between(DOC, STIFFNESS_MARKER if args.keep_stiffness else MARKER, text)
         print(f"wrote {DOC}")
 
 

@@ -237,3 +237,31 @@ def test_sliding_impratio_keeps_impratio_times_d():
     assert sliding_impratio(0.005) * 0.005 == pytest.approx(1e4 * 0.001)
     with pytest.raises(ValueError, match="impedance"):
         sliding_impratio(0.0)
+
+
+@pytest.mark.parametrize("robot", sorted(ROBOTS))
+def test_every_model_turns_island_discovery_off(robot):
+    # new_root's option: one robot is one island, so discovery only adds its cost.
+    model = load(robot)
+    assert model.opt.disableflags & mujoco.mjtDisableBit.mjDSBL_ISLAND
+
+
+@pytest.mark.parametrize("robot", ["omni3", "diffdrive"])
+def test_island_discovery_changes_no_bit_of_a_driven_run(robot):
+    # One tree, one island: with discovery on, the solver solves the same problem in the
+    # same order, so 0.5 s of random wheel commands from rest end in the same bytes.
+    off = load(robot)
+    on = load(robot)
+    on.opt.disableflags &= ~int(mujoco.mjtDisableBit.mjDSBL_ISLAND)
+    rng = np.random.default_rng(3)
+    controls = rng.uniform(-1.0, 1.0, (5, off.nu)) * off.actuator_ctrlrange[:, 1]
+    finals = []
+    for model in (off, on):
+        data = mujoco.MjData(model)
+        for ctrl in controls:
+            data.ctrl[:] = ctrl
+            for _ in range(round(0.1 / model.opt.timestep)):
+                mujoco.mj_step(model, data)
+        assert data.ncon > 0  # on the floor: the contacts are in the constraint set
+        finals.append(np.concatenate([data.qpos, data.qvel]).tobytes())
+    assert finals[0] == finals[1]

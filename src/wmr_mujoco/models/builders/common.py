@@ -45,7 +45,12 @@ def new_root(model: str, sim: SimParams) -> mjcf.RootElement:
     """Create a robot root with options, sizes and the visual/collision classes.
 
     Options: implicit-in-velocity integration (``implicitfast``), elliptic friction
-    cones with ``impratio`` (no pyramidal creep), and the Newton solver.
+    cones with ``impratio`` (no pyramidal creep), and the Newton solver. Constraint
+    island discovery is off (``<flag island="disable"/>``, on by default since MuJoCo
+    3.3.6): a robot on the floor is one island, its chassis joining every contact, so
+    discovery finds the whole constraint set every step and only adds its own cost
+    (``python -m wmr_mujoco.bench.island_cost`` measures it; the trajectory is the
+    same to the bit, ``tests/models/builders/test_common.py``).
     """
     root = mjcf.RootElement(model=model)
     root.compiler.angle = "radian"
@@ -54,6 +59,7 @@ def new_root(model: str, sim: SimParams) -> mjcf.RootElement:
     root.option.integrator = "implicitfast"
     root.option.cone = "elliptic"
     root.option.impratio = sim.impratio
+    root.option.flag.island = "disable"
     root.size.nuser_actuator = NUSER_ACTUATOR
     main = root.default
     main.joint.damping = 0
