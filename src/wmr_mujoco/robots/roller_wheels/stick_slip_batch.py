@@ -123,11 +123,6 @@ def _solve(sets: _Sets, runs: np.ndarray, slip_free: np.ndarray, bounds: np.ndar
     return p_all, s_all, codes
 
 
-#: Per-run arrays of a march, selected together when runs stop.
-_PER_RUN = ("jac", "minv", "step_minv", "base", "per_ax", "per_ay", "mass", "kv", "tmax",
-            "friction", "cmd", "q", "ax", "ay", "start", "runs")
-
-
 def march_many(platforms: Sequence[RollerPlatform], lcps: Sequence[BoxLcp],
                commands: Sequence[np.ndarray], total: int, per_chunk: int, step: float,
                settle_tol: float) -> list[dict[str, np.ndarray] | None]:
