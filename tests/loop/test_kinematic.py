@@ -81,3 +81,22 @@ def test_tricycle_wheels_roll_about_the_common_icr() -> None:
     expected = [v_left / p.rear_wheel.radius, v_right / p.rear_wheel.radius,
                 tricycle.front_wheel_speed(v, phi) / p.front_wheel.radius]
     np.testing.assert_allclose(state.wheel_rates, expected, rtol=1e-9)
+
+
+@pytest.mark.parametrize("name", ["bicycle", "tricycle"])
+def test_a_period_through_the_adapters_trajectory_is_rk4_step_after_step(name) -> None:
+    """A model without an exact step but with a ``trajectory`` holds the input over the
+    period's substeps through it: the floats of ``rk4_step`` step after step, to the bit
+    (a turning state, so that every stage's heading and steering matter)."""
+    from wmr_mujoco.analytic.integrate import rk4_step
+    from wmr_mujoco.loop.kinematic import hold
+
+    robot = make(name, backend="kinematic")
+    assert robot._exact is None and hasattr(robot.adapter, "trajectory")
+    assert robot.nstep > 1
+    x = np.array([0.3, -0.2, 0.7, 0.25])
+    u = np.array([1.3, 0.4])
+    want = x
+    for _ in range(robot.nstep):
+        want = rk4_step(robot.adapter.rhs, want, u, robot.dt)
+    assert hold(robot, x, u, "kinematic").tobytes() == want.tobytes()

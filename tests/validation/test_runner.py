@@ -311,3 +311,44 @@ def test_a_probe_with_after_is_resampled_only_after_it():
     for (_, a), (_, b) in zip(late, [x for x in every if x[0] * dt > 0.3], strict=True):
         np.testing.assert_array_equal(a, b)
     assert first_read([], prep.adapter) == np.inf  # nothing reads: no re-step
+
+
+@pytest.mark.parametrize("robot, name", [("omni3", "translate+rotate"),
+                                         ("mecanum4", "translate+rotate (step)"),
+                                         ("tricycle", "figure eight")])
+def test_an_adapter_reading_frames_alone_records_the_same_without_the_com_stages(
+        robot, name, monkeypatch):
+    """A ``frames_only`` adapter's samples skip mj_comPos and mj_comVel: the same floats.
+
+    Its ``sim_state`` reads poses and joint positions, which mj_kinematics alone gives;
+    the run is measured with the flag and with it forced off, and every recorded time,
+    pose and analytic state and every metric must be equal (the re-steps and probes
+    see their own full mj_step either way).
+    """
+    import dataclasses
+
+    import mujoco
+
+    from wmr_mujoco.sim.engine import simulate
+    from wmr_mujoco.validation.metrics import Trace
+    from wmr_mujoco.validation.runner import measure_metrics, prepare
+
+    spec = get_spec(robot)
+    s = dataclasses.replace(next(x for x in spec.scenarios if x.name == name), duration=0.5)
+    calls = []
+    com_pos = mujoco.mj_comPos
+    monkeypatch.setattr(mujoco, "mj_comPos", lambda m, d: (calls.append(1), com_pos(m, d)))
+    out = []
+    for frames_only in (True, False):
+        prep = prepare(spec, s)
+        assert prep.adapter.frames_only  # the robot's kinematic adapter declares it
+        if not frames_only:
+            monkeypatch.setattr(type(prep.adapter), "frames_only", False)
+        calls.clear()
+        trace = Trace()
+        metrics = measure_metrics(prep, simulate(prep.model, prep.data, prep.controls), trace)
+        out.append((metrics, trace.arrays(), len(calls)))
+    assert out[0][2] == 0 < out[1][2]  # the flag leaves the stages out
+    assert out[0][0] == out[1][0]
+    for key in ("time", "sim", "analytic"):
+        assert out[0][1][key].tobytes() == out[1][1][key].tobytes()

@@ -46,6 +46,10 @@ def hold(robot: Robot, x: np.ndarray, u: np.ndarray, what: str) -> np.ndarray:
     """
     if robot._exact is not None:
         x = robot._exact(x, u, robot.control_period)
+    elif (trajectory := getattr(robot.adapter, "trajectory", None)) is not None:
+        # the adapter's RK4 over every substep at once: the floats of step after step
+        held = np.broadcast_to(np.asarray(u, float), (robot.nstep, len(u)))
+        x = trajectory(np.asarray(x, float), held, robot.dt)[-1]
     else:
         rhs = robot.adapter.rhs
         for _ in range(robot.nstep):

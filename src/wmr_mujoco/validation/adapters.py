@@ -67,6 +67,8 @@ class Adapter(Protocol):
     # ``dt`` with ``u`` held; the runner then uses it instead of an RK4 step.
     # Optional: ``trajectory(x0, inputs, dt) -> (N + 1, n) states``, every step of the
     # runner's schedule at once (vectorised): the same floats as its steps one by one.
+    # Optional: ``frames_only = True``: ``sim_state`` reads the state and frames alone
+    # (``mj_kinematics``), so the runner leaves out the centres of mass and velocities.
 
 
 #: ``factory(scenario, model, params) -> Adapter`` (params: the robot's, defaults if None).

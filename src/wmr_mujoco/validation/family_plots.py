@@ -15,6 +15,7 @@ import numpy as np
 
 from wmr_mujoco.atomic import atomic_path
 from wmr_mujoco.validation.family_report import judged_spreads
+from wmr_mujoco.validation.plots import fix_layout
 from wmr_mujoco.validation.runner import ScenarioResult
 
 #: Ratios below this are drawn at it (a metric ten thousand times inside its target).
@@ -61,7 +62,7 @@ def plot_spreads(results: Sequence[ScenarioResult], title: str, path: Path) -> P
     ax.set_xlabel("|value| / target (dots: members; bar: median; ring: worst; "
                   "grey: open target)")
     ax.set_title(title, fontsize=9)
-    fig.tight_layout()
+    fix_layout(fig)
     with atomic_path(Path(path)) as tmp:
         fig.savefig(tmp, dpi=80)
     plt.close(fig)

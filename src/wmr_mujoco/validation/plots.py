@@ -105,7 +105,7 @@ def _plot_series(axes: Sequence[Axes], series: Sequence[Series]) -> None:
         ax.set_axis_off()
 
 
-def _fix_layout(fig: Figure) -> None:
+def fix_layout(fig: Figure) -> None:
     """Lay the figure out once (``tight_layout``) and keep that layout for saving.
 
     ``tight_layout`` leaves a placeholder layout engine behind, which makes ``savefig``
@@ -131,7 +131,7 @@ def plot_series(series: Sequence[Series], path: Path, title: str = "") -> Path:
     _plot_series(axes[0], series)
     if title:
         fig.suptitle(title)
-    _fix_layout(fig)
+    fix_layout(fig)
     with atomic_path(path) as tmp:
         fig.savefig(tmp, dpi=100)
     plt.close(fig)

@@ -307,6 +307,7 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     trace.state_names, trace.state_units = adapter.state_names, adapter.state_units
     nstep = len(prep.controls)
     read_after = first_read(probes, adapter)
+    frames_only = getattr(adapter, "frames_only", False)  # sim_state reads frames alone
     dt = model.opt.timestep
     for k in range(nstep):
         if k % RECORD_EVERY != RECORD_EVERY - 1 and k != nstep - 1:
@@ -316,7 +317,7 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
         else:
             trace.slip.append(np.zeros(0))
         mujoco.mj_setState(model, data, states[k + 1], STATE_SPEC)
-        sync_kinematics(model, data)
+        sync_kinematics(model, data, frames_only)
         trace.time.append(data.time - s.settle)
         trace.sim.append(adapter.sim_state(model, data))
         trace.analytic.append(prep.analytic[k + 1])
@@ -359,16 +360,19 @@ def _restep(prep: Prepared, states: np.ndarray, k: int, trace: Trace,
         probe.observe(sample)
 
 
-def sync_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+def sync_kinematics(model: mujoco.MjModel, data: mujoco.MjData,
+                    frames_only: bool = False) -> None:
     """Frames, centres of mass and body velocities of the state in ``data``.
 
     The stages of ``mj_forward`` that an adapter's ``sim_state`` reads (``mj_kinematics``,
     ``mj_comPos``, ``mj_comVel``: poses, ``mj_objectVelocity``), the same floats as there,
-    without the collision and constraint stages it does not read.
+    without the collision and constraint stages it does not read; ``frames_only``: the
+    frames alone (an adapter whose ``sim_state`` reads poses and joint positions).
     """
     mujoco.mj_kinematics(model, data)
-    mujoco.mj_comPos(model, data)
-    mujoco.mj_comVel(model, data)
+    if not frames_only:
+        mujoco.mj_comPos(model, data)
+        mujoco.mj_comVel(model, data)
 
 
 def run_all(work: Sequence[Job], progress: Callable[[str], None] | None = None,

@@ -32,6 +32,8 @@ from functools import cached_property
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from wmr_mujoco.loop.control import polyline
+
 #: Fine samples per path.
 SAMPLES = 4001
 #: Half-width of the closest-point search around a hint, m.
@@ -100,7 +102,7 @@ class Path:
     def at(self, s: float) -> PathPoint:
         """The point at arc length ``s`` (wrapped on a closed path, clipped on an open one)."""
         s = self._s(s)
-        xy = np.array([np.interp(s, self.s, self.xy[:, 0]), np.interp(s, self.s, self.xy[:, 1])])
+        xy = np.array([np.interp(s, self.s, c) for c in self._columns[:2]])
         return PathPoint(s, xy, float(np.interp(s, self.s, self.heading)),
                          float(np.interp(s, self.s, self.curvature)))
 
@@ -121,15 +123,13 @@ class Path:
             h = self._s(hint)
             lo, hi = (int(i) for i in np.searchsorted(self.s, [h - window, h + window]))
             first, last = (lo - 1, hi + 1) if self.closed else (max(lo - 1, 0), min(hi + 1, n - 1))
-        if first >= 0 and last <= n - 1:  # a range of them: views, no copies
-            a, b = self.xy[first:last], self.xy[first + 1:last + 1]
-        else:  # the window wraps round a closed path's end
-            a, b = self.xy[idx := np.mod(np.arange(first, last), n - 1)], self.xy[idx + 1]
-        d = b - a
-        t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.einsum("ij,ij->i", d, d), 0.0, 1.0)
-        foot = a + t[:, None] * d
-        k = int(np.argmin(np.einsum("ij,ij->i", foot - p, foot - p)))
+        w = (slice(first, last) if first >= 0 and last <= n - 1  # views, or a wrapped window
+             else np.mod(np.arange(first, last), n - 1))
+        k, t = polyline.nearest(self._columns, w, float(p[0]), float(p[1]))
         return self.at(self.s[i := (first + k) % (n - 1)] + t[k] * (self.s[i + 1] - self.s[i]))
+
+    #: The polyline's columns and its segments' ``d`` and ``d·d``, kept.
+    _columns = cached_property(lambda self: polyline.segments(self.xy))
 
     @cached_property
     def _rows(self) -> tuple[list[float], list[list[float]]]:
@@ -195,7 +195,7 @@ class Path:
             ahead = ahead[ahead <= self.length]
             if len(ahead) == 0:
                 return self.at(self.length)
-        pts = np.stack([np.interp(self._wrap(ahead), self.s, self.xy[:, i]) for i in (0, 1)], 1)
+        pts = np.stack([np.interp(self._wrap(ahead), self.s, c) for c in self._columns[:2]], 1)
         beyond = np.flatnonzero(np.linalg.norm(pts - p, axis=1) >= distance)
         return self.at(ahead[beyond[0]] if len(beyond) else ahead[-1])
 
@@ -203,8 +203,8 @@ class Path:
         """``(x, y)`` at the arc lengths ``s`` (wrapped or clipped like :meth:`at`), (..., 2)."""
         s = self._wrap(np.asarray(s, float))
         out = np.empty((*s.shape, 2))
-        out[..., 0] = np.interp(s, self.s, self.xy[:, 0])
-        out[..., 1] = np.interp(s, self.s, self.xy[:, 1])
+        out[..., 0] = np.interp(s, self.s, self._columns[0])
+        out[..., 1] = np.interp(s, self.s, self._columns[1])
         return out
 
     def _wrap(self, s: np.ndarray) -> np.ndarray:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -36,6 +37,9 @@ NAME = "bicycle"
 @dataclass(frozen=True)
 class BicycleKinematics:
     """Bicycle: ``x = (x, y, ψ, φ)``; controls ``(v_r/R_r, ω)``."""
+
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
 
     params: BicycleParams
     mode: ActuationMode = ActuationMode.RATE

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -43,6 +44,9 @@ NAME = "diffdrive"
 @dataclass(frozen=True)
 class DiffDriveKinematics:
     """Unicycle of the axle midpoint: ``x = (x, y, ψ)``, ``u = (v, ω)``."""
+
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
 
     params: DiffDriveParams
     mode: ActuationMode = ActuationMode.RATE

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -42,6 +43,9 @@ ACCELERATION_PCT = "rolling acceleration error %"
 @dataclass(frozen=True)
 class DiscKinematics:
     """Disc: ``x = (x, y, φ)``; controls ``(v/R, ω)``."""
+
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
 
     params: DiscParams
     mode: ActuationMode = ActuationMode.RATE

@@ -11,6 +11,7 @@ steering axes (the ``base`` site).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -38,6 +39,9 @@ NAME = "double_steer"
 @dataclass(frozen=True)
 class DoubleSteerKinematics:
     """Two steered wheels, one ICR: ``x = (x, y, ψ, β₁, β₂)``, ``u = (v₁, ω₁, ω₂)``."""
+
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
 
     params: DoubleSteerParams
     mode: ActuationMode = ActuationMode.RATE

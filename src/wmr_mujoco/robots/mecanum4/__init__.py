@@ -18,7 +18,7 @@ import mujoco
 from wmr_mujoco.models.params import params_or_default
 from wmr_mujoco.robots import requirements as req
 from wmr_mujoco.robots.learning import NO_RADIUS_BANDS, Learning
-from wmr_mujoco.robots.mecanum4 import builder, dynamics, kinematics, ripple
+from wmr_mujoco.robots.mecanum4 import builder, dynamics, kinematics, ripple, step_batch
 from wmr_mujoco.robots.mecanum4.grouped import Group
 from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.roller_wheels import (
@@ -226,6 +226,7 @@ SPEC = RobotSpec(
     targets=TARGETS, scenarios=SCENARIOS, demo_scenario="translate+rotate (ramp)",
     bench_scenario="translate+rotate (ramp)", render_scenario="translate+rotate (ramp)",
     scene_extras=builder.floor_pairs, command=COMMAND, open_targets=FLOOR_OPEN,
+    prepare=step_batch.prepare,
     # Its translations at SPEED in any direction, its turns at up to YAW_RATE.
     command_range=(SPEED, SPEED, YAW_RATE),
     learning=Learning("Mecanum4", scale=1.0, max_curvature=1.5, bands=NO_RADIUS_BANDS),

@@ -21,6 +21,7 @@ import functools
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -28,7 +29,7 @@ import numpy as np
 from wmr_mujoco.analytic.planar import twist_step, twist_steps, wrap_angle
 from wmr_mujoco.models.actuation import ActuationMode
 from wmr_mujoco.models.params import RobotParams, params_or_default
-from wmr_mujoco.robots.mecanum4 import collider, traction
+from wmr_mujoco.robots.mecanum4 import collider, step_batch, traction
 from wmr_mujoco.robots.mecanum4.builder import WHEEL_NAMES
 from wmr_mujoco.robots.mecanum4.geometry import layout as wheel_layout
 from wmr_mujoco.robots.mecanum4.params import MecanumParams
@@ -58,6 +59,9 @@ class MecanumKinematics:
         step: for a step command, the step model's response from rest; None for a ramp.
         start_time: the simulation time at which the command starts, s (the settle).
     """
+
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
 
     params: MecanumParams
     step: StepResponse | None = None
@@ -229,9 +233,11 @@ def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
     if not np.array_equal(scenario.input_at(scenario.duration), twist):
         raise ValueError(f"{scenario.key}: a step command must be held over the run "
                          f"(u(0) = {twist}, u(end) = {scenario.input_at(scenario.duration)})")
-    platform, command = traction.step_platform(model, p, twist)
-    return MecanumKinematics(p, step_response(platform, command, scenario.duration),
-                             scenario.settle)
+    response = step_batch.take(twist, scenario.duration, params)  # prepared with others
+    if response is None:
+        platform, command = traction.step_platform(model, p, twist)
+        response = step_response(platform, command, scenario.duration)
+    return MecanumKinematics(p, response, scenario.settle)
 
 
 def _reported(scenario: Scenario, trace: Trace, adapter: MecanumKinematics,

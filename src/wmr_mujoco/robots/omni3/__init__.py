@@ -16,6 +16,7 @@ import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -61,6 +62,9 @@ class OmniKinematics:
     twist with the analytic heading (an open-loop schedule, known in advance).
     """
 
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
+
     params: OmniParams
     world_frame: bool = False
     mode: ActuationMode = ActuationMode.RATE
@@ -92,8 +96,16 @@ class OmniKinematics:
     def controls_on(self, inputs: np.ndarray, states: np.ndarray) -> np.ndarray:
         """(N, 3) :meth:`controls` of every step: once per distinct input for body rates."""
         if self.world_frame:  # the twist turns with the analytic heading
-            return np.array([self.controls(u, x) for u, x in zip(inputs, states,
-                                                                strict=True)])
+            w = np.asarray(inputs, float).reshape(-1, 3)
+            if not np.isfinite(w).all():  # world_to_body raises there, naming it
+                return np.array([self.controls(u, x) for u, x in zip(inputs, states,
+                                                                    strict=True)])
+            # world_to_body's floats row by row (its math.cos and math.sin), then H ν by
+            # a stacked matmul (each row's own BLAS product, as H @ ν)
+            psi = np.asarray(states, float)[:, 2].tolist()
+            c, s = np.array([math.cos(p) for p in psi]), np.array([math.sin(p) for p in psi])
+            nu = np.stack([c * w[:, 0] + s * w[:, 1], -s * w[:, 0] + c * w[:, 1], w[:, 2]], 1)
+            return np.matmul(self.jacobian, nu[:, :, None])[:, :, 0]
         return per_distinct_row(lambda u: self.controls(u, None), inputs, 3)
 
     def rhs(self, x: np.ndarray, u: np.ndarray) -> np.ndarray:

@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -43,6 +44,7 @@ import numpy as np
 from wmr_mujoco.analytic.checks import as_array
 from wmr_mujoco.robots.roller_wheels import omni_kinematics as ok
 from wmr_mujoco.robots.roller_wheels.roller_traction import traction_directions
+from wmr_mujoco.robots.roller_wheels.stick_slip_batch import march_many
 from wmr_mujoco.robots.roller_wheels.stick_slip_steps import march, moreau_step
 
 #: Standard gravity, m/s².
@@ -305,6 +307,14 @@ def advance(platform: RollerPlatform, lcp: BoxLcp, q_dot: np.ndarray,
     return np.array(q), p, slip, state, np.array(loads), np.array([ax, ay])
 
 
+def _check_run(duration: float, step: float) -> None:
+    """Raise ValueError for a bad duration or internal step (before any work)."""
+    if not (np.isfinite(duration) and duration > 0.0):
+        raise ValueError(f"duration = {duration!r} s; valid range is (0, inf)")
+    if not (np.isfinite(step) and 0.0 < step <= 1e-3):
+        raise ValueError(f"step = {step!r} s; valid range is (0, 1e-3]")
+
+
 def step_response(platform: RollerPlatform, commanded: np.ndarray, duration: float,
                   step: float = STEP, settle_tol: float = 1e-9,
                   chunk: float = 0.05) -> StepResponse:
@@ -320,14 +330,42 @@ def step_response(platform: RollerPlatform, commanded: np.ndarray, duration: flo
             diverges (non-finite state).
     """
     cmd = as_array("commanded", commanded, (platform.layout.n,))
-    if not (np.isfinite(duration) and duration > 0.0):
-        raise ValueError(f"duration = {duration!r} s; valid range is (0, inf)")
-    if not (np.isfinite(step) and 0.0 < step <= 1e-3):
-        raise ValueError(f"step = {step!r} s; valid range is (0, 1e-3]")
-    n = platform.layout.n
+    _check_run(duration, step)
     rows = march(platform, BoxLcp(platform.delassus), cmd, round(duration / step),
                  max(1, round(chunk / step)), step, settle_tol)
-    # Row 0 is the start at rest; then the Moreau steps (stick_slip_steps).
+    return _response(platform, rows, step)
+
+
+def step_responses(platforms: Sequence[RollerPlatform], commanded: Sequence[np.ndarray],
+                   duration: float, step: float = STEP, settle_tol: float = 1e-9,
+                   chunk: float = 0.05) -> list[StepResponse | None]:
+    """:func:`step_response` of each platform under its command, marched together.
+
+    The same responses, to the bit, as one call each
+    (:func:`~wmr_mujoco.robots.roller_wheels.stick_slip_batch.march_many`); None where
+    that call raises (a run that diverges), so that it is run alone and says why.
+
+    Raises:
+        ValueError: a bad duration or step, commands of the wrong shape or number, or
+            platforms of different wheel counts.
+    """
+    if len(platforms) != len(commanded):
+        raise ValueError(f"{len(platforms)} platforms and {len(commanded)} commands; "
+                         "one command per platform")
+    if not platforms:
+        return []
+    cmds = [as_array("commanded", c, (p.layout.n,)) for p, c in zip(platforms, commanded,
+                                                                     strict=True)]
+    _check_run(duration, step)
+    runs = march_many(platforms, [BoxLcp(p.delassus) for p in platforms], cmds,
+                      round(duration / step), max(1, round(chunk / step)), step, settle_tol)
+    return [None if rows is None else _response(p, rows, step)
+            for p, rows in zip(platforms, runs, strict=True)]
+
+
+def _response(platform: RollerPlatform, rows: dict[str, list], step: float) -> StepResponse:
+    """The :class:`StepResponse` of a march's rows (row 0: the start at rest)."""
+    n = platform.layout.n
     q = np.concatenate([np.zeros((1, 3 + n)), np.asarray(rows["q"]).reshape(-1, 3 + n)])
     return StepResponse(
         time=np.asarray([0.0, *rows["time"]]), twist=q[:, :3], wheel_rates=q[:, 3:],

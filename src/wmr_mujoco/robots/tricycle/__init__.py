@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -41,6 +42,9 @@ NAME = "tricycle"
 @dataclass(frozen=True)
 class TricycleKinematics:
     """Tricycle: ``x = (x, y, ψ, φ)`` of the rear-axle midpoint; controls ``(v_L/R, ω)``."""
+
+    #: ``sim_state`` reads the pose and joint positions alone (the runner's frames only).
+    frames_only: ClassVar[bool] = True
 
     params: TricycleParams
     mode: ActuationMode = ActuationMode.RATE
