@@ -18,7 +18,8 @@ SHOWN = [(name, field) for name, spec in ROBOTS.items() if spec.params_type is n
 
 #: A valid other value of each text field (numbers are scaled instead).
 _OTHER_TEXT = {"RK4": "Euler", "implicit": "RK4", "ellipsoid": "sphere",
-               "left": "differential", "Newton": "PGS", "sparse": "dense", "auto": "dense",
+               "left": "differential", "Newton": "PGS", "CG": "Newton", "sparse": "dense",
+               "auto": "dense",
                "elliptic": "pyramidal"}
 
 
