@@ -22,7 +22,7 @@ class OmniReducedParams(OmniParams):
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "roller_shape", "roller_armature",
                                          "roller_damping", "sim.floor_impedance",
                                          "jacobian", "cone", *PAIRS_SET_IMPRATIO)
-    #: MuJoCo's CG solver: the cheapest that keeps every target (issue 24 § 4). Nine
+    #: MuJoCo's CG solver: the cheaper at the same targets (issue 24 § 4). Nine
     #: degrees of freedom and 18 contact rows sliding sideways (the capsules) take
     #: Newton several iterations and line searches a step, each with its Hessian; CG's
     #: iterations are cheaper (`python -m wmr_mujoco.bench.solver_cost --physics`:
