@@ -44,6 +44,12 @@ def test_a_model_with_islands_on_is_refused(monkeypatch):
         ic.measure("disc", TINY)
 
 
+def test_writing_part_of_the_table_is_refused(capsys):
+    with pytest.raises(SystemExit):
+        ic.main(["--quick", "--write", "disc"])
+    assert "leave the robots out" in capsys.readouterr().err
+
+
 def test_unknown_robot_fails_before_any_run():
     with pytest.raises(ValueError, match="nosuch"):
         ic.main(["--quick", "nosuch"])

@@ -114,7 +114,7 @@ def test_the_effective_time_constant_is_mujocos_floor_of_two_steps():
 
 def test_a_step_whose_kept_stiffness_needs_a_damping_ratio_under_the_least_is_refused():
     """omni3 at 12.5 ms: t_c' = 3 Δt = 37.5 ms, ζ' = 0.8 · 3.75/37.5 = 0.08 < 0.1."""
-    with pytest.raises(ValueError, match="floor_dampratio"):
+    with pytest.raises(tc.DampratioTooSmallError, match="ζ' = 0.08 is under"):
         tc.at_step_same_stiffness(get_spec("omni3"), 0.0125)
 
 

@@ -179,3 +179,13 @@ def test_a_robots_rows_are_replaced_and_the_others_kept():
                    "| disc | 2.5 ms | old |", "| omni3 | 1.25 ms | old |",
                    "| omni3_reduced | 1.25 ms | new |", "",
                    "- disc: old.", "- omni3: old.", "- omni3_reduced: new."]
+
+
+def test_writing_one_robot_into_a_table_of_other_options_is_refused_before_work(
+        monkeypatch, capsys):
+    """The committed table was made at seeds 0-3: a one-robot ``--write`` at seeds 0, 1
+    would relabel every other robot's rows, so it stops before any study runs."""
+    monkeypatch.setattr(timestep_choice, "study", lambda *a, **k: pytest.fail("ran"))
+    with pytest.raises(SystemExit):
+        timestep_choice.main(["omni3", "--seeds", "0", "1", "--write"])
+    assert "made with other options" in capsys.readouterr().err

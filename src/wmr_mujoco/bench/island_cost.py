@@ -136,6 +136,8 @@ def main(argv: list[str] | None = None) -> None:
                         help=f"paste the table into {DOC.name} ({MARKER!r} markers)")
     parser.add_argument("robots", nargs="*", help="robots (default: every drivable robot)")
     args = parser.parse_args(argv)
+    if args.write and args.robots:
+        parser.error("--write publishes every robot's row: leave the robots out")
     robots = chosen(parser, args.robots)
     how = QUICK if args.quick else FULL
     results = []

@@ -7,7 +7,7 @@
    (``data.timer[mjtTimer.mjTIMER_*]``) over the first seconds of the random-steps
    family's member 0 (seed 0, :mod:`wmr_mujoco.bench.default_speed`'s drive): kinematics,
    inertia, collision (broad and narrow phase), making the constraints, the constraint
-   solver, and the solver's own counts per step: Newton iterations ``solver_niter``, line
+   solver, and the solver's own counts per step: its iterations ``solver_niter``, line
    search cost evaluations ``Σ solver[i].neval``, contacts ``ncon`` and constraint rows
    ``nefc``.
 2. **The cost of each solver setting** (:data:`SETTINGS`) at the robot's timestep: µs per
@@ -23,8 +23,9 @@
 
 ``physics`` marks the settings that change the equations: the pyramidal cone (a
 ``condim`` 3 pyramid reaches ``μ f_n`` only along the contact frame's axes,
-``μ f_n / √2`` along their diagonals) and PGS/CG, which stop at their iteration limits
-short of Newton's solution. The others are the same equations solved another way:
+``μ f_n / √2`` along their diagonals) and the other solvers (Newton, CG, PGS), each of
+which stops at MuJoCo's tolerance or at its iteration limit at its own solution. The
+others are the same equations solved another way:
 Jacobian storage, islands, midphase and warm start to round-off; tolerances and
 iteration limits by where the solver stops (timed only: no parameter expresses them).
 

@@ -75,6 +75,14 @@ def candidates(spec: RobotSpec, dampratios: Sequence[float] = ()) -> list[Candid
     return same + [at_step(spec, dt, z) for dt in STEPS if dt > own.timestep for z in zetas]
 
 
+#: The least floor ζ the parameters take (``SimParams.floor_dampratio``).
+LEAST_DAMPRATIO = 0.1
+
+
+class DampratioTooSmallError(ValueError):
+    """A stiffness-kept step would need a ζ' under :data:`LEAST_DAMPRATIO`."""
+
+
 def pair_timeconst(spec: RobotSpec, params: RobotParams) -> float:
     """The floor pairs' effective ``solref`` time constant in the compiled model, s.
 
@@ -116,6 +124,9 @@ def at_step_same_stiffness(spec: RobotSpec, timestep: float) -> Candidate:
     base = spec.params_type()
     trial = dataclasses.replace(base, sim=dataclasses.replace(base.sim, timestep=timestep))
     zeta = base.sim.floor_dampratio * pair_timeconst(spec, base) / pair_timeconst(spec, trial)
+    if zeta < LEAST_DAMPRATIO:
+        raise DampratioTooSmallError(f"robot {spec.name!r} at {timestep!r} s: ζ' = {zeta:.3g} is "
+                                f"under the parameters' least, {LEAST_DAMPRATIO}")
     params = dataclasses.replace(trial, sim=dataclasses.replace(trial.sim, floor_dampratio=zeta))
     return Candidate(timestep, zeta, params, stiffness_kept=True)
 
@@ -134,6 +145,6 @@ def stiffness_candidates(spec: RobotSpec) -> list[Candidate]:
         if dt > own:
             try:
                 out.append(at_step_same_stiffness(spec, dt))
-            except ValueError:  # ζ' under the parameters' least: no such contact
+            except DampratioTooSmallError:  # no such contact; any other refusal raises
                 continue
     return out

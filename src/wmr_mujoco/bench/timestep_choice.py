@@ -40,7 +40,9 @@ figures, a candidate's complete figures and its stops are kept in
 ``reports/solver_cost/`` (named by the model files' digests,
 :func:`~wmr_mujoco.bench.solver_fidelity.cache_file`; a stop also by the defaults' and
 ``--jobs``): a rerun times again and reuses them. ``--write`` pastes the table between
-the ``timestep choice`` markers of ``docs/floor-contact.md``.
+the ``timestep choice`` markers of ``docs/floor-contact.md`` (``timestep choice, stiffness
+kept`` with ``--keep-stiffness``); with robots named, only their rows and verdict lines
+(:func:`merged`), into a table whose header says it was made with the same options.
 """
 
 from __future__ import annotations
@@ -317,7 +319,9 @@ def main(argv: list[str] | None = None) -> None:
                              f"(its own table, {STIFFNESS_MARKER!r} markers)")
     parser.add_argument("--jobs", type=int, default=2, help="worker processes (default 2)")
     parser.add_argument("--write", action="store_true",
-                        help=f"paste the table into {DOC.name} ({MARKER!r} markers)")
+                        help=f"paste the table into {DOC.name} ({MARKER!r} markers, "
+                             f"{STIFFNESS_MARKER!r} with --keep-stiffness); robots named: "
+                             "only their rows, into a table made with the same options")
     parser.add_argument("robots", nargs="*", help="robots (default: every drivable robot)")
     args = parser.parse_args(argv)
     check_jobs(args.jobs)
@@ -331,6 +335,12 @@ def main(argv: list[str] | None = None) -> None:
         parser.error(f"--seeds {seeds!r}: seeds are integers >= 0")
     robots = chosen(parser, args.robots)
     how = QUICK if args.quick else FULL
+    marker = STIFFNESS_MARKER if args.keep_stiffness else MARKER
+    old = between(DOC, marker) if args.write and args.robots else None
+    header = table([], seeds, how, args.quick, stiffness_kept=args.keep_stiffness)
+    if old is not None and old.splitlines()[:1] != header.splitlines()[:1]:
+        parser.error(f"the table in {DOC.name} was made with other options (its header: "
+                     f"{old.splitlines()[:1]}); rerun it with those, or for every robot")
     rows = []
     for name in robots:
         rows += study(get_spec(name), seeds, args.dampratios, how, args.jobs,
@@ -338,9 +348,8 @@ def main(argv: list[str] | None = None) -> None:
     text = table(rows, seeds, how, args.quick, stiffness_kept=args.keep_stiffness)
     print(text)
     if args.write:
-        marker = STIFFNESS_MARKER if args.keep_stiffness else MARKER
-        if args.robots:  # the other robots' rows stay as the table has them
-            text = merged(between(DOC, marker), text, robots)
+        if old is not None:  # the other robots' rows stay as the table has them
+            text = merged(old, text, robots)
         replace_between(DOC, marker, text)
         print(f"wrote {DOC}")
 

@@ -215,13 +215,12 @@ class Worlds:
         Raises:
             SimulationDivergedError: a world's physics diverged.
         """
+        twists, self._twists = self._twists, False  # cleared even if a check raises
         if np.count_nonzero(np.concatenate(self._warnings)):
             for i, w in enumerate(self._warnings):
                 if w.any():
                     self.steppers[i].reader.check()
-        if self._twists:  # read with the physics
-            self._twists = False
-        else:
+        if not twists:  # not read with the physics
             objvel = mujoco.mj_objectVelocity
             for args in self._objvel:
                 objvel(*args, 1)

@@ -246,7 +246,7 @@ def test_every_model_turns_island_discovery_off(robot):
     assert model.opt.disableflags & mujoco.mjtDisableBit.mjDSBL_ISLAND
 
 
-@pytest.mark.parametrize("robot", ["omni3", "diffdrive"])
+@pytest.mark.parametrize("robot", sorted(ROBOTS))
 def test_island_discovery_changes_no_bit_of_a_driven_run(robot):
     # One tree, one island: with discovery on, the solver solves the same problem in the
     # same order, so 0.5 s of random wheel commands from rest end in the same bytes.

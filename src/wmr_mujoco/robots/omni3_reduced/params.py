@@ -11,7 +11,9 @@ from wmr_mujoco.robots.omni3.params import OmniParams
 
 @dataclass(frozen=True)
 class OmniReducedParams(OmniParams):
-    """omni3's parameters (:class:`~wmr_mujoco.models.params.OmniParams`), same defaults.
+    """omni3's parameters (:class:`~wmr_mujoco.models.params.OmniParams`), own defaults.
+
+    omni3's fields, with its defaults but ``solver`` (CG) and ``sim`` (below).
 
     The rollers' count, mass, thickness, overlap and row offset still set the lumped
     wheel's mass, inertia and capsule; their collider shape, hinge damping and armature
@@ -22,23 +24,23 @@ class OmniReducedParams(OmniParams):
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "roller_shape", "roller_armature",
                                          "roller_damping", "sim.floor_impedance",
                                          "jacobian", "cone", *PAIRS_SET_IMPRATIO)
-    #: MuJoCo's CG solver: the cheaper at the same targets (issue 24 § 4). Nine
-    #: degrees of freedom and 18 contact rows sliding sideways (the capsules) take
-    #: Newton several iterations and line searches a step, each with its Hessian; CG's
-    #: iterations are cheaper (`python -m wmr_mujoco.bench.solver_cost --physics`:
-    #: the cost ratio and every target kept at the seeds validated, the `Newton` row the
-    #: previous default's). :meth:`from_full` copies omni3's solver, as every field.
+    #: MuJoCo's CG solver (issue 24 § 4): cheaper than Newton here (nine degrees of
+    #: freedom and 18 contact rows sliding sideways take Newton several iterations a step,
+    #: each with its Hessian; CG's iterations are cheaper: the cost ratio of the `Newton`
+    #: row of `python -m wmr_mujoco.bench.solver_cost`), and with it every target of the
+    #: robot's families passes at seeds 0 to 3 (`wmr validate omni3_reduced --seed S`; the
+    #: robot has no open target), so it keeps every target Newton met.
+    #: :meth:`from_full` copies omni3's solver, as every field.
     solver: str = "CG"
     #: The cheapest step that meets every target (issue 24 § 4, ``docs/floor-contact.md``
     #: § 4): 1.25 ms, ``contact_timeconst`` 2 Δt (MuJoCo's floor; the collision class's
     #: contact, the tests' stiff one), the capsule pairs at ``t_c = 4 Δt`` = 5 ms
     #: (``builder.CAPSULE_PAIR_STEPS``) and ``ζ = 0.9``. The rest depth ``(1 − d) g ζ²
-    #: t_c²`` lowers the rolling radius and so the rotations' heading (``wmr validate``:
-    #: worst rotate heading 0.73° at 1 ms, 4 ms, ζ = 1; 1.03° at 1.25 ms, ζ = 1, where the
-    #: depth is (5/4)² deeper); ζ = 0.9 keeps it 0.81 · 1.5625 = 1.27× the 1 ms depth
-    #: (rotate 0.89°). At ζ = 0.8 (the 1 ms depth) some translations settled into a
-    #: rocking in which the two driving wheels took turns at no load (their pairs
-    #: touching in the elliptic cone's zero-force state): 1.3 % of path lost.
+    #: t_c²`` lowers the rolling radius and so the rotations' heading: at ζ = 1 the
+    #: rotations lose their heading target, at ζ = 0.8 and below a translation loses its
+    #: position target (the default step's ζ rows of the timestep table there; at ζ = 0.8
+    #: some translations settled into a rocking in which the two driving wheels took turns
+    #: at no load, their pairs touching in the elliptic cone's zero-force state).
     sim: SimParams = SimParams(timestep=0.00125, contact_timeconst=0.0025,
                                floor_dampratio=0.9)
 
