@@ -129,7 +129,7 @@ SETTINGS: tuple[Setting, ...] = (
 
 #: The setting each robot's default replaced (issue 24 § 4), a record: validated beside
 #: the default whatever its cost, so the table shows what the change did to the figures.
-PREVIOUS: dict[str, str] = {"omni3": "jacobian auto", "omni3_reduced": "Newton"}
+PREVIOUS: dict[str, str] = {"omni3": "jacobian auto"}
 
 @dataclasses.dataclass(frozen=True)
 class Cost:

@@ -210,12 +210,13 @@ def test_params_unused_fields_and_conversion():
     assert reduced.rollers_per_row == 5 and isinstance(reduced, OmniParams)
     assert reduced.total_mass == full.total_mass
     assert "roller_shape" in OmniReducedParams.UNUSED
-    # The solver is the reduced model's own (CG, issue 24 § 4); a full parameter set
-    # brings its own (omni3's Newton), which the builder writes only when not Newton.
+    # The solver reaches the model (Newton by default, as omni3's; the builder writes it
+    # only when it is not MuJoCo's default).
     assert "solver" not in OmniReducedParams.UNUSED
-    assert OmniReducedParams().solver == "CG" and reduced.solver == full.solver == "Newton"
-    assert load("omni3_reduced").opt.solver == mujoco.mjtSolver.mjSOL_CG
-    assert load(get_spec("omni3_reduced"), reduced).opt.solver == mujoco.mjtSolver.mjSOL_NEWTON
+    assert OmniReducedParams().solver == reduced.solver == "Newton"
+    assert load("omni3_reduced").opt.solver == mujoco.mjtSolver.mjSOL_NEWTON
+    cg = OmniReducedParams(solver="CG")
+    assert load(get_spec("omni3_reduced"), cg).opt.solver == mujoco.mjtSolver.mjSOL_CG
 
 
 def test_the_default_rests_as_deep_as_zeta_squared_t_c_squared():

@@ -48,9 +48,9 @@ class OmniParams:
             of the roller half-thickness b.
         roller_armature: rotor inertia added to each roller joint, kg·m².
         roller_damping: viscous damping of each roller joint, N·m·s/rad.
-        solver: MuJoCo constraint solver, ``"Newton"`` (default; ``OmniReducedParams``:
-            ``"CG"``), ``"PGS"`` or ``"CG"`` (each stops at MuJoCo's tolerance or at its
-            iteration limit; :mod:`wmr_mujoco.bench.solver_cost` times and validates them).
+        solver: MuJoCo constraint solver, ``"Newton"`` (default), ``"PGS"`` or ``"CG"``
+            (each stops at MuJoCo's tolerance or at its iteration limit;
+            :mod:`wmr_mujoco.bench.solver_cost` times and validates them).
         jacobian: MuJoCo's constraint Jacobian and Newton Hessian storage, ``"sparse"``
             (the default), ``"dense"`` or ``"auto"`` (MuJoCo's choice: dense below 60
             DoF, so dense for omni3's 45). Not a physics parameter: the same equations in

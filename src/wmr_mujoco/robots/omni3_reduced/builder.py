@@ -75,7 +75,7 @@ def build(params: OmniParams, row_fraction: float = CAPSULE_ROW_FRACTION) -> mjc
     omni3's (:func:`wmr_mujoco.robots.omni3.builder.build`); each wheel's hub and
     rollers are one body (:func:`wheel_inertia`) whose collider is a capsule of radius r
     along the axle, touching the floor only through :func:`floor_pairs`. The solver is
-    ``params.solver`` (``OmniReducedParams``: CG).
+    ``params.solver``.
 
     Args:
         params: omni3's parameters.

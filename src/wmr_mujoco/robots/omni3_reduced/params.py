@@ -13,7 +13,9 @@ from wmr_mujoco.robots.omni3.params import OmniParams
 class OmniReducedParams(OmniParams):
     """omni3's parameters (:class:`~wmr_mujoco.models.params.OmniParams`), own defaults.
 
-    omni3's fields, with its defaults but ``solver`` (CG) and ``sim`` (below).
+    omni3's fields, with its defaults but ``sim`` (below). ``solver`` reaches the model
+    (Newton by default: CG is cheaper here but loses a target at some seeds,
+    ``python -m wmr_mujoco.bench.solver_cost --physics``, its ``CG`` row).
 
     The rollers' count, mass, thickness, overlap and row offset still set the lumped
     wheel's mass, inertia and capsule; their collider shape, hinge damping and armature
@@ -24,14 +26,6 @@ class OmniReducedParams(OmniParams):
     UNUSED: ClassVar[tuple[str, ...]] = (*STEERING_FIELDS, "roller_shape", "roller_armature",
                                          "roller_damping", "sim.floor_impedance",
                                          "jacobian", "cone", *PAIRS_SET_IMPRATIO)
-    #: MuJoCo's CG solver (issue 24 § 4): cheaper than Newton here (nine degrees of
-    #: freedom and 18 contact rows sliding sideways take Newton several iterations a step,
-    #: each with its Hessian; CG's iterations are cheaper: the cost ratio of the `Newton`
-    #: row of `python -m wmr_mujoco.bench.solver_cost`), and with it every target of the
-    #: robot's families passes at seeds 0 to 3 (`wmr validate omni3_reduced --seed S`; the
-    #: robot has no open target), so it keeps every target Newton met.
-    #: :meth:`from_full` copies omni3's solver, as every field.
-    solver: str = "CG"
     #: The cheapest step that meets every target (issue 24 § 4, ``docs/floor-contact.md``
     #: § 4): 1.25 ms, ``contact_timeconst`` 2 Δt (MuJoCo's floor; the collision class's
     #: contact, the tests' stiff one), the capsule pairs at ``t_c = 4 Δt`` = 5 ms
