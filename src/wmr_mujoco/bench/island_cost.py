@@ -34,12 +34,12 @@ from wmr_mujoco.bench.default_speed import (
     Timed,
     chosen,
     prepare_timed,
+    wall_seconds,
 )
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.models.paths import DOCS_DIR
 from wmr_mujoco.robots import get_spec
 from wmr_mujoco.sim.stepped_inputs import CONTROL_PERIOD
-from wmr_mujoco.sim.stepping import check_healthy
 
 DOC = DOCS_DIR / "benchmarks.md"
 MARKER = "island cost"
@@ -74,19 +74,13 @@ def with_islands(t: Timed) -> Timed:
 
 
 def run(t: Timed) -> tuple[float, np.ndarray]:
-    """CPU seconds of the prepared run in a bare ``mj_step`` loop, and its final state."""
-    m, d = t.model, t.data
-    mujoco.mj_setState(m, d, t.state, _STATE)
-    per = max(1, round(CONTROL_PERIOD / m.opt.timestep))
-    start = time.process_time()
-    for ctrl in t.controls:
-        d.ctrl[:] = ctrl
-        for _ in range(per):
-            mujoco.mj_step(m, d)
-    cpu = time.process_time() - start
-    check_healthy(m, d)
-    state = np.empty(mujoco.mj_stateSize(m, _STATE))
-    mujoco.mj_getState(m, d, state, _STATE)
+    """CPU seconds of the prepared run in a bare ``mj_step`` loop, and its final state.
+
+    The loop is :func:`~wmr_mujoco.bench.default_speed.wall_seconds` on the CPU clock.
+    """
+    cpu = wall_seconds(t, time.process_time)
+    state = np.empty(mujoco.mj_stateSize(t.model, _STATE))
+    mujoco.mj_getState(t.model, t.data, state, _STATE)
     return cpu, state
 
 
