@@ -108,6 +108,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     from wmr_mujoco.robots import ROBOTS
     from wmr_mujoco.validation.family_report import slowest, spread_text
     from wmr_mujoco.validation.members import run_families
+    from wmr_mujoco.validation.plots import scenario_png
     from wmr_mujoco.validation.pool import time_hints
     from wmr_mujoco.validation.report import (
         check_report_folder,
@@ -134,7 +135,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     start = time.perf_counter()
     try:
         results = run_families(work, progress=progress, seed=args.seed, draws=draws_of(args),
-                               jobs=jobs, hints=time_hints(args.out))
+                               jobs=jobs, hints=time_hints(args.out), draw=scenario_png)
     finally:
         progress_bar.close()
     wall = time.perf_counter() - start

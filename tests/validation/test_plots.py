@@ -57,3 +57,21 @@ def test_a_lane_change_is_drawn_at_unequal_scale_a_square_at_equal_scale():
     square = trace_figure(_pose_trace(np.cos(t), np.sin(t)), "circle").axes[0]
     assert square.get_aspect() == 1.0
     assert all(ax.lines for ax in square.figure.axes)
+
+
+def test_a_figure_drawn_in_memory_is_the_file_plot_trace_writes(tmp_path):
+    """``trace_png`` (what the worker processes draw) and ``plot_trace`` (the report's own
+    drawing) give the same bytes, so a report does not depend on where it was drawn; a
+    trace of fewer than two samples has nothing to draw and writes no file."""
+    import numpy as np
+
+    from wmr_mujoco.validation.plots import plot_trace, trace_png
+
+    x = np.linspace(0.0, 1.0, 11)
+    png = trace_png(_pose_trace(x, x ** 2), "t")
+    assert png is not None and png.startswith(b"\x89PNG")
+    path = plot_trace(_pose_trace(x, x ** 2), "t", tmp_path / "f.png")
+    assert path.read_bytes() == png
+    assert trace_png(_pose_trace(x[:1], x[:1]), "t") is None
+    assert plot_trace(_pose_trace(x[:1], x[:1]), "t", tmp_path / "g.png") is None
+    assert not (tmp_path / "g.png").exists()

@@ -15,15 +15,22 @@ from wmr_mujoco.validation.pool import attach, detach, hand_out_order
 needs_fork = pytest.mark.skipif(not pool.can_fork(), reason="no 'fork' start method here")
 
 
-def _same(a, b):
-    """Rows, errors, seeds and traces equal; members likewise (recursively)."""
+def _same(a, b, trace=True):
+    """Rows, errors, seeds and the family's trace equal; members likewise, traceless.
+
+    ``b`` came through a worker: its members carry no trace (``Detached``), the family's
+    own is its worst member's.
+    """
     assert a.scenario == b.scenario
     assert a.rows == b.rows and a.error == b.error and a.seed == b.seed
     for name, x in a.trace.arrays().items():
-        np.testing.assert_array_equal(x, b.trace.arrays()[name], err_msg=name)
+        if trace:
+            np.testing.assert_array_equal(x, b.trace.arrays()[name], err_msg=name)
+        else:
+            assert b.trace.arrays()[name].size == 0, name
     assert len(a.members) == len(b.members)
     for m, n in zip(a.members, b.members, strict=True):
-        _same(m, n)
+        _same(m, n, trace=False)
 
 
 @needs_fork
@@ -56,6 +63,9 @@ def test_detach_and_attach_give_back_the_result():
     back = attach(detach(res), s)
     _same(res, back)
     assert [m.scenario.draw for m in back.members] == [m.scenario.draw for m in res.members]
+    # the family's trace is one of its members' (the worst's), and it survives
+    assert any(m.trace is res.trace for m in res.members)
+    assert back.trace.arrays()["time"].size > 1
 
 
 def test_hand_out_order_puts_unknown_first_then_longest():
@@ -134,3 +144,35 @@ def test_a_report_drawn_in_two_processes_is_the_same(tmp_path):
     for f in files:
         if f.suffix != ".png":
             assert (one / f).read_text() == (two / f).read_text(), f
+
+
+@needs_fork
+def test_workers_draw_the_figures_the_report_would_and_the_report_writes_them(tmp_path):
+    """With ``draw``, each family comes back with its figure: the very bytes the report
+    draws for the in-process result; ``write_report`` writes them as they are."""
+    from wmr_mujoco.robots import ROBOTS
+    from wmr_mujoco.validation.plots import scenario_png
+    from wmr_mujoco.validation.report import plot_path, write_report
+
+    work = validation_jobs(["single_steer"])
+    one = run_families(work, draws=2, jobs=1)
+    two = run_families(work, draws=2, jobs=2, draw=scenario_png)
+    assert all(r.figure is None for r in one)
+    for a, b in zip(one, two, strict=True):
+        assert b.figure is not None and b.figure == scenario_png(a)
+    write_report(two, tmp_path, robots=ROBOTS, jobs=1)
+    for r in two:
+        assert plot_path(tmp_path, r.scenario).read_bytes() == r.figure
+
+
+def test_a_figure_that_fails_to_draw_is_left_to_the_report():
+    work = validation_jobs(["single_steer"])
+    notes = []
+
+    def broken(result):
+        raise RuntimeError("no fonts")
+
+    (res,) = run_families(work[:1], draws=2, jobs=1, draw=broken, progress=notes.append)
+    assert res.figure is None and res.passed
+    assert any("drawing its figure failed" in n and "no fonts" in n for n in notes)
+

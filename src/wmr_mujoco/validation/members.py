@@ -25,7 +25,7 @@ from wmr_mujoco.models.params import RobotParams
 from wmr_mujoco.sim.engine import STATE_SPEC, simulate_starts
 from wmr_mujoco.validation.family import DEFAULT_SEED, check_draws, check_seed, describe
 from wmr_mujoco.validation.metrics import Trace
-from wmr_mujoco.validation.pool import can_fork, check_jobs, run_pooled
+from wmr_mujoco.validation.pool import Draw, can_fork, check_jobs, run_pooled, with_figure
 from wmr_mujoco.validation.runner import (
     Job,
     Prepared,
@@ -131,7 +131,8 @@ def run_batched(spec: RobotSpec, members: list[Scenario],
 def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = None,
                  on_result: Callable[[ScenarioResult], None] | None = None,
                  seed: int = DEFAULT_SEED, draws: int | None = None, jobs: int = 1,
-                 hints: Mapping[str, float] | None = None) -> list[ScenarioResult]:
+                 hints: Mapping[str, float] | None = None,
+                 draw: Draw | None = None) -> list[ScenarioResult]:
     """Run every scenario's family; a failure does not stop the others.
 
     ``seed`` draws the members (:meth:`Family.sample`), ``draws`` overrides every
@@ -143,7 +144,10 @@ def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = N
     (numbered by completion), besides the tracebacks of failed runs; ``on_result`` sees
     each result as soon as it is there. Each result's ``seconds`` is its family's wall
     time. A robot's families prepared together run as one unit
-    (:mod:`wmr_mujoco.validation.units`).
+    (:mod:`wmr_mujoco.validation.units`). ``draw`` (e.g. the report's
+    :func:`~wmr_mujoco.validation.report.scenario_png`) draws each result's ``figure``
+    where the result was made, after its family was timed: the worker processes draw
+    beside the families instead of after all of them.
 
     Raises:
         ValueError: a bad ``seed``, ``draws`` or ``jobs``, before anything runs.
@@ -153,12 +157,12 @@ def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = N
         check_draws(draws)
     check_jobs(jobs)
     if jobs > 1 and len(work) > 1 and can_fork():
-        return run_pooled(work, jobs, seed, draws, progress, on_result, hints)
+        return run_pooled(work, jobs, seed, draws, progress, on_result, hints, draw)
     results: list[ScenarioResult | None] = [None] * len(work)
     done = 0
     for unit in units(work):  # a robot's families prepared together run together
         for i, result in run_unit(work, unit, seed, draws, progress):
-            results[i] = result
+            results[i] = result if draw is None else with_figure(result, draw, progress)
             done += 1
             announce(result, done, len(work), progress, on_result)
     return results  # type: ignore[return-value]

@@ -7,6 +7,7 @@ written atomically. `wmr validate` draws them when it writes the report
 
 from __future__ import annotations
 
+import io
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -21,6 +22,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from wmr_mujoco.validation.metrics import Series, Trace
+    from wmr_mujoco.validation.runner import ScenarioResult
 
 #: A path whose shorter extent is under this fraction of its longer one is drawn on axes
 #: of unequal scale: at equal scale a lane change of 0.4 m over 16 m is a flat line.
@@ -165,11 +167,11 @@ def trace_figure(trace: Trace, title: str) -> Figure:
     return fig
 
 
-def plot_trace(trace: Trace, title: str, path: Path) -> Path | None:
-    """A scenario's figure: trajectory (physics over analytic), error, slip or states.
+def trace_png(trace: Trace, title: str) -> bytes | None:
+    """The PNG file of :func:`plot_trace`'s figure, in memory (None: nothing to plot).
 
-    A measurement's own curves (``trace.series``) are plotted instead. Returns None when
-    there is nothing to plot.
+    What ``wmr validate``'s worker processes draw beside each family they ran
+    (``ScenarioResult.figure``), for the report to write: the same bytes as the file.
     """
     import matplotlib
 
@@ -180,7 +182,40 @@ def plot_trace(trace: Trace, title: str, path: Path) -> Path | None:
     if tr["time"].size < 2 and not trace.series:
         return None
     fig = trace_figure(trace, title)
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=80)
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=80)
     plt.close(fig)
+    return buffer.getvalue()
+
+
+def write_png(png: bytes, path: Path) -> Path:
+    """Write a PNG file's bytes to ``path`` atomically."""
+    with atomic_path(path) as tmp:
+        tmp.write_bytes(png)
     return path
+
+
+def plot_trace(trace: Trace, title: str, path: Path) -> Path | None:
+    """A scenario's figure: trajectory (physics over analytic), error, slip or states.
+
+    A measurement's own curves (``trace.series``) are plotted instead. Returns None when
+    there is nothing to plot.
+    """
+    png = trace_png(trace, title)
+    return None if png is None else write_png(png, path)
+
+
+def plot_scenario(result: ScenarioResult, path: Path) -> Path | None:
+    """Trajectory (physics over analytic), error over time, slip or further states.
+
+    A measurement scenario's own curves are plotted instead (see :func:`plot_trace`).
+    Returns None when there is nothing to plot. A figure the run drew
+    (``result.figure``) is written as it is.
+    """
+    png = result.figure if result.figure is not None else scenario_png(result)
+    return None if png is None else write_png(png, path)
+
+
+def scenario_png(result: ScenarioResult) -> bytes | None:
+    """:func:`plot_scenario`'s figure as a PNG file's bytes (None: nothing to plot)."""
+    return trace_png(result.trace, result.scenario.key)

@@ -30,6 +30,7 @@ from __future__ import annotations
 import json
 import multiprocessing
 import signal
+import traceback
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -51,7 +52,12 @@ def can_fork() -> bool:
 class Detached:
     """A :class:`ScenarioResult` without its scenarios (what pickles across processes).
 
-    ``draw``: the member's draw (None: the result of the scenario itself).
+    ``draw``: the member's draw (None: the result of the scenario itself). A member
+    comes without its trace: the family's own trace is its worst member's
+    (:func:`~wmr_mujoco.validation.members.family_result`), the one the report plots, and
+    nothing after a run reads any other member's (sending them all, every recorded sample
+    of every member as a small array to pickle and read back, cost the workers and the
+    command's process CPU time the families needed).
     """
 
     draw: Mapping[str, float] | None
@@ -61,21 +67,22 @@ class Detached:
     members: tuple[Detached, ...]
     seed: int | None
     seconds: float | None
+    figure: bytes | None = None
 
 
 def detach(result: ScenarioResult, member: bool = False) -> Detached:
-    """``result`` without its scenario objects (``member``: keep the member's draw)."""
+    """``result`` without its scenario objects (``member``: its draw, without its trace)."""
     return Detached(dict(result.scenario.draw) if member else None, result.rows,
-                    result.trace, result.error,
+                    Trace() if member else result.trace, result.error,
                     tuple(detach(m, True) for m in result.members), result.seed,
-                    result.seconds)
+                    result.seconds, result.figure)
 
 
 def attach(detached: Detached, scenario: Scenario) -> ScenarioResult:
     """The result of ``scenario`` (its members from ``scenario.member(draw)``)."""
     members = [attach(m, scenario.member(m.draw or {})) for m in detached.members]
     return ScenarioResult(scenario, detached.rows, detached.trace, detached.error, members,
-                          detached.seed, detached.seconds)
+                          detached.seed, detached.seconds, detached.figure)
 
 
 def time_hints(folder: Path) -> dict[str, float]:
@@ -103,7 +110,11 @@ def hand_out_order(work: Sequence[Job], hints: Mapping[str, float] | None) -> li
     return unknown + known
 
 
-#: What the forked workers run: the jobs, the seed and the draw count (set before forking).
+#: Draws a result's figure (PNG bytes, None: nothing to draw): ``run_families``'s ``draw``.
+Draw = Callable[[ScenarioResult], "bytes | None"]
+
+#: What the forked workers run: the jobs, the seed, the draw count and the figure drawer
+#: (set before forking).
 _SHARED: dict[str, object] = {}
 
 
@@ -114,11 +125,30 @@ def _init_worker() -> None:
 
 
 def _run_one(j: int) -> tuple[list[tuple[int, Detached]], list[str]]:
-    """Unit ``j`` of the shared jobs, each family timed; the progress notes kept."""
+    """Unit ``j`` of the shared jobs, each family timed (and drawn); the notes kept."""
     notes: list[str] = []
     done = run_unit(_SHARED["work"], _SHARED["units"][j], _SHARED["seed"],  # type: ignore
                     _SHARED["draws"], notes.append)  # type: ignore[arg-type]
+    draw = _SHARED["draw"]
+    if draw is not None:
+        for _, result in done:
+            with_figure(result, draw, notes.append)  # type: ignore[arg-type]
     return [(i, detach(result)) for i, result in done], notes
+
+
+def with_figure(result: ScenarioResult, draw: Draw,
+                progress: Callable[[str], None] | None = None) -> ScenarioResult:
+    """``result`` with its ``figure`` drawn; a figure that fails to draw is left to the report.
+
+    The figure is drawn after the family's ``seconds`` were taken, so they stay its own.
+    """
+    try:
+        result.figure = draw(result)
+    except Exception:  # the report draws it again, and raises there
+        if progress:
+            progress(f"{result.scenario.key}: drawing its figure failed; the report "
+                     f"draws it:\n{traceback.format_exc()}")
+    return result
 
 
 def _call(i: int) -> object:
@@ -152,12 +182,14 @@ def run_calls(calls: Sequence[tuple[Callable[..., object], tuple[object, ...]]],
 def run_pooled(work: Sequence[Job], jobs: int, seed: int, draws: int | None,
                progress: Callable[[str], None] | None = None,
                on_result: Callable[[ScenarioResult], None] | None = None,
-               hints: Mapping[str, float] | None = None) -> list[ScenarioResult]:
+               hints: Mapping[str, float] | None = None,
+               draw: Draw | None = None) -> list[ScenarioResult]:
     """Every family of ``work`` in ``jobs`` forked processes; results in declared order.
 
     ``progress`` gets each family's notes and then ``"[k/n] robot/scenario"`` as the
-    k-th result is back; ``on_result`` sees each result as it is back. ``seed`` and
-    ``draws`` as :func:`~wmr_mujoco.validation.members.run_families` (checked there).
+    k-th result is back; ``on_result`` sees each result as it is back. ``seed``,
+    ``draws`` and ``draw`` as :func:`~wmr_mujoco.validation.members.run_families`
+    (checked there); the workers draw the figures, each after its unit.
 
     Raises:
         ValueError: a bad ``jobs``; or ``fork`` is not available here.
@@ -168,7 +200,7 @@ def run_pooled(work: Sequence[Job], jobs: int, seed: int, draws: int | None,
                          "platform lacks; use jobs=1")
     results: list[ScenarioResult | None] = [None] * len(work)
     groups = units(work)
-    _SHARED.update(work=list(work), units=groups, seed=seed, draws=draws)
+    _SHARED.update(work=list(work), units=groups, seed=seed, draws=draws, draw=draw)
     pool = multiprocessing.get_context("fork").Pool(min(jobs, len(groups)), _init_worker)
     try:
         order = hand_out_order(work, hints)

@@ -23,7 +23,7 @@ from wmr_mujoco.validation.family_report import (
     restore_members,
 )
 from wmr_mujoco.validation.metrics import DEFINITIONS, Row, Trace
-from wmr_mujoco.validation.plots import plot_trace
+from wmr_mujoco.validation.plots import plot_scenario
 from wmr_mujoco.validation.pool import run_calls
 from wmr_mujoco.validation.runner import ScenarioResult
 from wmr_mujoco.validation.scenarios import Scenario
@@ -223,16 +223,6 @@ def slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower().replace("°", "deg")).strip("-")
 
 
-def plot_scenario(result: ScenarioResult, path: Path) -> Path | None:
-    """Trajectory (physics over analytic), error over time, slip or further states.
-
-    A measurement scenario's own curves are plotted instead (see
-    :func:`~wmr_mujoco.validation.plots.plot_trace`). Returns None when there is nothing
-    to plot.
-    """
-    return plot_trace(result.trace, result.scenario.key, path)
-
-
 def _record(r: ScenarioResult) -> dict[str, object]:
     """One scenario's JSON record: verdict, error and every metric."""
     def clean(x: float) -> float | None:
@@ -374,9 +364,11 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, 
                       if r.scenario.key in fresh}
     for png in [a[-1] for a in (*spread_plots.values(), *scenario_plots.values())]:
         png.parent.mkdir(parents=True, exist_ok=True)
+    ready = {k: plot_scenario(*a) for k, a in scenario_plots.items() if a[0].figure}
+    todo = {k: a for k, a in scenario_plots.items() if k not in ready}  # still to draw
     drawn = run_calls([(plot_spreads, a) for a in spread_plots.values()]
-                      + [(plot_scenario, a) for a in scenario_plots.values()], jobs)
-    drawn_scenario = dict(zip(scenario_plots, drawn[len(spread_plots):], strict=True))
+                      + [(plot_scenario, a) for a in todo.values()], jobs)
+    drawn_scenario = ready | dict(zip(todo, drawn[len(spread_plots):], strict=True))
     for robot in robots:
         png = spread_path(folder, robot)
         if png.is_file():

@@ -71,7 +71,9 @@ class ScenarioResult:
 
     For a family: ``rows`` are the worst member's per metric, ``trace`` the worst
     member's, ``members`` every member's own result, ``seed`` the seed of the draws;
-    ``seconds`` the wall time of the whole family (None: not timed).
+    ``seconds`` the wall time of the whole family (None: not timed); ``figure`` the
+    report's figure of the result as a PNG file's bytes, where the run drew it
+    (:func:`~wmr_mujoco.validation.members.run_families`'s ``draw``; None: not drawn).
     """
 
     scenario: Scenario
@@ -81,6 +83,7 @@ class ScenarioResult:
     members: list[ScenarioResult] = field(default_factory=list)
     seed: int | None = None
     seconds: float | None = None
+    figure: bytes | None = None
 
     @property
     def passed(self) -> bool:
