@@ -145,7 +145,7 @@ def run_families(work: Sequence[Job], progress: Callable[[str], None] | None = N
     each result as soon as it is there. Each result's ``seconds`` is its family's wall
     time. A robot's families prepared together run as one unit
     (:mod:`wmr_mujoco.validation.units`). ``draw`` (e.g. the report's
-    :func:`~wmr_mujoco.validation.report.scenario_png`) draws each result's ``figure``
+    :func:`~wmr_mujoco.validation.plots.scenario_png`) draws each result's ``figure``
     where the result was made, after its family was timed: the worker processes draw
     beside the families instead of after all of them.
 

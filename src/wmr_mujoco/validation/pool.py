@@ -55,9 +55,8 @@ class Detached:
     ``draw``: the member's draw (None: the result of the scenario itself). A member
     comes without its trace: the family's own trace is its worst member's
     (:func:`~wmr_mujoco.validation.members.family_result`), the one the report plots, and
-    nothing after a run reads any other member's (sending them all, every recorded sample
-    of every member as a small array to pickle and read back, cost the workers and the
-    command's process CPU time the families needed).
+    nothing after a run reads any other member's (sending them all, every recorded
+    sample a small array to pickle and read back, took CPU time from the families).
     """
 
     draw: Mapping[str, float] | None

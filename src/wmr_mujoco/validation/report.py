@@ -327,11 +327,12 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, 
     ``validation.md``, ``validation.json`` and ``summary.md`` cover this run's scenarios
     and the earlier results of the others (:func:`merge_results`); the JSON says whether
     every registered scenario is there (``complete``), which ``make readme`` requires.
-    Each scenario of this run gets a fresh plot; plots of the covered robots' scenarios
-    that are no longer reported are removed, nobody else's. ``robots`` are the
-    registered robots (which scenarios a complete report has, and their order);
-    ``jobs`` > 1 draws the plots in that many worker processes
-    (:func:`~wmr_mujoco.validation.pool.run_calls`; the same files).
+    Each scenario of this run gets a fresh plot (the figure the run drew, ``figure``,
+    written as it is); plots of the covered robots' scenarios that are no longer
+    reported are removed, nobody else's. ``robots`` are the registered robots (which
+    scenarios a complete report has, and their order); ``jobs`` > 1 draws the other
+    plots in that many worker processes (:func:`~wmr_mujoco.validation.pool.run_calls`;
+    the same files).
 
     Returns:
         Path of the Markdown report.
