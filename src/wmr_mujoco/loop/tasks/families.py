@@ -29,7 +29,8 @@ Stanley) command the speed open loop, so the along-track part of the deviation (
 physics' lag behind the model: its wheel-rate servos' response, and the wheels rolling
 on a radius the contact's rest depth makes shorter than the model's, which grows with
 the floor pairs' ``ζ``, docs/floor-contact.md § 4) is not corrected and follows the
-open-loop fidelity for inputs the open-loop scenarios do not run (starting from rest). A robot without the requirement has its figures reported, not judged.
+open-loop fidelity for inputs the open-loop scenarios do not run (starting from rest).
+A robot without the requirement has its figures reported, not judged.
 
 **Lie bracket** (unicycle command kind): the four-segment cycle of
 :mod:`~wmr_mujoco.loop.tasks.bracket` with ``d = Δ = ε`` drawn in ``EPS_RANGE`` (the
