@@ -141,8 +141,8 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     wall = time.perf_counter() - start
     print(text_table(results, judged_only=not args.all_metrics))
     print(f"\nover each family (seed {args.seed}):\n{spread_text(results)}\n"
-          f"{slowest(results)}; the families took {wall:.1f} s of wall time in {jobs} "
-          f"process{'es' if jobs > 1 else ''}")
+          f"{slowest(results)}; the families and their figures took {wall:.1f} s of wall "
+          f"time in {jobs} process{'es' if jobs > 1 else ''}")
     path = write_report(results, args.out, robots=ROBOTS, jobs=jobs)
     failed = [r.scenario.key for r in results if not r.passed]
     print(f"\n{summary_line(results)}; report: {path}")

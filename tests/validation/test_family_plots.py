@@ -2,6 +2,7 @@
 
 import math
 
+import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
@@ -13,6 +14,13 @@ from wmr_mujoco.validation.family_plots import (
     spread_figure,
 )
 from wmr_mujoco.validation.worst import Spread
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    """Close every figure a test drew (pyplot keeps them open)."""
+    yield
+    plt.close("all")
 
 
 def test_ratios_are_value_over_target_floored_and_inf_where_not_finite():
@@ -68,8 +76,15 @@ def test_the_figure_draws_three_artists_whatever_the_rows():
 
 
 def test_plot_spreads_writes_a_png_or_nothing(tmp_path):
+    from wmr_mujoco.lookup import validation_jobs
+    from wmr_mujoco.validation.members import run_families
+
     assert plot_spreads([], "t", tmp_path / "none.png") is None
-    assert not (tmp_path / "none.png").exists()
+    results = run_families(validation_jobs(["single_steer"])[:1], draws=2, jobs=1)
+    path = plot_spreads(results, "t", tmp_path / "spread.png")
+    assert path == tmp_path / "spread.png"
+    assert path.read_bytes().startswith(b"\x89PNG")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["spread.png"]  # no temporary
 
 
 def test_labels_wider_than_the_figure_widen_it_and_still_fit():
@@ -84,4 +99,5 @@ def test_labels_wider_than_the_figure_widen_it_and_still_fit():
     assert fig.get_figwidth() > WIDTH
     assert ax.get_position().width * fig.get_figwidth() >= PLOT_WIDTH - 1e-9
     assert min(t.get_window_extent(renderer).x0 for t in ax.get_yticklabels()) >= 0.0
-
+    xlabel = ax.xaxis.label.get_window_extent(renderer)  # the axis label fits under it
+    assert 0.0 <= xlabel.x0 and xlabel.x1 <= fig.bbox.width

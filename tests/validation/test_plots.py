@@ -1,5 +1,7 @@
 """The report's figures."""
 
+import pytest
+
 
 def test_plot_series_draws_points_and_curves(tmp_path):
     import numpy as np
@@ -59,19 +61,54 @@ def test_a_lane_change_is_drawn_at_unequal_scale_a_square_at_equal_scale():
     assert all(ax.lines for ax in square.figure.axes)
 
 
-def test_a_figure_drawn_in_memory_is_the_file_plot_trace_writes(tmp_path):
-    """``trace_png`` (what the worker processes draw) and ``plot_trace`` (the report's own
-    drawing) give the same bytes, so a report does not depend on where it was drawn; a
-    trace of fewer than two samples has nothing to draw and writes no file."""
+def test_a_trace_draws_to_png_bytes_or_to_nothing():
+    """``trace_png`` gives a PNG file's bytes; under two samples there is nothing to draw."""
     import numpy as np
 
-    from wmr_mujoco.validation.plots import plot_trace, trace_png
+    from wmr_mujoco.validation.plots import trace_png
 
     x = np.linspace(0.0, 1.0, 11)
     png = trace_png(_pose_trace(x, x ** 2), "t")
-    assert png is not None and png.startswith(b"\x89PNG")
-    path = plot_trace(_pose_trace(x, x ** 2), "t", tmp_path / "f.png")
-    assert path.read_bytes() == png
+    assert png is not None and png.startswith(b"\x89PNG\r\n\x1a\n")
     assert trace_png(_pose_trace(x[:1], x[:1]), "t") is None
-    assert plot_trace(_pose_trace(x[:1], x[:1]), "t", tmp_path / "g.png") is None
-    assert not (tmp_path / "g.png").exists()
+
+
+def test_plot_trace_leaves_no_file_when_nothing_to_plot(tmp_path):
+    import numpy as np
+
+    from wmr_mujoco.validation.plots import plot_trace
+
+    assert plot_trace(_pose_trace(np.zeros(1), np.zeros(1)), "t", tmp_path / "g.png") is None
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_figure_the_run_drew_is_written_as_it_is_not_drawn_again(tmp_path, monkeypatch):
+    """``plot_scenario`` writes ``result.figure``'s bytes (a sentinel here, not a PNG) and
+    draws only where the run drew nothing."""
+    import numpy as np
+
+    from wmr_mujoco.validation import plots
+    from wmr_mujoco.validation.runner import ScenarioResult
+
+    x = np.linspace(0.0, 1.0, 11)
+    result = ScenarioResult(None, [], _pose_trace(x, x), figure=b"sentinel")
+
+    def no_drawing(*_):
+        raise AssertionError("drawn again")
+
+    monkeypatch.setattr(plots, "trace_png", no_drawing)
+    assert plots.plot_scenario(result, tmp_path / "f.png").read_bytes() == b"sentinel"
+
+
+def test_a_failed_write_leaves_neither_the_file_nor_a_temporary_one(tmp_path, monkeypatch):
+    from pathlib import Path
+
+    from wmr_mujoco.validation.plots import write_png
+
+    def full_disk(self, data):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(Path, "write_bytes", full_disk)
+    with pytest.raises(OSError, match="No space"):
+        write_png(b"x", tmp_path / "f.png")
+    assert list(tmp_path.iterdir()) == []

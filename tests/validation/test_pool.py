@@ -147,12 +147,13 @@ def test_a_report_drawn_in_two_processes_is_the_same(tmp_path):
 
 
 @needs_fork
-def test_workers_draw_the_figures_the_report_would_and_the_report_writes_them(tmp_path):
-    """With ``draw``, each family comes back with its figure: the very bytes the report
-    draws for the in-process result; ``write_report`` writes them as they are."""
+def test_workers_draw_the_figures_the_report_would_draw(tmp_path):
+    """With ``draw``, each family comes back from its worker with its figure: the very
+    bytes drawn for the in-process result; and the whole report (text, JSON, every PNG)
+    is the one a run in one process writes."""
     from wmr_mujoco.robots import ROBOTS
     from wmr_mujoco.validation.plots import scenario_png
-    from wmr_mujoco.validation.report import plot_path, write_report
+    from wmr_mujoco.validation.report import write_report
 
     work = validation_jobs(["single_steer"])
     one = run_families(work, draws=2, jobs=1)
@@ -160,19 +161,52 @@ def test_workers_draw_the_figures_the_report_would_and_the_report_writes_them(tm
     assert all(r.figure is None for r in one)
     for a, b in zip(one, two, strict=True):
         assert b.figure is not None and b.figure == scenario_png(a)
-    write_report(two, tmp_path, robots=ROBOTS, jobs=1)
-    for r in two:
+        a.seconds = b.seconds = 1.0  # the one figure that differs between runs
+    write_report(one, tmp_path / "one", robots=ROBOTS, jobs=1)
+    write_report(two, tmp_path / "two", robots=ROBOTS, jobs=2)
+    files = sorted(p.relative_to(tmp_path / "one") for p in (tmp_path / "one").rglob("*")
+                   if p.is_file())
+    assert any(f.suffix == ".png" for f in files)
+    assert files == sorted(p.relative_to(tmp_path / "two")
+                           for p in (tmp_path / "two").rglob("*") if p.is_file())
+    for f in files:
+        assert (tmp_path / "one" / f).read_bytes() == (tmp_path / "two" / f).read_bytes(), f
+
+
+def test_the_report_writes_the_figures_the_run_drew(tmp_path, monkeypatch):
+    """A drawn figure's bytes (a sentinel here) are written as they are, not drawn again."""
+    from wmr_mujoco.robots import ROBOTS
+    from wmr_mujoco.validation import plots
+    from wmr_mujoco.validation.report import plot_path, write_report
+
+    results = run_families(validation_jobs(["single_steer"]), draws=2, jobs=1,
+                           draw=lambda r: b"sentinel " + r.scenario.key.encode())
+
+    def no_drawing(*_):
+        raise AssertionError("drawn again")
+
+    monkeypatch.setattr(plots, "trace_png", no_drawing)
+    write_report(results, tmp_path, robots=ROBOTS, jobs=1)
+    for r in results:
         assert plot_path(tmp_path, r.scenario).read_bytes() == r.figure
 
 
-def test_a_figure_that_fails_to_draw_is_left_to_the_report():
-    work = validation_jobs(["single_steer"])
+@pytest.mark.parametrize("n_jobs", [1, pytest.param(2, marks=needs_fork)])
+def test_a_figure_that_fails_to_draw_is_left_to_the_report(tmp_path, n_jobs):
+    """A failed drawing is said (from the worker too) and the report draws the figure."""
+    from wmr_mujoco.robots import ROBOTS
+    from wmr_mujoco.validation.report import plot_path, write_report
+
+    work = validation_jobs(["single_steer"])[:2]
     notes = []
 
     def broken(result):
         raise RuntimeError("no fonts")
 
-    (res,) = run_families(work[:1], draws=2, jobs=1, draw=broken, progress=notes.append)
-    assert res.figure is None and res.passed
-    assert any("drawing its figure failed" in n and "no fonts" in n for n in notes)
-
+    results = run_families(work, draws=2, jobs=n_jobs, draw=broken, progress=notes.append)
+    assert all(r.figure is None and r.passed for r in results)
+    failed = [n for n in notes if "drawing its figure failed" in n and "no fonts" in n]
+    assert len(failed) == len(work)
+    write_report(results, tmp_path, robots=ROBOTS, jobs=1)
+    for r in results:
+        assert plot_path(tmp_path, r.scenario).read_bytes().startswith(b"\x89PNG")

@@ -24,12 +24,13 @@ if TYPE_CHECKING:
 
 #: Ratios below this are drawn at it (a metric ten thousand times inside its target).
 FLOOR = 1e-4
-#: Height of one row, the figure's width and its top and bottom margins (the sum:
+#: Height of one row, the figure's least width and its top and bottom margins (the sum:
 #: ``MARGINS``), inches; the gap beside the row labels and at the right edge, inches.
 ROW_HEIGHT, WIDTH, TOP, BOTTOM, PAD = 0.28, 11.0, 0.35, 0.75, 0.15
 MARGINS = TOP + BOTTOM
-#: Least width of the plot itself, inches (a figure whose labels leave less is wider).
-PLOT_WIDTH = 5.0
+#: Least width of the plot itself, inches (a figure whose labels leave less is wider):
+#: room for its 10-point axis label under it.
+PLOT_WIDTH = 6.0
 #: Font size of the row labels, points; resolution of the file, dots per inch.
 LABEL_SIZE, DPI = 7, 80
 
@@ -47,21 +48,24 @@ def plot_spreads(results: Sequence[ScenarioResult], title: str, path: Path) -> P
             for res in results for s in judged_spreads(res)]
     if not rows:
         return None
+    fig = spread_figure(rows, title)  # selects the Agg backend
     import matplotlib.pyplot as plt
 
-    fig = spread_figure(rows, title)
-    with atomic_path(Path(path)) as tmp:
-        fig.savefig(tmp, dpi=DPI)
-    plt.close(fig)
+    try:
+        with atomic_path(Path(path)) as tmp:
+            fig.savefig(tmp, dpi=DPI, format="png")
+    finally:
+        plt.close(fig)
     return Path(path)
 
 
 def spread_figure(rows: Sequence[tuple[str, Spread]], title: str) -> Figure:
     """The figure of :func:`plot_spreads`: one row per ``(label, spread)``, top down.
 
-    Three artists in all (the members' dots, the medians' bars, the worst members'
-    rings), and margins set from the widest row label (measured, not laid out by
-    ``tight_layout``, which draws every label twice): a robot's figure has a hundred rows.
+    Three artists for all the rows (the members' dots, the medians' bars, the worst
+    members' rings) besides the target's line, and margins set from the widest row label
+    (measured, not laid out by ``tight_layout``, which draws every label twice): a
+    robot's figure has a hundred rows.
     """
     import matplotlib
 
@@ -71,7 +75,9 @@ def spread_figure(rows: Sequence[tuple[str, Spread]], title: str) -> Figure:
     height = MARGINS + ROW_HEIGHT * len(rows)
     fig, ax = plt.subplots(figsize=(WIDTH, height))
     rng = np.random.default_rng(0)  # jitter only: where a dot sits within its row
-    shown, ys, colours = [], [], []
+    shown: list[np.ndarray] = []
+    ys: list[np.ndarray] = []
+    colours: list[str] = []
     for k, (_, s) in enumerate(rows):
         r = ratios(s.values, s.target or math.nan)
         shown.append(np.where(np.isfinite(r), r, 1e3))

@@ -161,8 +161,9 @@ def restore_members(record: Mapping[str, object] | None, result: ScenarioResult
 def slowest(results: Sequence[ScenarioResult], n: int = 5) -> str:
     """``K families, X s summed; slowest: robot/scenario (N draws) Y s, ...``.
 
-    Each family's wall time (``ScenarioResult.seconds``, also in the JSON report), summed
-    over the families: the run's wall time in one process, more than it with ``--jobs``.
+    Each family's wall time (``ScenarioResult.seconds``, also in the JSON report, without
+    drawing its figure), summed over the families: about the run's wall time in one
+    process, more than it with ``--jobs``.
     """
     timed = [r for r in results if r.seconds is not None]
     top = sorted(timed, key=lambda r: -(r.seconds or 0.0))[:n]

@@ -9,7 +9,8 @@ family are prepared on one compiled model and simulated together in threaded
 recorded states per call), then measured one by one; a measurement scenario's members
 each go through its ``evaluate``. The family's rows are its worst member's per metric
 (:mod:`wmr_mujoco.validation.worst`): a failing member fails the scenario. Every
-member's own result is kept (``ScenarioResult.members``) for the report's spread.
+member's own result is kept (``ScenarioResult.members``) for the report's spread
+(after a run in worker processes, without its trace: :mod:`~wmr_mujoco.validation.pool`).
 """
 
 from __future__ import annotations

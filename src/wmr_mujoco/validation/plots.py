@@ -1,8 +1,10 @@
 """The report's figures: a scenario's states against the model, or a measurement's curves.
 
 Drawing only (matplotlib's Agg backend, imported when a figure is drawn); every file is
-written atomically. `wmr validate` draws them when it writes the report
-(:func:`wmr_mujoco.validation.report.write_report`).
+written atomically. `wmr validate` draws each scenario's figure as its family is done
+(``run_families``' ``draw``: :func:`scenario_png`, in the worker process that ran it), and
+the report (:func:`wmr_mujoco.validation.report.write_report`) writes those and draws
+any other.
 """
 
 from __future__ import annotations
@@ -170,8 +172,8 @@ def trace_figure(trace: Trace, title: str) -> Figure:
 def trace_png(trace: Trace, title: str) -> bytes | None:
     """The PNG file of :func:`plot_trace`'s figure, in memory (None: nothing to plot).
 
-    What ``wmr validate``'s worker processes draw beside each family they ran
-    (``ScenarioResult.figure``), for the report to write: the same bytes as the file.
+    What ``wmr validate`` draws as each family is done (``ScenarioResult.figure``), for
+    the report to write: the bytes :func:`plot_trace` writes.
     """
     import matplotlib
 
@@ -182,9 +184,11 @@ def trace_png(trace: Trace, title: str) -> bytes | None:
     if tr["time"].size < 2 and not trace.series:
         return None
     fig = trace_figure(trace, title)
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=80)
-    plt.close(fig)
+    try:
+        buffer = io.BytesIO()
+        fig.savefig(buffer, format="png", dpi=80)
+    finally:  # a failed drawing leaves no open figure behind in a long-lived process
+        plt.close(fig)
     return buffer.getvalue()
 
 
@@ -198,8 +202,8 @@ def write_png(png: bytes, path: Path) -> Path:
 def plot_trace(trace: Trace, title: str, path: Path) -> Path | None:
     """A scenario's figure: trajectory (physics over analytic), error, slip or states.
 
-    A measurement's own curves (``trace.series``) are plotted instead. Returns None when
-    there is nothing to plot.
+    A measurement's own curves (``trace.series``) are plotted instead. The file is a PNG
+    whatever ``path``'s suffix. Returns None when there is nothing to plot.
     """
     png = trace_png(trace, title)
     return None if png is None else write_png(png, path)

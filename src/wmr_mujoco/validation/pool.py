@@ -12,13 +12,16 @@ ran before it there). What comes back in completion order is only the progress l
 
 The workers are forked from the command's process, so that they share its registry
 entries (scenarios carry their robots' code, which need not pickle); a result comes back
-without its scenarios (:class:`Detached`), which the parent puts back from its own. Where
+without its scenarios (:class:`Detached`), which the parent puts back from its own, and
+with its members' rows, draws and errors but not their traces (the family's own trace,
+its worst member's, comes back; with ``draw``, its figure too, drawn in the worker). Where
 ``fork`` is not available (Windows), or for one job, the families run in this process.
 
 Interrupts: the workers ignore Ctrl-C and die of SIGTERM; the command's process gets
 both, and on its way out terminates the pool (:func:`run_pooled`'s ``finally``). Workers
-write nothing, so an interrupted run leaves nothing behind (the report is written by the
-command's process, atomically, after every family is done).
+write nothing (a figure comes back as a PNG file's bytes), so an interrupted run leaves
+nothing behind (the report is written by the command's process, atomically, after every
+family is done).
 
 Order of hand-out: the longest families first where an earlier run's per-family times
 are known (``hints``, from the report already in the output folder), families without
@@ -57,6 +60,7 @@ class Detached:
     (:func:`~wmr_mujoco.validation.members.family_result`), the one the report plots, and
     nothing after a run reads any other member's (sending them all, every recorded
     sample a small array to pickle and read back, took CPU time from the families).
+    ``figure``: the result's figure as drawn in the worker (``ScenarioResult.figure``).
     """
 
     draw: Mapping[str, float] | None

@@ -356,7 +356,8 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, 
         lines += ["## Open targets", "", "Required, not yet met by any model: shown with "
                   "their figures, counted, not judged.", "", open_table(merged), ""]
     lines += ["## Families", "", families_markdown(merged), ""]
-    # The fresh plots first, drawn in ``jobs`` processes (each written atomically).
+    # The fresh plots first: those the run drew written here, the others drawn in ``jobs``
+    # processes (each file written atomically).
     by_robot = {robot: [r for r in merged if r.scenario.robot == robot] for robot in robots}
     spread_plots = {robot: (mine, f"{robot}: each family's members against their targets",
                             spread_path(folder, robot)) for robot, mine in by_robot.items()
@@ -365,7 +366,8 @@ def write_report(results: Sequence[ScenarioResult], folder: Path = REPORTS_DIR, 
                       if r.scenario.key in fresh}
     for png in [a[-1] for a in (*spread_plots.values(), *scenario_plots.values())]:
         png.parent.mkdir(parents=True, exist_ok=True)
-    ready = {k: plot_scenario(*a) for k, a in scenario_plots.items() if a[0].figure}
+    ready = {k: plot_scenario(*a) for k, a in scenario_plots.items()
+             if a[0].figure is not None}
     todo = {k: a for k, a in scenario_plots.items() if k not in ready}  # still to draw
     drawn = run_calls([(plot_spreads, a) for a in spread_plots.values()]
                       + [(plot_scenario, a) for a in todo.values()], jobs)

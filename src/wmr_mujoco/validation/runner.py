@@ -70,7 +70,8 @@ class ScenarioResult:
     """Rows and trace of one scenario (``error`` set when it diverged or raised).
 
     For a family: ``rows`` are the worst member's per metric, ``trace`` the worst
-    member's, ``members`` every member's own result, ``seed`` the seed of the draws;
+    member's, ``members`` every member's own result (traceless after worker processes),
+    ``seed`` the seed of the draws;
     ``seconds`` the wall time of the whole family (None: not timed); ``figure`` the
     report's figure of the result as a PNG file's bytes, where the run drew it
     (:func:`~wmr_mujoco.validation.members.run_families`'s ``draw``; None: not drawn).

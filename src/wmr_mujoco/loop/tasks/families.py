@@ -27,9 +27,10 @@ corrected, not integrated, so it stays below the open-loop bound over the same p
 ``p/100 · L``. The deviation is reported, not judged: the path followers (pure pursuit,
 Stanley) command the speed open loop, so the along-track part of the deviation (the
 physics' lag behind the model: its wheel-rate servos' response, and the wheels rolling
-on a radius the contact's rest depth makes shorter than the model's, which grows with
-the floor pairs' ``ζ``, docs/floor-contact.md § 4) is not corrected and follows the
-open-loop fidelity for inputs the open-loop scenarios do not run (starting from rest).
+on a radius the contact's rest depth makes shorter than the model's, the more so the
+larger the floor pairs' ``ζ`` and the step, docs/floor-contact.md § 4) is not corrected
+and follows the open-loop fidelity for inputs the open-loop scenarios do not run
+(starting from rest).
 A robot without the requirement has its figures reported, not judged.
 
 **Lie bracket** (unicycle command kind): the four-segment cycle of
