@@ -219,12 +219,12 @@ def test_sync_kinematics_gives_the_frames_and_velocities_of_mj_forward(robot):
     np.testing.assert_array_equal(data.cvel, full.cvel)
 
 
-def test_a_step_is_redone_only_for_what_reads_it_and_records_the_same():
-    """omni3_reduced has no probe and no lateral wheel: its steps are not redone.
+def test_a_step_is_rebuilt_only_for_what_reads_it_and_records_the_same():
+    """omni3_reduced has no probe and no lateral wheel: its steps are not rebuilt.
 
-    A probe that reads nothing forces the re-steps; every recorded time, pose and
+    A probe that reads nothing forces the rebuilt steps; every recorded time, pose and
     analytic state and every judged row must come out the same (equal floats: the
-    recorded states are the rollout's, the re-step only feeds what reads it).
+    recorded states are the rollout's, the rebuilt step only feeds what reads it).
     """
     import dataclasses
 
@@ -251,18 +251,19 @@ def test_a_step_is_redone_only_for_what_reads_it_and_records_the_same():
         trace = Trace()
         metrics = measure_metrics(prep, simulate(prep.model, prep.data, prep.controls), trace)
         out.append((metrics, trace.arrays()))
-    assert seen, "the probe forces the re-steps"
+    assert seen, "the probe forces the rebuilt steps"
     assert out[0][0] == out[1][0]
     for key in ("time", "sim", "analytic"):
         np.testing.assert_array_equal(out[0][1][key], out[1][1][key])
 
 
 def test_a_probe_with_after_is_resampled_only_after_it():
-    """A probe's ``after`` spares the re-steps up to it; the probe sees the same samples.
+    """A probe's ``after`` spares the rebuilt steps up to it; it sees the same samples.
 
     One probe reads every sample, the other ignores those at t <= 0.3 s (its ``after``):
-    the second run redoes only the steps after 0.3 s (counted at MuJoCo's step), and the
-    samples it is given after 0.3 s are those the first saw there.
+    the second run rebuilds only the steps after 0.3 s (counted at MuJoCo's collision
+    stage, which each rebuilt step calls once), and the samples it is given after 0.3 s
+    are those the first saw there.
     """
     import dataclasses
 
@@ -280,7 +281,8 @@ def test_a_probe_with_after_is_resampled_only_after_it():
 
         def observe(self, sample):
             if sample.t > getattr(self, "after", -1.0):
-                self.seen.append((sample.k, sample.data.qacc.copy()))
+                self.seen.append((sample.k, np.r_[sample.data.qvel,
+                                                     sample.data.xanchor.ravel()]))
 
         def metrics(self):
             return []
@@ -295,22 +297,22 @@ def test_a_probe_with_after_is_resampled_only_after_it():
         assert first_read([probe], prep.adapter) == getattr(probe, "after", -np.inf)
         states = simulate(prep.model, prep.data, prep.controls)
         steps = []
-        original = mujoco.mj_step
+        original = mujoco.mj_collision
         try:
-            mujoco.mj_step = lambda m, d, *a, s=steps, f=original: (s.append(d.time),
-                                                                    f(m, d, *a))[1]
+            mujoco.mj_collision = lambda m, d, s=steps, f=original: (s.append(d.time),
+                                                                     f(m, d))[1]
             measure_metrics(prep, states, Trace())
         finally:
-            mujoco.mj_step = original
+            mujoco.mj_collision = original
         runs.append((probe.seen, steps, prep))
     (every, steps_all, prep), (late, steps_late, _) = runs
     dt, settle = prep.model.opt.timestep, s.settle
     assert len(steps_late) < len(steps_all)
-    assert all(t - settle > 0.3 - dt for t in steps_late)  # each redone step starts after 0.3 s
+    assert all(t - settle > 0.3 - dt for t in steps_late)  # each rebuilt step starts after 0.3 s
     assert [k for k, _ in late] == [k for k, _ in every if k * dt > 0.3]
     for (_, a), (_, b) in zip(late, [x for x in every if x[0] * dt > 0.3], strict=True):
         np.testing.assert_array_equal(a, b)
-    assert first_read([], prep.adapter) == np.inf  # nothing reads: no re-step
+    assert first_read([], prep.adapter) == np.inf  # nothing reads: no rebuilt step
 
 
 @pytest.mark.parametrize("robot, name", [("omni3", "translate+rotate"),
@@ -322,8 +324,8 @@ def test_an_adapter_reading_frames_alone_records_the_same_without_the_com_stages
 
     Its ``sim_state`` reads poses and joint positions, which mj_kinematics alone gives;
     the run is measured with the flag and with it forced off, and every recorded time,
-    pose and analytic state and every metric must be equal (the re-steps and probes
-    see their own full mj_step either way).
+    pose and analytic state and every metric must be equal (the rebuilt steps and
+    probes see their own full forward stages either way).
     """
     import dataclasses
 
@@ -335,9 +337,11 @@ def test_an_adapter_reading_frames_alone_records_the_same_without_the_com_stages
 
     spec = get_spec(robot)
     s = dataclasses.replace(next(x for x in spec.scenarios if x.name == name), duration=0.5)
-    calls = []
-    com_pos = mujoco.mj_comPos
+    calls, rebuilt = [], []  # mj_comPos calls; rebuilt steps (one mj_comPos each)
+    com_pos, collision = mujoco.mj_comPos, mujoco.mj_collision
     monkeypatch.setattr(mujoco, "mj_comPos", lambda m, d: (calls.append(1), com_pos(m, d)))
+    monkeypatch.setattr(mujoco, "mj_collision",
+                        lambda m, d: (rebuilt.append(1), collision(m, d)))
     out = []
     for frames_only in (True, False):
         prep = prepare(spec, s)
@@ -345,10 +349,11 @@ def test_an_adapter_reading_frames_alone_records_the_same_without_the_com_stages
         if not frames_only:
             monkeypatch.setattr(type(prep.adapter), "frames_only", False)
         calls.clear()
+        rebuilt.clear()
         trace = Trace()
         metrics = measure_metrics(prep, simulate(prep.model, prep.data, prep.controls), trace)
-        out.append((metrics, trace.arrays(), len(calls)))
-    assert out[0][2] == 0 < out[1][2]  # the flag leaves the stages out
+        out.append((metrics, trace.arrays(), len(calls) - len(rebuilt)))
+    assert out[0][2] == 0 < out[1][2]  # the flag leaves the recording's stages out
     assert out[0][0] == out[1][0]
     for key in ("time", "sim", "analytic"):
         assert out[0][1][key].tobytes() == out[1][1][key].tobytes()

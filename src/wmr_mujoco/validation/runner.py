@@ -50,6 +50,7 @@ from wmr_mujoco.validation.metrics import (
     lateral_slip,
     slip_metrics,
 )
+from wmr_mujoco.validation.resample import restore_step, sync_kinematics
 from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 from wmr_mujoco.validation.spec import RobotSpec
 from wmr_mujoco.validation.units import announce
@@ -289,14 +290,14 @@ def measure(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Row]:
 def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Metric]:
     """Metrics of a simulated scenario from its states (see :func:`simulate`).
 
-    Every :data:`RECORD_EVERY`-th step is redone from its stored start, so that contacts
-    and frames belong to the configuration whose constraints produced the new
-    velocities; the robot's probes and the lateral-slip measurement see it there (where
-    neither reads it, before every probe's ``after`` (:func:`first_read`) or without
-    either, the step is not redone: the simulation's own data were checked for
-    warnings, its states for NaN), and the
-    pose at the step's end is recorded beside the analytic state at the same time (its
-    frames and velocities from :func:`sync_kinematics`).
+    Every :data:`RECORD_EVERY`-th step is rebuilt as ``mj_step`` left it, from its stored
+    start and end states (:func:`~wmr_mujoco.validation.resample.restore_step`: contacts
+    and frames of the configuration whose constraints produced the new velocities,
+    without solving them again); the robot's probes and the lateral-slip measurement see
+    it there (where neither reads it, before every probe's ``after``
+    (:func:`first_read`) or without either, the step is not rebuilt), and the pose at the
+    step's end is recorded beside the analytic state at the same time (its frames and
+    velocities from :func:`sync_kinematics`).
 
     Raises:
         ValueError: the robot has no judge for the scenario's kind.
@@ -316,7 +317,7 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
     for k in range(nstep):
         if k % RECORD_EVERY != RECORD_EVERY - 1 and k != nstep - 1:
             continue
-        if k * dt > read_after:  # else nothing reads the redone step
+        if k * dt > read_after:  # else nothing reads the rebuilt step
             _restep(prep, states, k, trace, probes)
         else:
             trace.slip.append(np.zeros(0))
@@ -334,12 +335,12 @@ def measure_metrics(prep: Prepared, states: np.ndarray, trace: Trace) -> list[Me
 
 
 def first_read(probes: Sequence[Probe], adapter: Adapter) -> float:
-    """The time after which a redone step is read: the probes' earliest ``after``, s.
+    """The time after which a rebuilt step is read: the probes' earliest ``after``, s.
 
     A probe with an ``after`` attribute ignores the samples at ``t <= after``
     (:class:`~wmr_mujoco.validation.traces.Probe`); one without it reads every sample, as
     does the lateral slip of an adapter's ``lateral_wheels`` (``-inf``). ``inf``: nothing
-    reads a redone step.
+    reads a rebuilt step.
     """
     if adapter.lateral_wheels:
         return -math.inf
@@ -348,35 +349,15 @@ def first_read(probes: Sequence[Probe], adapter: Adapter) -> float:
 
 def _restep(prep: Prepared, states: np.ndarray, k: int, trace: Trace,
             probes: Sequence[Probe]) -> None:
-    """Step ``k`` redone from its stored start: lateral slip and the probes see it."""
-    model, data, adapter = prep.model, prep.data, prep.adapter
-    # The warm start is not part of the stored state: start the solver from zero so
-    # that the measurement does not depend on how the states were produced.
-    mujoco.mj_setState(model, data, states[k], STATE_SPEC)
-    data.qacc_warmstart[:] = 0.0
+    """Step ``k`` as ``mj_step`` left it (:func:`restore_step`): slip and probes see it."""
+    model, data = prep.model, prep.data
     data.ctrl[:] = prep.controls[k]
-    mujoco.mj_step(model, data)
-    check_healthy(model, data)
-    trace.slip.append(lateral_slip(model, data, adapter.lateral_wheels))
+    restore_step(model, data, states[k], states[k + 1])
+    trace.slip.append(lateral_slip(model, data, prep.adapter.lateral_wheels))
     sample = Sample(k, k * model.opt.timestep, model, data, prep.inputs[k],
                     prep.controls[k], prep.analytic[k])
     for probe in probes:
         probe.observe(sample)
-
-
-def sync_kinematics(model: mujoco.MjModel, data: mujoco.MjData,
-                    frames_only: bool = False) -> None:
-    """Frames, centres of mass and body velocities of the state in ``data``.
-
-    The stages of ``mj_forward`` that an adapter's ``sim_state`` reads (``mj_kinematics``,
-    ``mj_comPos``, ``mj_comVel``: poses, ``mj_objectVelocity``), the same floats as there,
-    without the collision and constraint stages it does not read; ``frames_only``: the
-    frames alone (an adapter whose ``sim_state`` reads poses and joint positions).
-    """
-    mujoco.mj_kinematics(model, data)
-    if not frames_only:
-        mujoco.mj_comPos(model, data)
-        mujoco.mj_comVel(model, data)
 
 
 def run_all(work: Sequence[Job], progress: Callable[[str], None] | None = None,

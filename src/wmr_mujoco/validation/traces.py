@@ -98,7 +98,7 @@ class Probe(Protocol):
     """A per-robot measurement taken during a run (e.g. a free wheel's rate).
 
     A probe may have an ``after`` attribute (s): it ignores the samples at ``t <= after``,
-    and the runner need not redo those steps for it
+    and the runner need not rebuild those steps for it
     (:func:`~wmr_mujoco.validation.runner.first_read`); without it, every sample is read.
     """
 
