@@ -157,7 +157,11 @@ def trace_figure(trace: Trace, title: str) -> Figure:
     tr = trace.arrays()
     n = _panels(trace, tr)
     width = n * PANEL_WIDTH
-    fig, axes = plt.subplots(1, n, figsize=(width, FIGURE_HEIGHT), squeeze=False)
+    # Titles at a fixed height: nothing is drawn above an axes, so matplotlib's search
+    # for a free height (the bounding boxes of every tick label) finds the same place,
+    # at a seventh of the figure's cost (the same PNG bytes).
+    with matplotlib.rc_context({"axes.titley": 1.0}):
+        fig, axes = plt.subplots(1, n, figsize=(width, FIGURE_HEIGHT), squeeze=False)
     if trace.series:
         _plot_series(axes[0], trace.series)
     else:
