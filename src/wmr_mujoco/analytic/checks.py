@@ -17,8 +17,12 @@ def as_array(name: str, value: object, shape: tuple[int | None, ...]) -> np.ndar
     if type(value) is np.ndarray and value.dtype == np.float64 and (
             value.shape == shape or (value.ndim == len(shape) and all(
                 s is None or s == n for s, n in zip(shape, value.shape, strict=True)))):
-        # Fast path for the arrays the integrators pass around.
-        if not np.isfinite(value).all():
+        # Fast path for the arrays the integrators pass around. A small one is summed in
+        # Python floats (no numpy call, no floating-point flags): NaN and ±Inf survive a
+        # sum, so a finite sum means finite entries; a sum that overflowed is checked
+        # entry by entry.
+        if not ((value.size <= 16 and math.isfinite(sum(value.ravel().tolist())))
+                or np.isfinite(value).all()):
             raise ValueError(f"{name} contains non-finite values: "
                              f"{value[~np.isfinite(value)][:3]}")
         return value

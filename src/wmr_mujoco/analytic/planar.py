@@ -41,7 +41,10 @@ def yaw_from_rotation(xmat: np.ndarray) -> float:
     For ``R = R_z(ψ) R_y(θ) R_x(φ)`` the first column is
     ``(cos ψ cos θ, sin ψ cos θ, −sin θ)``, so the ratio gives ψ for any ``|θ| < π/2``.
     """
-    m = np.asarray(xmat, float).reshape(3, 3)
+    m = np.asarray(xmat, float)
+    if m.shape == (9,):  # MuJoCo's flat rows: R₁₀ and R₀₀ at 3 and 0
+        return float(np.arctan2(m[3], m[0]))
+    m = m.reshape(3, 3)
     return float(np.arctan2(m[1, 0], m[0, 0]))
 
 

@@ -10,6 +10,7 @@ adapter beyond this protocol.
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Protocol
 
@@ -84,16 +85,35 @@ def body_pose(model: mujoco.MjModel, data: mujoco.MjData, body: int) -> np.ndarr
                      yaw_from_rotation(data.xmat[body])])
 
 
+#: The last model :func:`base_site` looked up (weakly held) and its ``base`` site's id,
+#: read and replaced as one tuple: a run reads one model's pose many times.
+_BASE_SITE: list[tuple[weakref.ref[mujoco.MjModel] | None, int]] = [(None, -1)]
+
+
+def base_site(model: mujoco.MjModel) -> int:
+    """Id of the model's ``base`` site (looked up by name once per model in a row).
+
+    Raises:
+        KeyError: the model has no site named ``base``.
+    """
+    ref, site = _BASE_SITE[0]
+    if ref is not None and ref() is model:
+        return site
+    site = model.site("base").id
+    _BASE_SITE[0] = (weakref.ref(model), site)
+    return site
+
+
 def base_pose(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
     """World ``(x, y, heading)`` of the ``base`` site."""
-    site = model.site("base").id
-    return np.array([data.site_xpos[site][0], data.site_xpos[site][1],
-                     yaw_from_rotation(data.site_xmat[site])])
+    site = base_site(model)
+    x, y, _ = data.site_xpos[site].tolist()
+    return np.array([x, y, yaw_from_rotation(data.site_xmat[site])])
 
 
 def body_twist(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
     """Body-frame ``(u, v, r)`` of the ``base`` site."""
-    site = model.site("base").id
+    site = base_site(model)
     vel = np.zeros(6)
     mujoco.mj_objectVelocity(model, data, mujoco.mjtObj.mjOBJ_SITE, site, vel, 1)
     return np.array([vel[3], vel[4], vel[2]])

@@ -17,6 +17,7 @@ of radius L, each driving tangentially (β_i = α_i + 90°), give ``H = J / r`` 
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -62,6 +63,17 @@ class WheelLayout:
     def n(self) -> int:
         """Number of wheels."""
         return self.positions.shape[0]
+
+    @functools.cached_property
+    def slide_terms(self) -> tuple[tuple[float, float, float, float, float], ...]:
+        """Per wheel ``(x_i, y_i, cos(β_i+γ_i), sin(β_i+γ_i), tan γ_i)``, as Python floats.
+
+        What :func:`roller_slide_speeds` reads of the layout (computed once).
+        """
+        ang = self.drive_angles + self.roller_angles
+        x, y = self.positions.T
+        return tuple(zip(x.tolist(), y.tolist(), np.cos(ang).tolist(), np.sin(ang).tolist(),
+                         np.tan(self.roller_angles).tolist(), strict=True))
 
 
 def symmetric_layout(radius: float, distance: float, n: int = 3, first_angle: float = 0.0,
@@ -134,13 +146,14 @@ def roller_slide_speeds(layout: WheelLayout, nu: np.ndarray) -> np.ndarray:
     For omni wheels (γ = 0) it is the speed along the axle ``a_i · v_c``,
     ``a_i = (sin β_i, −cos β_i)``. A roller of rolling radius ρ spins at this speed / ρ.
     """
-    u, v, r = as_array("nu", nu, (3,))
-    x, y = layout.positions.T
-    vx, vy = u - r * y, v + r * x
-    ang = layout.drive_angles + layout.roller_angles
-    along = np.cos(ang) * vx + np.sin(ang) * vy
-    across = -np.sin(ang) * vx + np.cos(ang) * vy
-    return -(across + np.tan(layout.roller_angles) * along)
+    u, v, r = as_array("nu", nu, (3,)).tolist()
+    # Per wheel in Python floats: the elementwise arithmetic of the (n,) arrays, the same
+    # floats; the layout's cosines, sines and tangents once per layout.
+    out = []
+    for x, y, c, s, t in layout.slide_terms:
+        vx, vy = u - r * y, v + r * x
+        out.append(-((-s * vx + c * vy) + t * (c * vx + s * vy)))
+    return np.array(out)
 
 
 def rotation(psi: float) -> np.ndarray:
@@ -151,13 +164,13 @@ def rotation(psi: float) -> np.ndarray:
 
 def body_to_world(psi: float, nu: np.ndarray) -> np.ndarray:
     """``(Ẋ, Ẏ, ψ̇) = (Rot(ψ)(u, v), r)``."""
-    u, v, r = as_array("nu", nu, (3,))
+    u, v, r = as_array("nu", nu, (3,)).tolist()
     c, s = math.cos(psi), math.sin(psi)  # scalar arithmetic: the integrators' hot path
     return np.array([c * u - s * v, s * u + c * v, r])
 
 
 def world_to_body(psi: float, world_rates: np.ndarray) -> np.ndarray:
     """``ν = (Rot(ψ)ᵀ(Ẋ, Ẏ), ψ̇)``."""
-    x, y, r = as_array("world_rates", world_rates, (3,))
+    x, y, r = as_array("world_rates", world_rates, (3,)).tolist()
     c, s = math.cos(psi), math.sin(psi)
     return np.array([c * x + s * y, -s * x + c * y, r])

@@ -10,6 +10,7 @@ the body twist its input commands.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -57,17 +58,48 @@ def roller_contacts(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelI
     """
     if data.ncon == 0:
         return None
-    wheel_of_geom, joint_of_geom = rollers if rollers is not None else roller_geoms(model,
-                                                                                   info)
+    index = roller_index(model, info, rollers)
+    return _contacts(data, index, np.asarray(slide_speeds, float))
+
+
+@dataclass(frozen=True)
+class RollerIndex:
+    """Per geom what :func:`roller_contacts` reads of the model: built once per model.
+
+    Attributes:
+        world: (ngeom,) whether the geom is on the world body (the floor's side).
+        columns: (ngeom, 3) the geom's wheel (−1: not a roller), its roller's hinge and
+            that hinge's dof (−1: not a roller).
+    """
+
+    world: np.ndarray
+    columns: np.ndarray
+
+
+def roller_index(model: mujoco.MjModel, info: OmniModelInfo,
+                 rollers: tuple[np.ndarray, np.ndarray] | None = None) -> RollerIndex:
+    """The :class:`RollerIndex` of a model (``rollers``: its :func:`roller_geoms`, or None)."""
+    wheel, joint = rollers if rollers is not None else roller_geoms(model, info)
+    dof = np.where(wheel >= 0, model.jnt_dofadr[np.where(wheel >= 0, joint, 0)], -1)
+    return RollerIndex(model.geom_bodyid == 0, np.stack([wheel, joint, dof], axis=1))
+
+
+def _contacts(data: mujoco.MjData, index: RollerIndex, slide: np.ndarray
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
+    """:func:`roller_contacts` with the model's index built (``slide``: a float array)."""
+    ncon = data.ncon
+    if ncon == 0:
+        return None
     con = data.contact
-    g1, g2 = con.geom1[:data.ncon], con.geom2[:data.ncon]
-    geom = np.where(model.geom_bodyid[g1] == 0, g2, g1)
-    wheel = wheel_of_geom[geom]
-    roller = wheel >= 0
-    jnt = joint_of_geom[geom[roller]]
-    rel = con.pos[:data.ncon][roller] - data.xanchor[jnt]
-    return (rel, data.xaxis[jnt], np.abs(np.asarray(slide_speeds, float)[wheel[roller]]),
-            np.abs(data.qvel[model.jnt_dofadr[jnt]]))
+    pair = con.geom[:ncon]
+    cols = index.columns[np.where(index.world[pair[:, 0]], pair[:, 1], pair[:, 0])]
+    pos = con.pos[:ncon]
+    roller = cols[:, 0] >= 0
+    if not roller.all():  # a contact of a non-roller geom: left out
+        cols, pos = cols[roller], pos[roller]
+    jnt = cols[:, 1]
+    return (pos - data.xanchor[jnt], data.xaxis[jnt], np.abs(slide[cols[:, 0]]),
+            np.abs(data.qvel[cols[:, 2]]))
 
 
 def rate_errors(rel: np.ndarray, axis: np.ndarray, slide: np.ndarray, omega: np.ndarray
@@ -80,6 +112,11 @@ def rate_errors(rel: np.ndarray, axis: np.ndarray, slide: np.ndarray, omega: np.
     rho = np.linalg.norm(rel - axis * np.sum(rel * axis, axis=1)[:, None], axis=1)
     keep = (slide >= 1e-3) & (rho >= 1e-6)
     return (np.abs(omega * rho - slide)[keep] / slide[keep]).tolist()
+
+
+def _norm(x: np.ndarray) -> float:
+    """``np.linalg.norm`` of a 1-D float array, the same float: ``√(x·x)``."""
+    return math.sqrt(x.dot(x))
 
 
 def roller_geoms(model: mujoco.MjModel, info: OmniModelInfo) -> tuple[np.ndarray, np.ndarray]:
@@ -126,32 +163,59 @@ def rolling_radius_profile(model: mujoco.MjModel, wheel_joint: str, roller_prefi
 
 
 @dataclass
+class SampleTwist:
+    """The body twist an adapter commands at a sample, computed once for all its probes.
+
+    Holds the last sample it was asked about (a runner makes a new one per step).
+    """
+
+    adapter: OmniAdapter
+    _sample: Sample | None = field(default=None, repr=False)
+    _twist: np.ndarray = field(default_factory=lambda: np.zeros(3), repr=False)
+
+    def __call__(self, sample: Sample) -> np.ndarray:
+        """``adapter.twist(sample.u, sample.x)`` as a float array."""
+        if sample is not self._sample:
+            self._twist = np.asarray(self.adapter.twist(sample.u, sample.x), float)
+            self._sample = sample
+        return self._twist
+
+
+@dataclass
 class RollerRateProbe:
-    """Contacting rollers' spin rates against slide speed / ρ, after :data:`STEADY_AFTER`."""
+    """Contacting rollers' spin rates against slide speed / ρ, after :data:`STEADY_AFTER`.
+
+    ``twists``: the commanded twist of a sample (None: the adapter's, its own).
+    """
 
     info: OmniModelInfo
     adapter: OmniAdapter
     target: Target | None
     errors: list[float] = field(default_factory=list)
     after: float = STEADY_AFTER
+    twists: SampleTwist | None = None
 
-    _rollers: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False)
+    _index: RollerIndex | None = field(default=None, repr=False)
     _slides: dict[bytes, np.ndarray] = field(default_factory=dict, repr=False)
     _pending: list[tuple[np.ndarray, ...]] = field(default_factory=list, repr=False)
+
+    def __post_init__(self) -> None:
+        if self.twists is None:
+            self.twists = SampleTwist(self.adapter)
 
     def observe(self, sample: Sample) -> None:
         """Errors of the rollers in contact at this step."""
         if sample.t > self.after:
-            if self._rollers is None:
-                self._rollers = roller_geoms(sample.model, self.info)
-            twist = np.asarray(self.adapter.twist(sample.u, sample.x), float)
+            if self._index is None:
+                self._index = roller_index(sample.model, self.info)
+            twist = self.twists(sample)
             slide = self._slides.get(key := twist.tobytes())
             if slide is None:  # a run holds few twists: each one's speeds once
                 if len(self._slides) > 4096:
                     self._slides.clear()
                 slide = self._slides[key] = ok.roller_slide_speeds(self.adapter.layout,
                                                                    twist)
-            got = roller_contacts(sample.model, sample.data, self.info, slide, self._rollers)
+            got = _contacts(sample.data, self._index, slide)
             if got is not None:  # the errors of all steps at once, when asked for
                 self._pending.append(got)
 
@@ -179,10 +243,12 @@ class WheelRateProbe:
 
     def observe(self, sample: Sample) -> None:
         """``|θ̇ − θ̇_cmd| / |θ̇_cmd|`` at this step, once the commanded rates exceed 0.5."""
-        if sample.t > self.after and np.linalg.norm(sample.ctrl) > 0.5:
-            rates = sample.data.qvel[list(self.wheel_dofs)]
-            self.errors.append(float(np.linalg.norm(rates - sample.ctrl)
-                                     / np.linalg.norm(sample.ctrl)))
+        if sample.t > self.after:
+            ctrl = np.asarray(sample.ctrl, float)
+            commanded = _norm(ctrl)
+            if commanded > 0.5:
+                rates = sample.data.qvel[list(self.wheel_dofs)]
+                self.errors.append(_norm(rates - ctrl) / commanded)
 
     def metrics(self) -> list[Metric]:
         """RMS relative error, reported."""
@@ -199,12 +265,17 @@ class YawRippleProbe:
     rates: list[float] = field(default_factory=list)
     commanded: list[float] = field(default_factory=list)
     after: float = STEADY_AFTER
+    twists: SampleTwist | None = None
+
+    def __post_init__(self) -> None:
+        if self.twists is None:
+            self.twists = SampleTwist(self.adapter)
 
     def observe(self, sample: Sample) -> None:
         """The base's world yaw rate and the commanded one at this step."""
         if sample.t > self.after:
             self.rates.append(float(sample.data.cvel[self.base_body][2]))
-            self.commanded.append(float(self.adapter.twist(sample.u, sample.x)[2]))
+            self.commanded.append(float(self.twists(sample)[2]))
 
     def metrics(self) -> list[Metric]:
         """``std(r) / |r_cmd|`` in %, where a constant yaw rate is commanded."""
@@ -221,9 +292,10 @@ def omni_probes(scenario: Scenario, model: mujoco.MjModel, adapter: Adapter,
     if scenario.kind is not ScenarioKind.KINEMATIC or not isinstance(adapter, OmniAdapter):
         return None
     info = layout_from_model(model, adapter.wheel_joints)
+    twists = SampleTwist(adapter)  # one twist per sample for both
     probes: list[RollerRateProbe | WheelRateProbe | YawRippleProbe] = [
-        RollerRateProbe(info, adapter, targets.get(ROLLER_RATE_PCT)),
-        YawRippleProbe(info.base_body, adapter)]
+        RollerRateProbe(info, adapter, targets.get(ROLLER_RATE_PCT), twists=twists),
+        YawRippleProbe(info.base_body, adapter, twists=twists)]
     if adapter.mode is ActuationMode.RATE:
         probes.insert(0, WheelRateProbe(tuple(int(model.jnt_dofadr[j])
                                               for j in info.wheel_joints)))
