@@ -30,6 +30,9 @@ from wmr_mujoco.validation.scenarios import Scenario, ScenarioKind
 STEADY_AFTER = 1.0
 #: Key of the roller-rate target in a robot's target table.
 ROLLER_RATE_PCT = "roller rate error % (median)"
+#: The roller-rate probe copies each step's contacts and frames (a few kB) and reads this
+#: many steps' errors at once (a bounded buffer, whatever the run's length).
+PENDING_STEPS = 256
 
 
 def roller_rate_errors(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelInfo,
@@ -59,7 +62,7 @@ def roller_contacts(model: mujoco.MjModel, data: mujoco.MjData, info: OmniModelI
     if data.ncon == 0:
         return None
     index = roller_index(model, info, rollers)
-    return _contacts(data, index, np.asarray(slide_speeds, float))
+    return _rows(index, [_snapshot(data, np.asarray(slide_speeds, float))])
 
 
 @dataclass(frozen=True)
@@ -84,22 +87,34 @@ def roller_index(model: mujoco.MjModel, info: OmniModelInfo,
     return RollerIndex(model.geom_bodyid == 0, np.stack([wheel, joint, dof], axis=1))
 
 
-def _contacts(data: mujoco.MjData, index: RollerIndex, slide: np.ndarray
-              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
-    """:func:`roller_contacts` with the model's index built (``slide``: a float array)."""
+#: What :func:`_snapshot` copies of a step: the contacts' geom pairs and positions, every
+#: joint's anchor and axis, the dof velocities, and the wheels' slide speeds.
+Snapshot = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]
+
+
+def _snapshot(data: mujoco.MjData, slide: np.ndarray) -> Snapshot | None:
+    """Copies of what :func:`_rows` reads of ``data`` now (None: no contact)."""
     ncon = data.ncon
     if ncon == 0:
         return None
     con = data.contact
-    pair = con.geom[:ncon]
+    return (con.geom[:ncon].copy(), con.pos[:ncon].copy(), data.xanchor.copy(),
+            data.xaxis.copy(), data.qvel.copy(), slide)
+
+
+def _rows(index: RollerIndex, snaps: list[Snapshot]
+          ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`roller_contacts`' rows of several steps' snapshots, stacked in order."""
+    pair = np.concatenate([sn[0] for sn in snaps])
+    step = np.repeat(np.arange(len(snaps)), [len(sn[0]) for sn in snaps])
     cols = index.columns[np.where(index.world[pair[:, 0]], pair[:, 1], pair[:, 0])]
-    pos = con.pos[:ncon]
-    roller = cols[:, 0] >= 0
-    if not roller.all():  # a contact of a non-roller geom: left out
-        cols, pos = cols[roller], pos[roller]
+    roller = cols[:, 0] >= 0  # a contact of a non-roller geom: left out
+    cols, step = cols[roller], step[roller]
+    pos = np.concatenate([sn[1] for sn in snaps])[roller]
     jnt = cols[:, 1]
-    return (pos - data.xanchor[jnt], data.xaxis[jnt], np.abs(slide[cols[:, 0]]),
-            np.abs(data.qvel[cols[:, 2]]))
+    anchor, axis, qvel, slide = (np.stack([sn[i] for sn in snaps]) for i in range(2, 6))
+    return (pos - anchor[step, jnt], axis[step, jnt], np.abs(slide[step, cols[:, 0]]),
+            np.abs(qvel[step, cols[:, 2]]))
 
 
 def rate_errors(rel: np.ndarray, axis: np.ndarray, slide: np.ndarray, omega: np.ndarray
@@ -197,7 +212,7 @@ class RollerRateProbe:
 
     _index: RollerIndex | None = field(default=None, repr=False)
     _slides: dict[bytes, np.ndarray] = field(default_factory=dict, repr=False)
-    _pending: list[tuple[np.ndarray, ...]] = field(default_factory=list, repr=False)
+    _pending: list[Snapshot] = field(default_factory=list, repr=False)
 
     def __post_init__(self) -> None:
         if self.twists is None:
@@ -215,16 +230,21 @@ class RollerRateProbe:
                     self._slides.clear()
                 slide = self._slides[key] = ok.roller_slide_speeds(self.adapter.layout,
                                                                    twist)
-            got = _contacts(sample.data, self._index, slide)
-            if got is not None:  # the errors of all steps at once, when asked for
+            got = _snapshot(sample.data, slide)
+            if got is not None:  # the errors of many steps at once
                 self._pending.append(got)
+                if len(self._pending) >= PENDING_STEPS:
+                    self._flush()
+
+    def _flush(self) -> None:
+        """The errors of the pending steps, in order (rows of steps stacked)."""
+        if self._pending:
+            self.errors += rate_errors(*_rows(self._index, self._pending))
+            self._pending.clear()
 
     def metrics(self) -> list[Metric]:
         """Median (judged) and 95th percentile, in %."""
-        if self._pending:
-            self.errors += rate_errors(*(np.concatenate(p) for p in zip(*self._pending,
-                                                                        strict=True)))
-            self._pending.clear()
+        self._flush()
         if not self.errors:
             return []
         return [Metric("roller rate error (median)", 100.0 * float(np.median(self.errors)),
