@@ -260,6 +260,10 @@ class WheelRateProbe:
     wheel_dofs: tuple[int, ...]
     errors: list[float] = field(default_factory=list)
     after: float = STEADY_AFTER
+    _dofs: np.ndarray = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        self._dofs = np.array(self.wheel_dofs, dtype=np.intp)
 
     def observe(self, sample: Sample) -> None:
         """``|θ̇ − θ̇_cmd| / |θ̇_cmd|`` at this step, once the commanded rates exceed 0.5."""
@@ -267,7 +271,7 @@ class WheelRateProbe:
             ctrl = np.asarray(sample.ctrl, float)
             commanded = _norm(ctrl)
             if commanded > 0.5:
-                rates = sample.data.qvel[list(self.wheel_dofs)]
+                rates = sample.data.qvel[self._dofs]
                 self.errors.append(_norm(rates - ctrl) / commanded)
 
     def metrics(self) -> list[Metric]:
