@@ -33,3 +33,13 @@ def test_scalar_checks(check, ok, bad):
     for value in bad:
         with pytest.raises(ValueError, match=r"^x = "):
             check("x", value)
+
+
+def test_as_array_small_fast_path_tells_overflow_from_non_finite():
+    # A small array's finiteness is read from its Python sum: a sum that overflows to inf
+    # (finite entries) must still pass, and a NaN or an inf anywhere must still be named.
+    big = np.array([1e308, 1e308, -0.0])
+    assert as_array("w", big, (3,)) is big
+    for bad in ([1e308, np.inf, 0.0], [np.inf, -np.inf, 1.0], [0.0, 0.0, np.nan]):
+        with pytest.raises(ValueError, match="w contains non-finite values"):
+            as_array("w", np.array(bad), (3,))

@@ -87,3 +87,23 @@ def test_controls_on_are_the_controls_of_each_step(robot, name):
                                 model.opt.timestep)
     want = [adapter.controls(u, x) for u, x in zip(inputs, states, strict=False)]
     np.testing.assert_array_equal(adapter.controls_on(inputs, states[:-1]), want)
+
+
+def test_base_site_is_each_models_own():
+    # The site id is remembered for the last model read: a model whose ``base`` site has
+    # another id (a site before it), read in turn with the first, gets its own site's pose;
+    # a model without a ``base`` site is named by MuJoCo's KeyError.
+    other = mujoco.MjModel.from_xml_string(XML.replace(
+        '<site name="base"', '<site name="mark" pos="-0.1 0 0"/>\n      <site name="base"'))
+    assert other.site("base").id != mujoco.MjModel.from_xml_string(XML).site("base").id
+    model, data = _state(0.4, np.zeros(3), 0.0)
+    other_data = mujoco.MjData(other)
+    mujoco.mj_forward(other, other_data)
+    for _ in range(2):
+        np.testing.assert_array_equal(base_pose(model, data)[:2],
+                                      data.site_xpos[model.site("base").id][:2])
+        np.testing.assert_array_equal(base_pose(other, other_data)[:2],
+                                      other_data.site_xpos[other.site("base").id][:2])
+    bare = mujoco.MjModel.from_xml_string(XML.replace('<site name="base"', '<site name="b"'))
+    with pytest.raises(KeyError, match="base"):
+        base_pose(bare, mujoco.MjData(bare))

@@ -1,3 +1,5 @@
+import math
+
 import numpy as np
 import pytest
 
@@ -94,3 +96,35 @@ def test_mecanum_roller_slide_is_the_whole_relative_velocity():
         rel = v_c - lay.radii[i] * rates[i] * d
         assert abs(ok.roller_slide_speeds(lay, nu)[i]) == pytest.approx(
             np.linalg.norm(rel), rel=1e-12)
+
+
+@pytest.mark.parametrize("n", [3, 4, 5])
+def test_slide_speeds_per_wheel_are_the_layouts_array_arithmetic(rng, n):
+    # roller_slide_speeds works wheel by wheel in Python floats; the docstring's formula
+    # on the (n,) arrays, −(−sin(β+γ) v_x + cos(β+γ) v_y + tan γ (cos(β+γ) v_x +
+    # sin(β+γ) v_y)), must give the same floats (the validation's figures rest on it),
+    # for twists over six decades and any layout.
+    for _ in range(50):
+        layout = _random_layout(rng, n)
+        nu = rng.normal(size=3) * 10.0 ** rng.uniform(-4, 2)
+        x, y = layout.positions.T
+        vx, vy = nu[0] - nu[2] * y, nu[1] + nu[2] * x
+        ang = layout.drive_angles + layout.roller_angles
+        along = np.cos(ang) * vx + np.sin(ang) * vy
+        across = -np.sin(ang) * vx + np.cos(ang) * vy
+        want = -(across + np.tan(layout.roller_angles) * along)
+        assert ok.roller_slide_speeds(layout, nu).tobytes() == want.tobytes()
+
+
+def test_frame_turns_are_the_rotation_in_floats(rng):
+    # world_to_body and body_to_world read the rates as Python floats: the same floats as
+    # the rotation by math.cos and math.sin written here, and bad rates still named.
+    for _ in range(100):
+        psi, w = rng.uniform(-7, 7), rng.normal(size=3)
+        c, s = math.cos(psi), math.sin(psi)
+        assert ok.world_to_body(psi, w).tolist() == [c * w[0] + s * w[1],
+                                                     -s * w[0] + c * w[1], w[2]]
+        assert ok.body_to_world(psi, w).tolist() == [c * w[0] - s * w[1],
+                                                     s * w[0] + c * w[1], w[2]]
+    with pytest.raises(ValueError, match="world_rates contains non-finite"):
+        ok.world_to_body(0.3, [1.0, np.nan, 0.0])
