@@ -185,8 +185,9 @@ class SampleTwist:
     """
 
     adapter: OmniAdapter
-    _sample: Sample | None = field(default=None, repr=False)
-    _twist: np.ndarray = field(default_factory=lambda: np.zeros(3), repr=False)
+    _sample: Sample | None = field(default=None, repr=False, compare=False)
+    _twist: np.ndarray = field(default_factory=lambda: np.zeros(3), repr=False,
+                               compare=False)
 
     def __call__(self, sample: Sample) -> np.ndarray:
         """``adapter.twist(sample.u, sample.x)`` as a float array."""
@@ -260,7 +261,7 @@ class WheelRateProbe:
     wheel_dofs: tuple[int, ...]
     errors: list[float] = field(default_factory=list)
     after: float = STEADY_AFTER
-    _dofs: np.ndarray = field(init=False, repr=False)
+    _dofs: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         self._dofs = np.array(self.wheel_dofs, dtype=np.intp)
