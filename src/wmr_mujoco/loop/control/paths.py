@@ -23,7 +23,6 @@ and plan with :func:`hermite_path` (pose to pose); :func:`extend` runs a path on
 
 from __future__ import annotations
 
-import bisect
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -38,8 +37,9 @@ from wmr_mujoco.loop.control import polyline
 SAMPLES = 4001
 #: Half-width of the closest-point search around a hint, m.
 HINT_WINDOW = 1.0
-#: Sample spacing of the random and Hermite paths, m.
-DS = 0.02
+#: Sample spacing of the random and Hermite paths, m; closest-point answers a path keeps
+#: (then it forgets them all): two runs' worth.
+DS, MEMO = 0.02, 8192
 
 
 @dataclass(frozen=True)
@@ -102,9 +102,14 @@ class Path:
     def at(self, s: float) -> PathPoint:
         """The point at arc length ``s`` (wrapped on a closed path, clipped on an open one)."""
         s = self._s(s)
-        xy = np.array([np.interp(s, self.s, c) for c in self._columns[:2]])
-        return PathPoint(s, xy, float(np.interp(s, self.s, self.heading)),
-                         float(np.interp(s, self.s, self.curvature)))
+        x, y, heading, curvature = polyline.interp(self._lists[0], self._lists[1:], s)
+        return PathPoint(s, np.array([x, y]), heading, curvature)
+
+    #: ``s`` and the columns x, y, heading, curvature as lists (``np.interp``'s floats on them).
+    _lists = cached_property(lambda self: tuple(a.tolist() for a in (
+        self.s, self.xy[:, 0], self.xy[:, 1], self.heading, self.curvature)))
+    #: The answers of :meth:`closest` kept, by its arguments (at most :data:`MEMO`).
+    _memo = cached_property(lambda self: {})
 
     def closest(self, point: np.ndarray, hint: float | None = None,
                 window: float = HINT_WINDOW) -> PathPoint:
@@ -116,8 +121,13 @@ class Path:
                 ``[hint − window, hint + window]`` (wrapped on a closed path). None: the
                 whole path.
             window: half-width of that search, m.
+
+        Answers are kept (:data:`MEMO`): a loop's cross-track pass asks its controller's again.
         """
         p, n = np.asarray(point, float)[:2], len(self.s)
+        key = (float(p[0]), float(p[1]), None if hint is None else float(hint), float(window))
+        if (known := self._memo.get(key)) is not None:
+            return PathPoint(known[0], np.array(known[1:3]), known[3], known[4])
         first, last = 0, n - 1  # the segments first..last - 1 (mod n - 1 on a closed path)
         if hint is not None:
             h = self._s(hint)
@@ -125,15 +135,17 @@ class Path:
             first, last = (lo - 1, hi + 1) if self.closed else (max(lo - 1, 0), min(hi + 1, n - 1))
         w = (slice(first, last) if first >= 0 and last <= n - 1  # views, or a wrapped window
              else np.mod(np.arange(first, last), n - 1))
-        k, t = polyline.nearest(self._columns, w, float(p[0]), float(p[1]))
-        return self.at(self.s[i := (first + k) % (n - 1)] + t[k] * (self.s[i + 1] - self.s[i]))
+        k, t = polyline.nearest(self._columns, w, key[0], key[1])
+        q = self.at(self.s[i := (first + k) % (n - 1)] + t[k] * (self.s[i + 1] - self.s[i]))
+        if len(self._memo) >= MEMO:
+            self._memo.clear()
+        self._memo[key] = (q.s, *q.position.tolist(), q.heading, q.curvature)
+        return q
 
     #: The polyline's columns and its segments' ``d`` and ``d·d``, kept.
     _columns = cached_property(lambda self: polyline.segments(self.xy))
 
-    @cached_property
-    def _rows(self) -> tuple[list[float], list[list[float]]]:
-        return self.s.tolist(), self.xy.tolist()
+    _rows = cached_property(lambda self: (self.s.tolist(), self.xy.tolist()))
 
     def track(self, point: np.ndarray, hint: float) -> PathPoint:
         """:meth:`closest` for a point that moved little since the answer at ``hint``, m.
@@ -141,24 +153,7 @@ class Path:
         From the segment at ``hint`` it walks along the path while the distance shrinks:
         for a control loop, once a step, at a fraction of :meth:`closest`'s cost.
         """
-        (s, xy), px, py = self._rows, float(point[0]), float(point[1])
-        n = len(s) - 1
-
-        def foot(i: int) -> tuple[float, float]:
-            (ax, ay), (bx, by) = xy[i % n], xy[i % n + 1]
-            dx, dy = bx - ax, by - ay
-            t = min(1.0, max(0.0, ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy)))
-            return (ax + t * dx - px) ** 2 + (ay + t * dy - py) ** 2, t
-
-        i = max(0, min(bisect.bisect_right(s, hint % s[-1] if self.closed else hint) - 1, n - 1))
-        best, t = foot(i)
-        for step in (1, -1):
-            while self.closed or 0 <= i + step < n:
-                d, u = foot(i + step)
-                if d >= best:
-                    break
-                i, best, t = i + step, d, u
-        i %= n
+        i, t = polyline.walk(*self._rows, self.closed, float(point[0]), float(point[1]), hint)
         f = lambda a: float(a[i] + t * (a[i + 1] - a[i]))  # noqa: E731 - linear in s
         return PathPoint(f(self.s), self.xy[i] + t * (self.xy[i + 1] - self.xy[i]),
                          f(self.heading), f(self.curvature))
@@ -188,16 +183,21 @@ class Path:
         if not (np.isfinite(distance) and distance > 0):
             raise ValueError(f"distance = {distance!r}; must be a finite number > 0 m")
         p = np.asarray(point, float)[:2]
-        s0 = self.closest(p, hint).s
-        step = self.s[1]
+        near = self.closest(p, hint)
+        s0, step = near.s, self.s[1]
         ahead = s0 + np.arange(0.0, (2.0 * distance + 4.0 * step), step / 4.0)
         if not self.closed:
             ahead = ahead[ahead <= self.length]
             if len(ahead) == 0:
                 return self.at(self.length)
-        pts = np.stack([np.interp(self._wrap(ahead), self.s, c) for c in self._columns[:2]], 1)
-        beyond = np.flatnonzero(np.linalg.norm(pts - p, axis=1) >= distance)
-        return self.at(ahead[beyond[0]] if len(beyond) else ahead[-1])
+        # Skipped: the samples surely inside the circle, |q(s) − p| ≤ |q(s₀) − p| + ρ (s − s₀).
+        (rho, slack), wraps = self._reach, self.closed and ahead[-1] - s0 > self.length
+        lim = (distance - math.hypot(*(near.position - p)) - slack) / rho
+        j = int(np.searchsorted(ahead, s0 + lim)) if math.isfinite(lim) and not wraps else 0
+        return self.at(ahead[polyline.first_beyond(self.positions, ahead, j, p, distance)])
+
+    #: ``ρ`` and the slack of :meth:`lookahead`'s bound (:func:`polyline.reach`), kept.
+    _reach = cached_property(lambda self: polyline.reach(self._columns, self.s, self.closed))
 
     def positions(self, s: np.ndarray) -> np.ndarray:
         """``(x, y)`` at the arc lengths ``s`` (wrapped or clipped like :meth:`at`), (..., 2)."""
