@@ -54,10 +54,11 @@ def hold(robot: Robot, x: np.ndarray, u: np.ndarray, what: str) -> np.ndarray:
         rhs = robot.adapter.rhs
         for _ in range(robot.nstep):
             x = rk4_step(rhs, x, u, robot.dt)
-    if not np.all(np.isfinite(x)):
+    x = np.asarray(x, float)
+    if not all(map(math.isfinite, x.tolist())):
         raise SimulationDivergedError(f"{robot.spec.name}: the {what} model's state "
                                       f"became non-finite at t={robot.time:.4f} s: {x}")
-    return np.asarray(x, float)
+    return x
 
 
 class WheelGeometry:

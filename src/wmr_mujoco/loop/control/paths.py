@@ -131,7 +131,7 @@ class Path:
         first, last = 0, n - 1  # the segments first..last - 1 (mod n - 1 on a closed path)
         if hint is not None:
             h = self._s(hint)
-            lo, hi = (int(i) for i in np.searchsorted(self.s, [h - window, h + window]))
+            lo, hi = (polyline.search(self._lists[0], v) for v in (h - window, h + window))
             first, last = (lo - 1, hi + 1) if self.closed else (max(lo - 1, 0), min(hi + 1, n - 1))
         w = (slice(first, last) if first >= 0 and last <= n - 1  # views, or a wrapped window
              else np.mod(np.arange(first, last), n - 1))

@@ -62,6 +62,11 @@ def nearest(seg: Segments, window: slice | np.ndarray, px: float, py: float
     return int(np.argmin(0.0 + ex * ex + ey * ey)), t
 
 
+def search(xp: list[float], x: float) -> int:
+    """``np.searchsorted(xp, x)`` (side left, NaN after everything) on a list."""
+    return bisect.bisect_left(xp, x) if x == x else len(xp)
+
+
 def interp(xp: list[float], columns: tuple[list[float], ...], x: float) -> tuple[float, ...]:
     """``np.interp(x, xp, c)`` of every column ``c`` at one ``x``, on Python floats.
 

@@ -36,6 +36,7 @@ from wmr_mujoco.loop.control.base import (
     CommandKind,
     Controller,
     StateLike,
+    clip,
     positive,
     steer_command,
 )
@@ -90,6 +91,5 @@ class PurePursuit(Controller):
         kappa = self.curvature(state, reference)
         if self.wheelbase is None:
             return np.array([self.speed, self.speed * kappa])
-        steer = float(np.clip(math.atan(self.wheelbase * kappa), -self.max_steer,
-                              self.max_steer))
+        steer = clip(math.atan(self.wheelbase * kappa), -self.max_steer, self.max_steer)
         return steer_command(self.kind, self.speed, steer, self.wheelbase)
