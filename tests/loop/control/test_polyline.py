@@ -98,3 +98,21 @@ def test_first_beyond_is_the_first_of_the_whole_scan():
         start = int(rng.integers(0, want + 1)) if want >= 0 else 0
         assert polyline.first_beyond(points, ahead, start, p, dist) == want
     assert polyline.first_beyond(points, ahead, 0, xy[0], 1e9) == -1
+
+
+def test_finder_answers_later_windows_of_a_point_as_nearest_does():
+    # One point, windows shifted around (inside the kept margin, beyond it, round the end
+    # of the polyline): every answer is nearest's on that window, to the bit.
+    rng = np.random.default_rng(5)
+    xy = np.cumsum(rng.normal(0.0, 0.1, (2000, 2)), axis=0)
+    seg = polyline.segments(xy)
+    finder, n = polyline.Finder(seg), len(xy) - 1
+    for _ in range(300):
+        p = xy[rng.integers(0, 2000)] + rng.normal(0.0, 0.3, 2)
+        first = int(rng.integers(-50, n - 100))
+        for shift in (0, 3, -7, 40, 200):
+            lo, hi = first + shift, first + shift + int(rng.integers(1, 300))
+            window = (slice(lo, hi) if lo >= 0 and hi <= n else np.mod(np.arange(lo, hi), n))
+            k, t = finder.nearest(lo, hi, float(p[0]), float(p[1]))
+            want_k, want_t = polyline.nearest(seg, window, float(p[0]), float(p[1]))
+            assert k == want_k and t.tobytes() == want_t.tobytes()

@@ -133,9 +133,7 @@ class Path:
             h = self._s(hint)
             lo, hi = (polyline.search(self._lists[0], v) for v in (h - window, h + window))
             first, last = (lo - 1, hi + 1) if self.closed else (max(lo - 1, 0), min(hi + 1, n - 1))
-        w = (slice(first, last) if first >= 0 and last <= n - 1  # views, or a wrapped window
-             else np.mod(np.arange(first, last), n - 1))
-        k, t = polyline.nearest(self._columns, w, key[0], key[1])
+        k, t = self._finder.nearest(first, last, key[0], key[1])
         q = self.at(self.s[i := (first + k) % (n - 1)] + t[k] * (self.s[i + 1] - self.s[i]))
         if len(self._memo) >= MEMO:
             self._memo.clear()
@@ -144,6 +142,7 @@ class Path:
 
     #: The polyline's columns and its segments' ``d`` and ``d·d``, kept.
     _columns = cached_property(lambda self: polyline.segments(self.xy))
+    _finder = cached_property(lambda self: polyline.Finder(self._columns))
 
     _rows = cached_property(lambda self: (self.s.tolist(), self.xy.tolist()))
 

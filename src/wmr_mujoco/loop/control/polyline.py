@@ -6,7 +6,8 @@ For segments ``a → b = a + d`` the foot of a point ``p`` on each is ``a + t d`
 
 and the nearest foot is the one of least ``|a + t d − p|²``. :func:`segments` keeps the
 polyline's coordinates as contiguous columns and each segment's ``d`` and ``d·d`` once;
-:func:`nearest` computes a window of segments' feet from them. Each dot product is
+:func:`nearest` computes a window of segments' feet from them (:func:`feet`, in place;
+:class:`Finder` keeps a point's for its next window). Each dot product is
 ``(0 + x₀y₀) + x₁y₁``, the order in which ``np.einsum("ij,ij->i", …)`` accumulates it, so
 the feet are those of the row-wise einsum on the ``(N, 2)`` rows, at a fraction of its
 cost (``tests/loop/control/test_polyline.py``).
@@ -26,8 +27,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-#: Points :func:`first_beyond` measures at once.
-CHUNK = 128
+#: Points :func:`first_beyond` measures at once; segments :class:`Finder` measures beyond
+#: each side of a window.
+CHUNK, MARGIN = 128, 64
 
 
 class Segments(NamedTuple):
@@ -54,12 +56,69 @@ def nearest(seg: Segments, window: slice | np.ndarray, px: float, py: float
     ``window`` picks segments (a slice, or indices for a window that wraps round a
     closed polyline's end); ``k`` counts within it (the first of equal distances).
     """
+    d, t = feet(seg, window, px, py)
+    return int(np.argmin(d)), t
+
+
+def feet(seg: Segments, window: slice | np.ndarray, px: float, py: float
+         ) -> tuple[np.ndarray, np.ndarray]:
+    """``(|a + t d − p|², t)`` of every segment of ``window`` (see :func:`nearest`).
+
+    Computed in place, in the order of ``0.0 + (p − a)·d`` and ``0.0 + |a + t d − p|²``
+    (``0.0 +`` changes only a −0, which a square never is); ``np.clip``'s ``t`` as
+    ``np.minimum(np.maximum(·))`` (a quotient of a sum starting ``0.0 +`` is never −0).
+    """
     ax, ay, sx, sy = seg.x[window], seg.y[window], seg.dx[window], seg.dy[window]
-    # np.clip's floats (the quotient is never −0: a sum starting 0.0 + is not) at less cost.
-    t = np.minimum(np.maximum((0.0 + (px - ax) * sx + (py - ay) * sy) / seg.dd[window], 0.0),
-                   1.0)
-    ex, ey = ax + t * sx - px, ay + t * sy - py
-    return int(np.argmin(0.0 + ex * ex + ey * ey)), t
+    t = np.subtract(px, ax)
+    t *= sx
+    t += 0.0
+    u = np.subtract(py, ay)
+    u *= sy
+    t += u
+    t /= seg.dd[window]
+    np.maximum(t, 0.0, out=t)
+    np.minimum(t, 1.0, out=t)
+    d = np.multiply(t, sx)
+    d += ax
+    d -= px
+    d *= d
+    np.multiply(t, sy, out=u)
+    u += ay
+    u -= py
+    u *= u
+    d += u
+    return d, t
+
+
+class Finder:
+    """:func:`nearest` on windows of segments, keeping a point's feet for its next window.
+
+    A control loop asks twice for one point with windows a step apart (pure pursuit: its
+    closest point, then its lookahead's): the feet are measured on the window and
+    :data:`MARGIN` segments each side, and a later window of the same point inside
+    those is answered from them (the same floats: each foot is its segment's alone).
+
+    Args:
+        seg: the polyline's segments.
+    """
+
+    def __init__(self, seg: Segments) -> None:
+        self.seg = seg
+        self._kept: tuple[float, float, int, int, np.ndarray, np.ndarray] | None = None
+
+    def nearest(self, first: int, last: int, px: float, py: float) -> tuple[int, np.ndarray]:
+        """:func:`nearest` on the segments ``first .. last − 1`` (mod their number)."""
+        n = len(self.seg.dd)
+        if first < 0 or last > n:  # a window round a closed polyline's end
+            return nearest(self.seg, np.mod(np.arange(first, last), n), px, py)
+        kept = self._kept
+        if (kept is None or kept[0] != px or kept[1] != py
+                or not kept[2] <= first <= last <= kept[3]):
+            lo, hi = max(first - MARGIN, 0), min(last + MARGIN, n)
+            kept = self._kept = (px, py, lo, hi, *feet(self.seg, slice(lo, hi), px, py))
+        lo = kept[2]
+        t = kept[5][first - lo:last - lo]
+        return int(np.argmin(kept[4][first - lo:last - lo])), t
 
 
 def search(xp: list[float], x: float) -> int:
