@@ -96,8 +96,10 @@ def test_first_beyond_is_the_first_of_the_whole_scan():
         far = np.flatnonzero(np.linalg.norm(points(ahead) - p, axis=1) >= dist)
         want = int(far[0]) if len(far) else -1
         start = int(rng.integers(0, want + 1)) if want >= 0 else 0
-        assert polyline.first_beyond(points, ahead, start, p, dist) == want
-    assert polyline.first_beyond(points, ahead, 0, xy[0], 1e9) == -1
+        def distances(a, p=p):
+            return np.linalg.norm(points(a) - p, axis=1)
+        assert polyline.first_beyond(distances, ahead, start, dist) == want
+    assert polyline.first_beyond(distances, ahead, 0, 1e9) == -1
 
 
 def test_finder_answers_later_windows_of_a_point_as_nearest_does():

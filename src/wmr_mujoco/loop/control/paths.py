@@ -32,14 +32,14 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from wmr_mujoco.loop.control import polyline
+from wmr_mujoco.loop.control.path_index import PathIndex
 
 #: Fine samples per path.
 SAMPLES = 4001
 #: Half-width of the closest-point search around a hint, m.
 HINT_WINDOW = 1.0
-#: Sample spacing of the random and Hermite paths, m; closest-point answers a path keeps
-#: (then it forgets them all): two runs' worth.
-DS, MEMO = 0.02, 8192
+#: Sample spacing of the random and Hermite paths, m.
+DS = 0.02
 
 
 @dataclass(frozen=True)
@@ -94,22 +94,9 @@ class Path:
         """``(x, y, heading)`` at ``s = 0``."""
         return self.at(0.0).pose
 
-    def _s(self, s: float) -> float:  # np.mod's, np.clip's floats without their call cost
-        if self.closed:
-            return float(s) % self.length if math.isfinite(s) else math.nan
-        return float(s) if s != s else min(max(float(s), 0.0), self.length)
-
     def at(self, s: float) -> PathPoint:
         """The point at arc length ``s`` (wrapped on a closed path, clipped on an open one)."""
-        s = self._s(s)
-        x, y, heading, curvature = polyline.interp(self._lists[0], self._lists[1:], s)
-        return PathPoint(s, np.array([x, y]), heading, curvature)
-
-    #: ``s`` and the columns x, y, heading, curvature as lists (``np.interp``'s floats on them).
-    _lists = cached_property(lambda self: tuple(a.tolist() for a in (
-        self.s, self.xy[:, 0], self.xy[:, 1], self.heading, self.curvature)))
-    #: The answers of :meth:`closest` kept, by its arguments (at most :data:`MEMO`).
-    _memo = cached_property(lambda self: {})
+        return _point(self._index.at(s))
 
     def closest(self, point: np.ndarray, hint: float | None = None,
                 window: float = HINT_WINDOW) -> PathPoint:
@@ -122,27 +109,15 @@ class Path:
                 whole path.
             window: half-width of that search, m.
 
-        Answers are kept (:data:`MEMO`): a loop's cross-track pass asks its controller's again.
+        Answers are kept (:data:`~wmr_mujoco.loop.control.path_index.MEMO`): a loop's
+        cross-track pass asks its controller's again.
         """
-        p, n = np.asarray(point, float)[:2], len(self.s)
-        key = (float(p[0]), float(p[1]), None if hint is None else float(hint), float(window))
-        if (known := self._memo.get(key)) is not None:
-            return PathPoint(known[0], np.array(known[1:3]), known[3], known[4])
-        first, last = 0, n - 1  # the segments first..last - 1 (mod n - 1 on a closed path)
-        if hint is not None:
-            h = self._s(hint)
-            lo, hi = (polyline.search(self._lists[0], v) for v in (h - window, h + window))
-            first, last = (lo - 1, hi + 1) if self.closed else (max(lo - 1, 0), min(hi + 1, n - 1))
-        k, t = self._finder.nearest(first, last, key[0], key[1])
-        q = self.at(self.s[i := (first + k) % (n - 1)] + t[k] * (self.s[i + 1] - self.s[i]))
-        if len(self._memo) >= MEMO:
-            self._memo.clear()
-        self._memo[key] = (q.s, *q.position.tolist(), q.heading, q.curvature)
-        return q
+        p = np.asarray(point, float)[:2]
+        return _point(self._index.closest(float(p[0]), float(p[1]), hint, window))
 
-    #: The polyline's columns and its segments' ``d`` and ``d·d``, kept.
-    _columns = cached_property(lambda self: polyline.segments(self.xy))
-    _finder = cached_property(lambda self: polyline.Finder(self._columns))
+    #: The samples kept for the point queries (:mod:`~wmr_mujoco.loop.control.path_index`).
+    _index = cached_property(lambda self: PathIndex(self.s, self.xy, self.heading,
+                                                    self.curvature, self.closed))
 
     _rows = cached_property(lambda self: (self.s.tolist(), self.xy.tolist()))
 
@@ -163,10 +138,12 @@ class Path:
         Off the end of an open path the distance to the end point is returned, signed by
         the side.
         """
-        q = self.closest(point, hint)
-        rel = np.asarray(point, float)[:2] - q.position
-        side = -np.sin(q.heading) * rel[0] + np.cos(q.heading) * rel[1]
-        return float(np.copysign(np.hypot(*rel), side)), q.s
+        p = np.asarray(point, float)[:2]
+        rx, ry = float(p[0]), float(p[1])
+        s, qx, qy, heading, _ = self._index.closest(rx, ry, hint, HINT_WINDOW)
+        rx, ry = rx - qx, ry - qy
+        side = -np.sin(heading) * rx + np.cos(heading) * ry
+        return math.copysign(float(np.hypot(rx, ry)), side), s
 
     def lookahead(self, point: np.ndarray, distance: float, hint: float | None = None
                   ) -> PathPoint:
@@ -182,34 +159,21 @@ class Path:
         if not (np.isfinite(distance) and distance > 0):
             raise ValueError(f"distance = {distance!r}; must be a finite number > 0 m")
         p = np.asarray(point, float)[:2]
-        near = self.closest(p, hint)
-        s0, step = near.s, self.s[1]
-        ahead = s0 + np.arange(0.0, (2.0 * distance + 4.0 * step), step / 4.0)
-        if not self.closed:
-            ahead = ahead[ahead <= self.length]
-            if len(ahead) == 0:
-                return self.at(self.length)
-        # Skipped: the samples surely inside the circle, |q(s) − p| ≤ |q(s₀) − p| + ρ (s − s₀).
-        (rho, slack), wraps = self._reach, self.closed and ahead[-1] - s0 > self.length
-        lim = (distance - math.hypot(*(near.position - p)) - slack) / rho
-        j = int(np.searchsorted(ahead, s0 + lim)) if math.isfinite(lim) and not wraps else 0
-        return self.at(ahead[polyline.first_beyond(self.positions, ahead, j, p, distance)])
-
-    #: ``ρ`` and the slack of :meth:`lookahead`'s bound (:func:`polyline.reach`), kept.
-    _reach = cached_property(lambda self: polyline.reach(self._columns, self.s, self.closed))
+        return _point(self._index.lookahead(float(p[0]), float(p[1]), distance, hint,
+                                            HINT_WINDOW))
 
     def positions(self, s: np.ndarray) -> np.ndarray:
         """``(x, y)`` at the arc lengths ``s`` (wrapped or clipped like :meth:`at`), (..., 2)."""
-        s = self._wrap(np.asarray(s, float))
+        s = self._index.wrap_array(np.asarray(s, float))
         out = np.empty((*s.shape, 2))
-        out[..., 0] = np.interp(s, self.s, self._columns[0])
-        out[..., 1] = np.interp(s, self.s, self._columns[1])
+        out[..., 0] = np.interp(s, self.s, self._index.seg.x)
+        out[..., 1] = np.interp(s, self.s, self._index.seg.y)
         return out
 
-    def _wrap(self, s: np.ndarray) -> np.ndarray:
-        if self.closed:
-            return np.mod(s, self.length)
-        return np.minimum(np.maximum(s, 0.0), self.s[-1])
+
+def _point(row: tuple[float, float, float, float, float]) -> PathPoint:
+    """The :class:`PathPoint` of a row ``(s, x, y, heading, curvature)``."""
+    return PathPoint(row[0], np.array(row[1:3]), row[3], row[4])
 
 
 Curve = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]

@@ -57,7 +57,7 @@ def nearest(seg: Segments, window: slice | np.ndarray, px: float, py: float
     closed polyline's end); ``k`` counts within it (the first of equal distances).
     """
     d, t = feet(seg, window, px, py)
-    return int(np.argmin(d)), t
+    return int(d.argmin()), t
 
 
 def feet(seg: Segments, window: slice | np.ndarray, px: float, py: float
@@ -118,7 +118,7 @@ class Finder:
             kept = self._kept = (px, py, lo, hi, *feet(self.seg, slice(lo, hi), px, py))
         lo = kept[2]
         t = kept[5][first - lo:last - lo]
-        return int(np.argmin(kept[4][first - lo:last - lo])), t
+        return int(kept[4][first - lo:last - lo].argmin()), t
 
 
 def search(xp: list[float], x: float) -> int:
@@ -203,15 +203,15 @@ def reach(seg: Segments, s: np.ndarray, closed: bool) -> tuple[float, float]:
     return (rho if math.isfinite(rho) else math.inf), slack
 
 
-def first_beyond(points: Callable[[np.ndarray], np.ndarray], ahead: np.ndarray, start: int,
-                 p: np.ndarray, distance: float) -> int:
-    """The first ``j >= start`` with ``|points(ahead)[j] − p| >= distance`` (-1: none).
+def first_beyond(distances: Callable[[np.ndarray], np.ndarray], ahead: np.ndarray,
+                 start: int, distance: float) -> int:
+    """The first ``j >= start`` with ``distances(ahead)[j] >= distance`` (-1: none).
 
-    ``points`` maps arc lengths to ``(x, y)`` rows; :data:`CHUNK` of them are measured at
-    a time (each distance ``np.linalg.norm``'s of its row, whatever the chunk).
+    ``distances`` maps arc lengths to the distances of their points (each its own, whatever
+    the others); :data:`CHUNK` of them are measured at a time.
     """
     for j in range(start, len(ahead), CHUNK):
-        far = np.flatnonzero(np.linalg.norm(points(ahead[j:j + CHUNK]) - p, axis=1) >= distance)
+        far = (distances(ahead[j:j + CHUNK]) >= distance).nonzero()[0]
         if len(far):
             return j + int(far[0])
     return -1
