@@ -75,7 +75,7 @@ class PurePursuit(Controller):
 
     def curvature(self, state: StateLike, path: Path) -> float:
         """``κ = 2 sin α / L_d`` toward the goal point (``L_d`` its actual distance)."""
-        x, y, psi = np.asarray(state.pose, float)[:3]
+        x, y, psi = np.asarray(state.pose, float)[:3].tolist()
         self._s = path.closest((x, y), self._s).s
         goal = path.lookahead((x, y), self.lookahead, self._s).position
         dx, dy = goal[0] - x, goal[1] - y
