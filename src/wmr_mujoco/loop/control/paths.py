@@ -13,7 +13,8 @@ spacing ``h``: under 10 µm for the paths here). The closest-point query project
 the polyline's segments; given the previous arc length as a hint it searches only a
 window around it, so that a path crossing itself (the figure eight) is followed along,
 not jumped across. The cross-track error is signed, positive when the point lies to the
-LEFT of the path.
+LEFT of the path. These point queries run on Python floats, with the floats of these array
+formulas (:mod:`~wmr_mujoco.loop.control.path_index`).
 
 Paths: :func:`line`, :func:`circle`, :func:`figure_eight`, :func:`lane_change` and
 :func:`random_spline` (seeded); :func:`make_path` builds one by name (:data:`PATHS`).
