@@ -55,7 +55,7 @@ class OmniParams:
             (the default), ``"dense"`` or ``"auto"`` (MuJoCo's choice: dense below 60
             DoF, so dense for omni3's 45). Not a physics parameter: the same equations in
             another storage (the motion agrees to round-off); sparse is the cheaper at
-            this model's sparse mass matrix (a tree of 40 single hinges on one free
+            this model's sparse mass matrix (a tree of 39 single hinges on one free
             body): :mod:`wmr_mujoco.bench.solver_cost` times each and validates it.
         cone: friction cone, ``"elliptic"`` (the default, no pyramidal creep) or
             ``"pyramidal"``. A physics change: the pyramid's ``condim`` 3 square of
