@@ -24,7 +24,8 @@ from wmr_mujoco.validation.adapters import Adapter
 from wmr_mujoco.validation.runner import Prepared
 from wmr_mujoco.validation.scenarios import Scenario
 
-#: Largest trajectory one call may build, bytes (2 GiB: about 1000 s of omni3 at 1 ms).
+#: Largest trajectory one call may build, bytes (2 GiB: of the order of 1000 s of omni3 or
+#: mecanum4 at their default steps; a refused run's message gives its robot's figure).
 #: The environment variable ``WMR_MAX_MEMORY`` (bytes, or with a K, M or G suffix) or a
 #: call's ``max_memory`` raise it.
 MAX_MEMORY = 2 * 2**30

@@ -47,3 +47,31 @@ def test_a_row_reads_every_judged_column():
     r = ds.evaluate(ds.Setting("default"))
     assert all(math.isfinite(float(r[h])) for h, _, _, _ in ds.COLUMNS)
     assert r["passed"] is True and r["rtf"] > 0
+
+
+def test_a_setting_is_the_shipped_free_disc_but_its_label():
+    """A setting changes only what it names: with nothing named it is the free disc users
+    get, step for step (bit for bit: the same compiled numbers). Rows such as "RK4 2 ms"
+    then run at the shipped contact time constant, not at one of the study's own."""
+    import numpy as np
+
+    from wmr_mujoco.models.loading import load
+    from wmr_mujoco.robots import disc_free
+    from wmr_mujoco.robots.disc_free import measurements as ms
+    from wmr_mujoco.robots.disc_free.state import FreeRun
+
+    shipped = load(disc_free.SPEC)
+    ours = ds.Setting("defaults").model()
+    disc = FreeRun(shipped, np.zeros(8), 0.2).disc
+    state = disc.initial_state(*ms.LEANING_START)
+    np.testing.assert_array_equal(FreeRun(shipped, state, 0.2).rows(),
+                                  FreeRun(ours, state, 0.2).rows())
+    # The run alone cannot see the contact's time constant below 2 Δt (MuJoCo's refsafe
+    # clamps it at run time); the compiled numbers can.
+    for field in ("geom_solref", "geom_solimp", "geom_size", "geom_friction"):
+        np.testing.assert_array_equal(getattr(ours, field), getattr(shipped, field))
+    assert (ours.opt.timestep, ours.opt.impratio, ours.opt.integrator) == (
+        shipped.opt.timestep, shipped.opt.impratio, shipped.opt.integrator)
+    # The previous default's row keeps the time constant it ran at, which its label names.
+    previous = next(s for s in ds.SETTINGS if "previous default" in s.label)
+    assert "t_c 4 ms" in previous.label and previous.contact_timeconst == 0.004

@@ -2,6 +2,7 @@
 
 from wmr_mujoco.bench.mecanum_study import (
     COUNTS,
+    Summary,
     contact_variant,
     cost_table,
     measure,
@@ -48,3 +49,12 @@ def test_cost_table_has_every_variant_and_one_default():
     assert len(rows) == 5  # bits/pairs × Newton/PGS, and omni3
     assert sum("(default)" in r for r in rows) == 2  # mecanum4's and omni3's
     assert "| mecanum4, floor pairs, Newton (default) |" in text
+
+
+def test_a_diverged_configuration_is_a_row_that_says_so():
+    # The geometry's columns stand (they need no run); every run column says diverged,
+    # the first naming the scenario, and no real-time factor is printed as a number.
+    s = Summary("profile, 8", 0.054, 2.6, {}, float("nan"), diverged="translate 0° (ramp)")
+    row = table([s]).splitlines()[-1]
+    assert row == ("| profile, 8 | 0.054 | 2.60 | diverged in translate 0° (ramp) | diverged "
+                   "| diverged | diverged | n/a |")

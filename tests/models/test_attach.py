@@ -99,3 +99,29 @@ def test_the_composition_docs_example_runs():
     mujoco.mj_forward(model, data)
     np.testing.assert_allclose(data.site_xpos[model.site("mecanum4/base").id][:2], (1, 0),
                                atol=1e-9)
+
+
+def _attachable() -> list[str]:
+    return [name for name, spec in wmr.ROBOTS.items() if spec.build is not None
+            and spec.params_type is not None]
+
+
+@pytest.mark.parametrize("robot", _attachable())
+def test_an_attached_robot_keeps_its_scene_options(robot):
+    """The floor pairs' impratio (10/d = 10⁴) is set by the robot's scene, not its file
+    (10): attached, the arena must carry the scene's, or the pairs' friction rows are a
+    thousand times softer. Every solver option equals the robot's own scene's."""
+    arena = _arena()
+    attach(arena, robot)
+    model = mujoco.MjModel.from_xml_string(arena.to_xml_string(), arena.get_assets())
+    own = wmr.load(robot)
+    for name in ("timestep", "impratio", "integrator", "cone", "solver", "jacobian",
+                 "iterations", "tolerance"):
+        assert getattr(model.opt, name) == getattr(own.opt, name), name
+
+
+def test_an_arena_option_at_odds_with_the_robot_scene_is_refused():
+    arena = _arena()
+    arena.option.impratio = 10.0
+    with pytest.raises(ValueError, match=r"option impratio = 10000.*the arena 10\.0"):
+        attach(arena, "diffdrive")

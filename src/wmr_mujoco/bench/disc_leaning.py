@@ -11,7 +11,9 @@ MuJoCo's ``refsafe`` flag clamps a contact's time constant to at least two times
 
     t_c,eff = max(t_c, 2 Δt),
 
-so the default (RK4 at Δt = 4 ms, ``solref`` 4 ms) simulates an 8 ms contact. Rows that
+so the default (RK4 at ``free_timestep``, ``solref`` ``sim.contact_timeconst``, both of
+:class:`~wmr_mujoco.robots.disc.params.FreeDiscParams`) simulates a contact of two of its
+steps whenever its time constant is shorter than that. Rows that
 change ``Δt`` at a fixed ``t_c,eff`` isolate the integrator; rows that change ``t_c``
 isolate the contact. The errors follow ``t_c,eff``, to first order, and not ``Δt``: they
 are the soft contact's, and meeting the targets over the family costs the timestep the
@@ -26,6 +28,7 @@ from wmr_mujoco.bench.disc_study import Setting
 from wmr_mujoco.docs_sync.markers import replace_between
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import disc_free
+from wmr_mujoco.robots.disc.params import FreeDiscParams
 from wmr_mujoco.robots.disc_free import measurements as ms
 
 MARKER = "disc leaning family"
@@ -55,10 +58,11 @@ def effective_timeconst(timestep: float, contact_timeconst: float) -> float:
     return max(contact_timeconst, 2.0 * timestep)
 
 
-#: The default first (its 4 ms contact is clamped to 8 ms), then the same effective
-#: contact at a smaller timestep, then ever stiffer contacts at ``t_c = 2 Δt``.
+#: The default first (its step and contact time constant read from ``FreeDiscParams``; the
+#: label shows the clamped time constant), then the same effective contact (8 ms) at a smaller
+#: timestep, then ever stiffer contacts at ``t_c = 2 Δt``.
 SETTINGS = (
-    rk4_setting(0.004, 0.004),
+    rk4_setting(FreeDiscParams().free_timestep, FreeDiscParams().sim.contact_timeconst),
     rk4_setting(0.002, 0.008),
     rk4_setting(0.002, 0.004),
     rk4_setting(0.001, 0.004),

@@ -56,9 +56,13 @@ COLUMNS = (
 )
 
 
+#: The free disc's defaults: a setting changes only what its label names.
+_DEFAULT = FreeDiscParams()
+
+
 @dataclass(frozen=True)
 class Setting:
-    """One simulation setting of the free disc.
+    """One simulation setting of the free disc: the defaults but what ``label`` names.
 
     Attributes:
         label: short description.
@@ -73,13 +77,13 @@ class Setting:
     """
 
     label: str
-    integrator: str = "RK4"
-    timestep: float = 0.004
-    rim: float = 0.002
-    contact_timeconst: float = 0.004
+    integrator: str = _DEFAULT.free_integrator
+    timestep: float = _DEFAULT.free_timestep
+    rim: float = _DEFAULT.free_rim
+    contact_timeconst: float = _DEFAULT.sim.contact_timeconst
     solimp_width: float = 0.99
     noslip: int = 0
-    impratio: float = 10.0
+    impratio: float = _DEFAULT.sim.impratio
     collider: str = "ellipsoid"
 
     @property
@@ -107,7 +111,8 @@ class Setting:
 
 
 SETTINGS = (
-    Setting("implicitfast 2 ms, 10 mm rim (previous default)", "implicitfast", 0.002, 0.01),
+    Setting("implicitfast 2 ms, 10 mm rim, t_c 4 ms (previous default)", "implicitfast", 0.002,
+            0.01, contact_timeconst=0.004),
     Setting("implicitfast 2 ms", "implicitfast", 0.002),
     Setting("implicitfast 0.5 ms", "implicitfast", 0.0005),
     Setting("implicit 2 ms", "implicit", 0.002),

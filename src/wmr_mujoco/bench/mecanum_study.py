@@ -35,6 +35,7 @@ from wmr_mujoco.robots.mecanum4 import kinematics, ripple
 from wmr_mujoco.robots.mecanum4.params import MecanumParams
 from wmr_mujoco.robots.roller_wheels import pitch_averaged as pa
 from wmr_mujoco.robots.roller_wheels.trials import TrialRun, run_trial
+from wmr_mujoco.sim.stepping import SimulationDivergedError
 from wmr_mujoco.validation.scenarios import Scenario
 
 README = MODELS_DIR / mecanum4.NAME / "README.md"
@@ -57,6 +58,8 @@ class Summary:
     ``tracking[kind]``, kind ``"ramp"`` or ``"step"``: worst over the runs of
     ``(position % of path, heading °)`` against the judged model (ramps: the colliders'
     kinematics; steps: the stick–slip step model) and then against the ideal one.
+    ``diverged``: the first scenario whose run diverged (:func:`measure_or_diverged`;
+    then no tracking and no real-time factor), empty if none did.
     """
 
     label: str
@@ -64,6 +67,15 @@ class Summary:
     sideways_shortfall_pct: float
     tracking: dict[str, tuple[float, float, float, float]]
     real_time_factor: float
+    diverged: str = ""
+
+
+class StudyRunDivergedError(SimulationDivergedError):
+    """A study run diverged: ``scenario`` names it, the message says how and when."""
+
+    def __init__(self, label: str, scenario: str, cause: Exception) -> None:
+        super().__init__(f"{label}, {scenario}: {cause}")
+        self.scenario = scenario
 
 
 def study_scenarios(duration: float = STUDY_DURATION) -> list[Scenario]:
@@ -94,13 +106,16 @@ def measure(params: MecanumParams, scenarios: Sequence[Scenario], label: str) ->
     """Ripple, tracking and real-time factor of the model built from ``params``.
 
     Raises:
-        SimulationDivergedError: a run diverged.
+        StudyRunDivergedError: a run diverged (a :class:`SimulationDivergedError`).
     """
     rip = ripple.ripple(scenarios[0], params).metrics[0].value
     runs = {"ramp": [], "step": []}
     rtf = []
     for s in scenarios:
-        run = run_trial(get_spec(s.robot), s, params)
+        try:
+            run = run_trial(get_spec(s.robot), s, params)
+        except SimulationDivergedError as err:
+            raise StudyRunDivergedError(label, s.name, err) from err
         if run.result.error:
             raise RuntimeError(f"{label}, {s.name}: {run.result.error}")
         runs["step" if kinematics.is_step(s) else "ramp"].append(run)
@@ -111,11 +126,33 @@ def measure(params: MecanumParams, scenarios: Sequence[Scenario], label: str) ->
                    float(np.median(rtf)))
 
 
+def measure_or_diverged(params: MecanumParams, scenarios: Sequence[Scenario],
+                        label: str) -> Summary:
+    """:func:`measure`, or, if a run diverges, a row that says so.
+
+    The divergence is printed (MuJoCo's warning and the time) and the row keeps the
+    geometry's figures (ripple, shortfall), which need no run; the table reports it as
+    diverged instead of leaving the configuration out.
+    """
+    try:
+        return measure(params, scenarios, label)
+    except StudyRunDivergedError as err:
+        print(f"diverged: {err}", flush=True)
+        rip = ripple.ripple(scenarios[0], params).metrics[0].value
+        return Summary(label, rip, sideways_shortfall_pct(params), {}, float("nan"),
+                       diverged=err.scenario)
+
+
 def study_configs() -> list[tuple[str, MecanumParams]]:
     """Roller shapes × roller counts, everything else at the defaults."""
     return [(f"{shape}, {n}", dataclasses.replace(MecanumParams(), roller_shape=shape,
                                                    rollers_per_wheel=n))
             for n in COUNTS for shape in MecanumParams.ROLLER_SHAPES]
+
+
+def times(rtf: float) -> str:
+    """A real-time factor's cell: ``12×``, or ``n/a`` for a row that has none."""
+    return f"{fixed(rtf, 0)}×" if np.isfinite(rtf) else fixed(rtf)
 
 
 def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
@@ -126,13 +163,13 @@ def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
              "step model / ideal | real-time factor |", "|---|---|---|---|---|---|---|---|"]
     for s in rows:
         label = f"**{s.label} (default)**" if s.label == default_label else s.label
-        cells = []
-        for kind in ("ramp", "step"):
+        cells = [f"diverged in {s.diverged}"] + ["diverged"] * 3 if s.diverged else []
+        for kind in ("ramp", "step") if not s.diverged else ():
             pos, head, pos_i, head_i = s.tracking.get(kind, (np.nan,) * 4)
             cells += [f"{fixed(pos, 3)} / {fixed(pos_i, 3)}", f"{fixed(head)} / {fixed(head_i)}"]
         lines.append(f"| {label} | {fixed(s.ripple_pct, 3)} | "
                      f"{fixed(s.sideways_shortfall_pct)} | " + " | ".join(cells)
-                     + f" | {fixed(s.real_time_factor, 0)}× |")
+                     + f" | {times(s.real_time_factor)} |")
     return "\n".join(lines)
 
 
@@ -159,8 +196,9 @@ def timing_table(params: MecanumParams, rounds: int = 3,
         f"| ratio mecanum4 / omni3 | {max(ours) / max(omni):.2f} |"])
 
 
-#: Steps per timed loop of :func:`cost_table` (8 s of the 4 ms model), after
-#: :data:`COST_WARMUP` steps from rest, so that the robot cruises.
+#: Steps per timed loop of :func:`cost_table` (``COST_STEPS · sim.timestep`` of simulated
+#: time: a few seconds at the default step), after :data:`COST_WARMUP` steps from rest, so
+#: that the robot cruises.
 COST_STEPS = 2000
 COST_WARMUP = 200
 
@@ -170,7 +208,10 @@ def contact_variant(params: MecanumParams, pairs: bool) -> mujoco.MjModel:
 
     ``pairs=False``: the pairs removed and the roller colliders given ``conaffinity`` 1
     (``contype`` 0; the floor's ``contype`` is 1), so that the broadphase finds the same
-    roller–floor contacts and MuJoCo combines the geoms' parameters itself.
+    roller–floor contacts and MuJoCo combines the geoms' parameters itself. With
+    ``floor_impedance`` 0 that is the same physics as the pairs; with ``floor_impedance``
+    > 0 (the default) it is not: a geom carries no ``solreffriction``, so the bits give the
+    collision class's contact, at the model's ``impratio`` (:data:`BITS_LABEL`).
     """
     root = build_scene(mecanum4.NAME, params)
     if not pairs:
@@ -197,6 +238,10 @@ def _timed_loop(model: mujoco.MjModel, ctrl: np.ndarray) -> tuple[float, float, 
     return wall, stage[0], stage[1]
 
 
+#: What the contact-bits rows of :func:`cost_table` are when the pairs carry the remedy.
+BITS_LABEL = "contact bits (collision class's contact)"
+
+
 def cost_table(rounds: int = 7) -> str:
     """µs per ``mj_step`` and real-time factor of the contact/solver variants and ``omni3``.
 
@@ -204,14 +249,17 @@ def cost_table(rounds: int = 7) -> str:
     and ``omni3``'s default model, each on its cruising controls
     (:func:`~wmr_mujoco.bench.thread_scaling.driving_controls`); ``rounds`` interleaved
     rounds of :data:`COST_STEPS` steps on one thread; median and range over the rounds.
-    The stage columns (MuJoCo's own timers, median) show where the time goes.
+    The stage columns (MuJoCo's own timers, median) show where the time goes. The bits
+    rows cannot carry the pairs' remedy (:func:`contact_variant`); their label says so
+    when the default has it.
     """
     default = MecanumParams()
     models = {}
     for pairs in (False, True):
         for solver in ("Newton", "PGS"):
             params = dataclasses.replace(default, solver=solver)
-            label = (f"mecanum4, {'floor pairs' if pairs else 'contact bits'}, {solver}"
+            bits = BITS_LABEL if default.floor_impedance > 0.0 else "contact bits"
+            label = (f"mecanum4, {'floor pairs' if pairs else bits}, {solver}"
                      + (" (default)" if pairs and params == default else ""))
             models[label] = contact_variant(params, pairs)
     models["omni3 (default)"] = load(omni3.NAME)
@@ -275,7 +323,7 @@ def main(argv: Sequence[str] | None = None) -> None:
     default_label = f"{default.roller_shape}, {default.rollers_per_wheel}"
     study = []
     for label, params in study_configs():
-        study.append(measure(params, scenarios, label))
+        study.append(measure_or_diverged(params, scenarios, label))
         print(table(study[-1:]).splitlines()[-1], flush=True)
     publish(README, {"mecanum roller study": table(study, default_label),
                      "mecanum timing": timing_table(default, duration=args.duration),

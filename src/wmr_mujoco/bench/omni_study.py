@@ -13,11 +13,16 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Sequence
 
+import numpy as np
+
 from wmr_mujoco.docs_sync.markers import fixed, publish, study_parser
+from wmr_mujoco.lookup import load
 from wmr_mujoco.models.paths import MODELS_DIR
 from wmr_mujoco.robots import omni3
 from wmr_mujoco.robots.omni3.params import OmniParams
 from wmr_mujoco.robots.omni3.peer import Summary, measure_omni, measure_peer
+from wmr_mujoco.robots.roller_wheels import rolling_radius_profile
+from wmr_mujoco.sim.stepping import SimulationDivergedError
 
 #: The robot this study is about (its own study: it names its model and wheels).
 ROBOT = omni3.NAME
@@ -35,6 +40,28 @@ def study_configs() -> list[tuple[str, OmniParams]]:
     return configs
 
 
+def measure_or_diverged(params: OmniParams, label: str) -> Summary:
+    """:func:`measure_omni`, or, if a trial diverges, a row that says so.
+
+    The divergence is printed (MuJoCo's warning and the time); the row keeps the
+    geometry's ripple (wheel 1 over a revolution, as :func:`measure_omni` measures it),
+    which needs no run, and is labelled diverged, its run figures ``n/a``.
+    """
+    try:
+        return measure_omni(params, label)
+    except SimulationDivergedError as err:
+        print(f"{label} diverged: {err}", flush=True)
+        profile = rolling_radius_profile(load(ROBOT, params), "wheel1", "wheel1_roller")
+        nan = float("nan")
+        return Summary(f"{label}: diverged", 100.0 * float(np.ptp(profile) / np.mean(profile)),
+                       nan, nan, nan, nan, nan)
+
+
+def times(rtf: float) -> str:
+    """A real-time factor's cell: ``12×``, or ``n/a`` for a row that has none."""
+    return f"{fixed(rtf, 0)}×" if np.isfinite(rtf) else fixed(rtf)
+
+
 def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
     """Markdown table of summaries."""
     lines = ["| model | rolling-radius ripple % | worst position error % of path | "
@@ -44,7 +71,7 @@ def table(rows: Sequence[Summary], default_label: str | None = None) -> str:
         label = f"**{s.label} (default)**" if s.label == default_label else s.label
         lines.append(f"| {label} | {fixed(s.ripple_pct, 3)} | {fixed(s.worst_position_pct, 3)} | "
                      f"{fixed(s.worst_heading_deg)} | {fixed(s.yaw_ripple_pct, 1)} | "
-                     f"{fixed(s.roller_rate_err_pct, 1)} | {fixed(s.real_time_factor, 0)}× |")
+                     f"{fixed(s.roller_rate_err_pct, 1)} | {times(s.real_time_factor)} |")
     return "\n".join(lines)
 
 
@@ -55,7 +82,7 @@ def main(argv: Sequence[str] | None = None) -> None:
     default_label = f"{default.roller_shape}, 2×{default.rollers_per_row}"
     study = []
     for label, params in study_configs():
-        study.append(measure_omni(params, label))
+        study.append(measure_or_diverged(params, label))
         print(table(study[-1:]).splitlines()[-1], flush=True)
     ours = measure_omni(default, f"{ROBOT} (this package, default)")
     peer = measure_peer()

@@ -54,10 +54,11 @@ def hold(robot: Robot, x: np.ndarray, u: np.ndarray, what: str) -> np.ndarray:
         rhs = robot.adapter.rhs
         for _ in range(robot.nstep):
             x = rk4_step(rhs, x, u, robot.dt)
-    if not np.all(np.isfinite(x)):
+    x = np.asarray(x, float)
+    if not all(map(math.isfinite, x.tolist())):
         raise SimulationDivergedError(f"{robot.spec.name}: the {what} model's state "
                                       f"became non-finite at t={robot.time:.4f} s: {x}")
-    return np.asarray(x, float)
+    return x
 
 
 class WheelGeometry:
@@ -99,18 +100,20 @@ class WheelGeometry:
         self.axles = np.array(axles)
         self.radii = np.array(radii)
         self.steer_of_wheel = np.array(steer, dtype=int)
+        self._wheels = list(zip(self.centres.tolist(), self.axles.tolist(), steer,
+                                self.radii.tolist(), strict=True))
 
     def rates(self, twist: np.ndarray, steer_angles: np.ndarray) -> np.ndarray:
-        """``θ̇ = v_c · (a × e_z) / R`` of every wheel."""
-        u, v, r = twist
-        vc = np.column_stack([u - r * self.centres[:, 1], v + r * self.centres[:, 0]])
-        ax = self.axles.copy()
-        for i, k in enumerate(self.steer_of_wheel):
+        """``θ̇ = v_c · (a × e_z) / R`` of every wheel (on floats, in numpy's order)."""
+        u, v, r = twist.tolist() if type(twist) is np.ndarray else twist
+        out = []
+        for (cx, cy), (ax, ay), k, radius in self._wheels:
             if k >= 0:
                 c, s = math.cos(steer_angles[k]), math.sin(steer_angles[k])
-                ax[i] = (c * ax[i, 0] - s * ax[i, 1], s * ax[i, 0] + c * ax[i, 1])
-        # a × e_z = (a_y, −a_x) in the plane.
-        return (vc[:, 0] * ax[:, 1] - vc[:, 1] * ax[:, 0]) / self.radii
+                ax, ay = c * ax - s * ay, s * ax + c * ay
+            # a × e_z = (a_y, −a_x) in the plane.
+            out.append(((u - r * cy) * ay - (v + r * cx) * ax) / radius)
+        return np.array(out, dtype=float)
 
 
 class KinematicRobot(Robot):

@@ -11,13 +11,16 @@ such a robot would lose them and sink through the arena's floor without a word.
 :func:`attach_robot` does both: it removes the robot's top-level free joint (and its
 keyframes, whose ``qpos`` no longer fits), attaches it at ``pos`` with a free joint on
 the frame, and re-creates each contact pair the robot's scene would add against the
-arena's floor. ``wmr_mujoco.attach(arena, "omni3", pos=...)`` looks the robot up by name.
+arena's floor, with the options that scene sets (the pairs' ``impratio``: MuJoCo has one
+per model, and the robot file's own is the collision class's).
+``wmr_mujoco.attach(arena, "omni3", pos=...)`` looks the robot up by name.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+import numpy as np
 from dm_control import mjcf
 
 #: ``extras(scene_root, params)``: adds the contact pairs a robot's scene needs, naming
@@ -63,7 +66,9 @@ def attach_robot(arena: mjcf.RootElement, robot: mjcf.RootElement,
     The robot's ``<option>``, defaults and assets come along (dm_control merges them;
     a conflicting ``<option>`` is dm_control's error). ``extras`` (the robot's
     ``scene_extras`` and its ``params``) adds the contact pairs of the robot's scene,
-    between the arena's floor (:func:`arena_floor`) and the robot's geoms.
+    between the arena's floor (:func:`arena_floor`) and the robot's geoms, and the
+    ``<option>`` attributes its scene sets over the robot file's (the floor pairs'
+    ``impratio``, :mod:`wmr_mujoco.models.builders.wheel_pairs`).
 
     Args:
         arena: the model to attach to (it keeps its own floor, light, ...).
@@ -76,7 +81,8 @@ def attach_robot(arena: mjcf.RootElement, robot: mjcf.RootElement,
 
     Raises:
         ValueError: several top-level bodies with free joints; a floor that cannot be
-            found; a contact pair naming a geom the robot lacks.
+            found; a contact pair naming a geom the robot lacks; an arena whose own
+            ``<option>`` sets another value than the robot's scene.
     """
     floor_geom = arena_floor(arena, floor) if extras is not None else None
     free = _top_free_joints(robot)
@@ -87,12 +93,21 @@ def attach_robot(arena: mjcf.RootElement, robot: mjcf.RootElement,
         joint.remove()
     for key in robot.find_all("key"):
         key.remove()
-    pairs = []
+    pairs, options = [], {}
     if extras is not None:
         scratch = mjcf.RootElement(model="scene")
         extras(scratch, params)
         pairs = [p.get_attributes() for p in scratch.contact.get_children("pair")]
+        options = scratch.option.get_attributes()
+    for name, value in options.items():
+        have = getattr(arena.option, name)
+        if have is not None and not np.array_equal(have, value):
+            raise ValueError(f"robot {robot.model!r}: its scene sets option {name} = "
+                             f"{value!r}, the arena {have!r}; a model has one: leave the "
+                             f"arena's {name} unset or set it to {value!r}")
     frame = arena.attach(robot)
+    for name, value in options.items():  # over the robot file's, as its scene does
+        setattr(arena.option, name, value)
     frame.pos = tuple(pos)
     if quat is not None:
         frame.quat = tuple(quat)

@@ -193,3 +193,29 @@ def test_closest_searches_its_window_by_slices_with_the_same_floats(name):
         got, want = path.closest(q, hint), _closest_by_index(path, q, hint)
         assert (got.s, got.heading, got.curvature) == (want.s, want.heading, want.curvature)
         assert got.position.tobytes() == want.position.tobytes()
+
+
+def test_lookahead_is_the_full_scan_and_closest_answers_are_fresh():
+    # The lookahead skips samples surely inside its circle: the point is that of the scan of
+    # every sample ahead (as written before the skip). A kept closest-point answer comes
+    # back as a new PathPoint: changing one does not change the next.
+    rng = np.random.default_rng(4)
+    for path in (paths.random_spline(5), paths.figure_eight(), paths.lane_change()):
+        for _ in range(300):
+            s = float(rng.uniform(0.0, path.length))
+            p = path.at(s).position + rng.normal(0.0, 0.2, 2)
+            dist, hint = float(rng.choice([0.1, 0.6, 3.0])), s + float(rng.normal(0.0, 0.2))
+            s0 = path.closest(p, hint).s
+            step = path.s[1]
+            ahead = s0 + np.arange(0.0, (2.0 * dist + 4.0 * step), step / 4.0)
+            if not path.closed:
+                ahead = ahead[ahead <= path.length]
+            far = np.flatnonzero(np.linalg.norm(path.positions(ahead) - p, axis=1) >= dist)
+            want = path.at(ahead[far[0]] if len(far) else ahead[-1]) if len(ahead) else \
+                path.at(path.length)
+            got = path.lookahead(p, dist, hint)
+            assert (got.s, got.heading) == (want.s, want.heading)
+            assert got.position.tobytes() == want.position.tobytes()
+    q = path.closest((1.0, 0.5), 1.0)
+    q.position[:] = 99.0
+    assert path.closest((1.0, 0.5), 1.0).position.tolist() != [99.0, 99.0]

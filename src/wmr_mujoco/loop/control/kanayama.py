@@ -34,6 +34,7 @@ from wmr_mujoco.loop.control.base import (
     Controller,
     StateLike,
     Trajectory,
+    clip,
     positive,
     wrap,
 )
@@ -85,4 +86,4 @@ class Kanayama(Controller):
         if self.wheelbase is None:
             return np.array([v, omega])
         steer = math.atan(self.wheelbase * omega / v) if abs(v) > 1e-6 else 0.0
-        return np.array([v, float(np.clip(steer, -self.max_steer, self.max_steer))])
+        return np.array([v, clip(steer, -self.max_steer, self.max_steer)])

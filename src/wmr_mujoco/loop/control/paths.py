@@ -13,7 +13,8 @@ spacing ``h``: under 10 µm for the paths here). The closest-point query project
 the polyline's segments; given the previous arc length as a hint it searches only a
 window around it, so that a path crossing itself (the figure eight) is followed along,
 not jumped across. The cross-track error is signed, positive when the point lies to the
-LEFT of the path.
+LEFT of the path. These point queries run on Python floats, with the floats of these array
+formulas (:mod:`~wmr_mujoco.loop.control.path_index`).
 
 Paths: :func:`line`, :func:`circle`, :func:`figure_eight`, :func:`lane_change` and
 :func:`random_spline` (seeded); :func:`make_path` builds one by name (:data:`PATHS`).
@@ -23,7 +24,6 @@ and plan with :func:`hermite_path` (pose to pose); :func:`extend` runs a path on
 
 from __future__ import annotations
 
-import bisect
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -33,6 +33,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from wmr_mujoco.loop.control import polyline
+from wmr_mujoco.loop.control.path_index import PathIndex
 
 #: Fine samples per path.
 SAMPLES = 4001
@@ -94,17 +95,9 @@ class Path:
         """``(x, y, heading)`` at ``s = 0``."""
         return self.at(0.0).pose
 
-    def _s(self, s: float) -> float:  # np.mod's, np.clip's floats without their call cost
-        if self.closed:
-            return float(s) % self.length if math.isfinite(s) else math.nan
-        return float(s) if s != s else min(max(float(s), 0.0), self.length)
-
     def at(self, s: float) -> PathPoint:
         """The point at arc length ``s`` (wrapped on a closed path, clipped on an open one)."""
-        s = self._s(s)
-        xy = np.array([np.interp(s, self.s, c) for c in self._columns[:2]])
-        return PathPoint(s, xy, float(np.interp(s, self.s, self.heading)),
-                         float(np.interp(s, self.s, self.curvature)))
+        return _point(self._index.at(s))
 
     def closest(self, point: np.ndarray, hint: float | None = None,
                 window: float = HINT_WINDOW) -> PathPoint:
@@ -116,24 +109,18 @@ class Path:
                 ``[hint − window, hint + window]`` (wrapped on a closed path). None: the
                 whole path.
             window: half-width of that search, m.
+
+        Answers are kept (:data:`~wmr_mujoco.loop.control.path_index.MEMO`): a loop's
+        cross-track pass asks its controller's again.
         """
-        p, n = np.asarray(point, float)[:2], len(self.s)
-        first, last = 0, n - 1  # the segments first..last - 1 (mod n - 1 on a closed path)
-        if hint is not None:
-            h = self._s(hint)
-            lo, hi = (int(i) for i in np.searchsorted(self.s, [h - window, h + window]))
-            first, last = (lo - 1, hi + 1) if self.closed else (max(lo - 1, 0), min(hi + 1, n - 1))
-        w = (slice(first, last) if first >= 0 and last <= n - 1  # views, or a wrapped window
-             else np.mod(np.arange(first, last), n - 1))
-        k, t = polyline.nearest(self._columns, w, float(p[0]), float(p[1]))
-        return self.at(self.s[i := (first + k) % (n - 1)] + t[k] * (self.s[i + 1] - self.s[i]))
+        p = np.asarray(point, float)[:2]
+        return _point(self._index.closest(float(p[0]), float(p[1]), hint, window))
 
-    #: The polyline's columns and its segments' ``d`` and ``d·d``, kept.
-    _columns = cached_property(lambda self: polyline.segments(self.xy))
+    #: The samples kept for the point queries (:mod:`~wmr_mujoco.loop.control.path_index`).
+    _index = cached_property(lambda self: PathIndex(self.s, self.xy, self.heading,
+                                                    self.curvature, self.closed))
 
-    @cached_property
-    def _rows(self) -> tuple[list[float], list[list[float]]]:
-        return self.s.tolist(), self.xy.tolist()
+    _rows = cached_property(lambda self: (self.s.tolist(), self.xy.tolist()))
 
     def track(self, point: np.ndarray, hint: float) -> PathPoint:
         """:meth:`closest` for a point that moved little since the answer at ``hint``, m.
@@ -141,24 +128,7 @@ class Path:
         From the segment at ``hint`` it walks along the path while the distance shrinks:
         for a control loop, once a step, at a fraction of :meth:`closest`'s cost.
         """
-        (s, xy), px, py = self._rows, float(point[0]), float(point[1])
-        n = len(s) - 1
-
-        def foot(i: int) -> tuple[float, float]:
-            (ax, ay), (bx, by) = xy[i % n], xy[i % n + 1]
-            dx, dy = bx - ax, by - ay
-            t = min(1.0, max(0.0, ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy)))
-            return (ax + t * dx - px) ** 2 + (ay + t * dy - py) ** 2, t
-
-        i = max(0, min(bisect.bisect_right(s, hint % s[-1] if self.closed else hint) - 1, n - 1))
-        best, t = foot(i)
-        for step in (1, -1):
-            while self.closed or 0 <= i + step < n:
-                d, u = foot(i + step)
-                if d >= best:
-                    break
-                i, best, t = i + step, d, u
-        i %= n
+        i, t = polyline.walk(*self._rows, self.closed, float(point[0]), float(point[1]), hint)
         f = lambda a: float(a[i] + t * (a[i + 1] - a[i]))  # noqa: E731 - linear in s
         return PathPoint(f(self.s), self.xy[i] + t * (self.xy[i + 1] - self.xy[i]),
                          f(self.heading), f(self.curvature))
@@ -169,10 +139,12 @@ class Path:
         Off the end of an open path the distance to the end point is returned, signed by
         the side.
         """
-        q = self.closest(point, hint)
-        rel = np.asarray(point, float)[:2] - q.position
-        side = -np.sin(q.heading) * rel[0] + np.cos(q.heading) * rel[1]
-        return float(np.copysign(np.hypot(*rel), side)), q.s
+        p = np.asarray(point, float)[:2]
+        rx, ry = float(p[0]), float(p[1])
+        s, qx, qy, heading, _ = self._index.closest(rx, ry, hint, HINT_WINDOW)
+        rx, ry = rx - qx, ry - qy
+        side = -np.sin(heading) * rx + np.cos(heading) * ry
+        return math.copysign(float(np.hypot(rx, ry)), side), s
 
     def lookahead(self, point: np.ndarray, distance: float, hint: float | None = None
                   ) -> PathPoint:
@@ -188,29 +160,21 @@ class Path:
         if not (np.isfinite(distance) and distance > 0):
             raise ValueError(f"distance = {distance!r}; must be a finite number > 0 m")
         p = np.asarray(point, float)[:2]
-        s0 = self.closest(p, hint).s
-        step = self.s[1]
-        ahead = s0 + np.arange(0.0, (2.0 * distance + 4.0 * step), step / 4.0)
-        if not self.closed:
-            ahead = ahead[ahead <= self.length]
-            if len(ahead) == 0:
-                return self.at(self.length)
-        pts = np.stack([np.interp(self._wrap(ahead), self.s, c) for c in self._columns[:2]], 1)
-        beyond = np.flatnonzero(np.linalg.norm(pts - p, axis=1) >= distance)
-        return self.at(ahead[beyond[0]] if len(beyond) else ahead[-1])
+        return _point(self._index.lookahead(float(p[0]), float(p[1]), distance, hint,
+                                            HINT_WINDOW))
 
     def positions(self, s: np.ndarray) -> np.ndarray:
         """``(x, y)`` at the arc lengths ``s`` (wrapped or clipped like :meth:`at`), (..., 2)."""
-        s = self._wrap(np.asarray(s, float))
+        s = self._index.wrap_array(np.asarray(s, float))
         out = np.empty((*s.shape, 2))
-        out[..., 0] = np.interp(s, self.s, self._columns[0])
-        out[..., 1] = np.interp(s, self.s, self._columns[1])
+        out[..., 0] = np.interp(s, self.s, self._index.seg.x)
+        out[..., 1] = np.interp(s, self.s, self._index.seg.y)
         return out
 
-    def _wrap(self, s: np.ndarray) -> np.ndarray:
-        if self.closed:
-            return np.mod(s, self.length)
-        return np.minimum(np.maximum(s, 0.0), self.s[-1])
+
+def _point(row: tuple[float, float, float, float, float]) -> PathPoint:
+    """The :class:`PathPoint` of a row ``(s, x, y, heading, curvature)``."""
+    return PathPoint(row[0], np.array(row[1:3]), row[3], row[4])
 
 
 Curve = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]

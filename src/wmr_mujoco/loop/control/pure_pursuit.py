@@ -36,6 +36,7 @@ from wmr_mujoco.loop.control.base import (
     CommandKind,
     Controller,
     StateLike,
+    clip,
     positive,
     steer_command,
 )
@@ -74,7 +75,7 @@ class PurePursuit(Controller):
 
     def curvature(self, state: StateLike, path: Path) -> float:
         """``κ = 2 sin α / L_d`` toward the goal point (``L_d`` its actual distance)."""
-        x, y, psi = np.asarray(state.pose, float)[:3]
+        x, y, psi = np.asarray(state.pose, float)[:3].tolist()
         self._s = path.closest((x, y), self._s).s
         goal = path.lookahead((x, y), self.lookahead, self._s).position
         dx, dy = goal[0] - x, goal[1] - y
@@ -90,6 +91,5 @@ class PurePursuit(Controller):
         kappa = self.curvature(state, reference)
         if self.wheelbase is None:
             return np.array([self.speed, self.speed * kappa])
-        steer = float(np.clip(math.atan(self.wheelbase * kappa), -self.max_steer,
-                              self.max_steer))
+        steer = clip(math.atan(self.wheelbase * kappa), -self.max_steer, self.max_steer)
         return steer_command(self.kind, self.speed, steer, self.wheelbase)

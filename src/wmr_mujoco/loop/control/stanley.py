@@ -30,6 +30,7 @@ from wmr_mujoco.loop.control.base import (
     CommandKind,
     Controller,
     StateLike,
+    clip,
     command_kind,
     positive,
     steer_command,
@@ -93,7 +94,7 @@ class Stanley(Controller):
         e = -math.sin(point.heading) * rel[0] + math.cos(point.heading) * rel[1]
         delta = wrap(point.heading - pose[2]) - math.atan2(self.gain * e,
                                                            self.softening + self.speed)
-        return float(np.clip(delta, -self.max_steer, self.max_steer))
+        return clip(delta, -self.max_steer, self.max_steer)
 
     def __call__(self, state: StateLike, reference: Path, t: float) -> np.ndarray:
         """``(v, δ)`` or ``(v, ω)`` following the path ``reference``."""

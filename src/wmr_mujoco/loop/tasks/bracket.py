@@ -38,7 +38,7 @@ import math
 import numpy as np
 
 from wmr_mujoco.analytic import nonholonomy
-from wmr_mujoco.loop.control.base import CommandKind, positive
+from wmr_mujoco.loop.control.base import CommandKind, clip, positive
 from wmr_mujoco.loop.control.registry import kind_of
 from wmr_mujoco.loop.robot import Robot
 
@@ -81,14 +81,14 @@ def _roll(robot: Robot, d: float, speed: float):
     for _ in range(round((abs(d) / speed + SEGMENT_EXTRA) / robot.control_period)):
         p = robot.state.pose
         moved = c * (p[0] - start[0]) + s * (p[1] - start[1])
-        robot.step([float(np.clip(GAIN * (d - moved), -speed, speed)), 0.0])
+        robot.step([float(clip(GAIN * (d - moved), -speed, speed)), 0.0])
 
 
 def _turn(robot: Robot, turn: float, rate: float):
     start = float(robot.state.pose[2])
     for _ in range(round((abs(turn) / rate + SEGMENT_EXTRA) / robot.control_period)):
         done = float(robot.state.pose[2]) - start
-        robot.step([0.0, float(np.clip(GAIN * (turn - done), -rate, rate))])
+        robot.step([0.0, float(clip(GAIN * (turn - done), -rate, rate))])
 
 
 def run_cycle(robot: Robot, eps: float, speed: float = SPEED, rate: float = RATE,

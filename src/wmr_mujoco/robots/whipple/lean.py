@@ -119,6 +119,8 @@ class WhippleLean(Controller):
         self.speed = positive("speed", speed)
         self.params = params
         self.gain = lqr_gain(self.speed, params, weights)
+        self.gain.flags.writeable = False  # read-only: −K is kept
+        self._negative = (self.gain, -self.gain)
         self.max_torque = positive("max_torque", max_torque)
         p = params
         m_e = (p.rear_mass + p.rear_frame_mass + p.front_frame_mass + p.front_mass
@@ -139,7 +141,10 @@ class WhippleLean(Controller):
 
     def torque(self, x: np.ndarray) -> float:
         """``T_δ = −K x``, clipped to the limit."""
-        return _clip(float(-self.gain @ x), self.max_torque)
+        gain, negative = self._negative
+        if gain is not self.gain:  # a new gain: its −K
+            self._negative = gain, negative = self.gain, -self.gain
+        return _clip(float(negative @ x), self.max_torque)
 
     def __call__(self, state: StateLike, reference: None, t: float) -> np.ndarray:
         """``(T_r, T_δ)`` from the speed, lean and steer (``state.twist``, ``state.extra``).
