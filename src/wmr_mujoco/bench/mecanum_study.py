@@ -143,11 +143,26 @@ def measure_or_diverged(params: MecanumParams, scenarios: Sequence[Scenario],
                        diverged=err.scenario)
 
 
+#: The mesh roller shape (the ideal profile's convex hull).
+MESH = "profile"
+
+
 def study_configs() -> list[tuple[str, MecanumParams]]:
-    """Roller shapes × roller counts, everything else at the defaults."""
-    return [(f"{shape}, {n}", dataclasses.replace(MecanumParams(), roller_shape=shape,
-                                                   rollers_per_wheel=n))
-            for n in COUNTS for shape in MecanumParams.ROLLER_SHAPES]
+    """Roller shapes × roller counts, everything else at the defaults.
+
+    The mesh ``"profile"`` rollers run on contact bits (``floor_impedance`` 0, labelled):
+    with the floor pairs' remedy they are refused (they throw the robot off the floor,
+    :func:`~wmr_mujoco.models.params.fields._check_mesh_rollers`).
+    """
+    out = []
+    for n in COUNTS:
+        for shape in MecanumParams.ROLLER_SHAPES:
+            bits = shape == MESH
+            out.append((f"{shape}, {n}" + (" (contact bits)" if bits else ""),
+                        dataclasses.replace(MecanumParams(), roller_shape=shape,
+                                            rollers_per_wheel=n,
+                                            **({"floor_impedance": 0.0} if bits else {}))))
+    return out
 
 
 def times(rtf: float) -> str:

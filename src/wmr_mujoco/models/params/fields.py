@@ -106,3 +106,20 @@ def _check_floor_pair(obj: Any) -> None:
     """``floor_impedance`` 0 or in [1e-4, 0.01]."""
     if obj.floor_impedance != 0.0:
         _check_range(obj, "floor_impedance", 1e-4, 0.01, low_inclusive=True)
+
+
+def _check_mesh_rollers(obj: Any, mesh: str) -> None:
+    """A convex-mesh roller (``roller_shape == mesh``) only with ``floor_impedance`` 0.
+
+    A mesh touches the floor at several points at once; against the floor pairs' soft
+    contact (the remedy, ``floor_impedance`` > 0) those contacts throw the robot off the
+    floor at the robots' steps (``tests/robots/mecanum4/test_params.py``), so the
+    combination is refused rather than run.
+    """
+    if obj.roller_shape == mesh and obj.floor_impedance != 0.0:
+        others = ", ".join(repr(s) for s in obj.ROLLER_SHAPES if s != mesh)
+        raise ValueError(f"{type(obj).__name__}.roller_shape = {mesh!r} with floor_impedance "
+                         f"= {obj.floor_impedance!r}: a mesh roller touches the floor at "
+                         "several points, and against the floor pairs' soft contact they "
+                         "throw the robot off the floor; valid: floor_impedance = 0 (contact "
+                         f"bits) with {mesh!r}, or roller_shape {others} with the pairs")

@@ -20,6 +20,7 @@ from wmr_mujoco.models.params import (
     _check_choice,
     _check_count,
     _check_floor_pair,
+    _check_mesh_rollers,
     _check_positive_fields,
     _check_range,
     _check_types,
@@ -49,7 +50,8 @@ class MecanumParams:
         rollers_per_wheel: n, rollers on each wheel.
         roller_shape: collision primitive of a roller: ``"ellipsoid"`` (osculating the
             ideal profile at the roller middle), ``"profile"`` (convex mesh of the ideal
-            profile), ``"capsule"`` or ``"sphere"``.
+            profile; only with ``floor_impedance`` 0, see ``_check_mesh_rollers``),
+            ``"capsule"`` or ``"sphere"``.
         roller_thickness: radial thickness b of a roller at its middle, as a fraction of R.
         roller_overlap: extra wheel-rotation span of each roller beyond the ``π/n``
             half-span needed for one roller to always touch, as a fraction.
@@ -136,6 +138,7 @@ class MecanumParams:
         _check_range(self, "roller_mass", 0.0, self.hub_mass)
         _check_count(self, "rollers_per_wheel", 6, 24)
         _check_choice(self, "roller_shape", self.ROLLER_SHAPES)
+        _check_mesh_rollers(self, "profile")
         _check_choice(self, "solver", self.SOLVERS)
         _check_choice(self, "jacobian", self.JACOBIANS)
         _check_choice(self, "cone", self.CONES)

@@ -10,6 +10,7 @@ from wmr_mujoco.models.params.fields import (
     _check_choice,
     _check_count,
     _check_floor_pair,
+    _check_mesh_rollers,
     _check_positive_fields,
     _check_range,
 )
@@ -40,7 +41,8 @@ class OmniParams:
         roller_mass: mass of each roller.
         rollers_per_row: rollers in each of the two rows.
         roller_shape: collision primitive of a roller: ``"barrel"`` (convex mesh of the
-            exact profile), ``"ellipsoid"``, ``"capsule"`` or ``"sphere"``.
+            exact profile; only with ``floor_impedance`` 0, see ``_check_mesh_rollers``),
+            ``"ellipsoid"``, ``"capsule"`` or ``"sphere"``.
         roller_thickness: radial thickness of a roller at its middle, as a fraction of r.
         roller_overlap: extra angular span of each roller beyond the ``90°/n`` half-span
             needed for one roller to always touch, as a fraction (the rows overlap).
@@ -111,6 +113,7 @@ class OmniParams:
         _check_range(self, "row_offset_ratio", 0.0, 3.0, low_inclusive=True)
         _check_count(self, "rollers_per_row", 2, 20)
         _check_choice(self, "roller_shape", self.ROLLER_SHAPES)
+        _check_mesh_rollers(self, "barrel")
         _check_choice(self, "solver", self.SOLVERS)
         _check_choice(self, "jacobian", self.JACOBIANS)
         _check_choice(self, "cone", self.CONES)
