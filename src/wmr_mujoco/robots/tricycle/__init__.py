@@ -89,6 +89,7 @@ class FreeWheelProbe:
 
     params: TricycleParams
     wheel_dofs: tuple[int, int]
+    steer_qpos: int
     errors: list[float] = field(default_factory=list)
 
     def observe(self, sample: Sample) -> None:
@@ -97,7 +98,7 @@ class FreeWheelProbe:
         if sample.t <= 1.0 or abs(rates[0]) <= 1.0:
             return
         p = self.params
-        k = p.track / (2 * p.wheelbase) * np.tan(sample.data.joint("steer").qpos[0])
+        k = p.track / (2 * p.wheelbase) * np.tan(sample.data.qpos[self.steer_qpos])
         predicted = rates[0] * (1 + k) / (1 - k)
         self.errors.append((rates[1] - predicted) / predicted)
 
@@ -114,7 +115,8 @@ def free_wheel_probe(scenario: Scenario, model: mujoco.MjModel, adapter: Adapter
     if not isinstance(adapter, TricycleKinematics):
         return None
     dofs = tuple(int(model.jnt_dofadr[model.joint(j).id]) for j in adapter.wheel_joints[:2])
-    return FreeWheelProbe(adapter.params, (dofs[0], dofs[1]))
+    return FreeWheelProbe(adapter.params, (dofs[0], dofs[1]),
+                          int(model.jnt_qposadr[model.joint("steer").id]))
 
 
 def kinematic_adapter(scenario: Scenario, model: mujoco.MjModel,
