@@ -9,7 +9,7 @@ clips.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import mujoco
@@ -177,13 +177,22 @@ class FreeRun:
         model: the compiled free disc (a measurement may change its gravity: an incline).
         state: analytic initial state (:data:`~wmr_mujoco.analytic.rolling_disc.STATE_NAMES`).
         duration: seconds to run.
-        stop: ends the run early when it returns True for a row ``(t, pose...)``.
+        stop_lean: ends the run at the first step where ``|θ|`` passes it, rad (None:
+            the whole duration).
+
+    Raises:
+        ValueError: a ``stop_lean`` that is not a finite number > 0.
     """
 
     model: mujoco.MjModel
     state: np.ndarray
     duration: float
-    stop: Callable[[np.ndarray], bool] | None = None
+    stop_lean: float | None = None
+
+    def __post_init__(self) -> None:
+        s = self.stop_lean
+        if s is not None and not (isinstance(s, (int, float)) and math.isfinite(s) and s > 0):
+            raise ValueError(f"stop_lean = {s!r} rad; valid: None or a finite number > 0")
 
     @property
     def disc(self) -> RollingDisc:
@@ -207,21 +216,19 @@ class FreeRun:
                 mujoco.mj_step(model, data)
             row = readout()
             yield data, row
-            if k and self.stop is not None and self.stop(row):
+            if k and self.stop_lean is not None and abs(row[4]) > self.stop_lean:
                 break
         check_healthy(model, data)
 
     def rows(self) -> np.ndarray:
         """Rows ``(t, x_P, y_P, ψ, θ, ω1, ω2, ω3, E)`` of the whole run.
 
-        A run without ``stop`` records each step's state and reads them all at once
-        (:func:`_poses`: the rows of :meth:`steps`, bit for bit).
+        Each step's state is recorded (its lean read for ``stop_lean``) and all are read
+        at once (:func:`_poses`: the rows of :meth:`steps`, bit for bit).
 
         Raises:
             SimulationDivergedError: the run diverged.
         """
-        if self.stop is not None:
-            return np.array([row for _, row in self.steps()])
         model = self.model
         disc = self.disc
         data = mujoco.MjData(model)
@@ -235,5 +242,10 @@ class FreeRun:
                 mujoco.mj_step(model, data)
             raw[k, 0] = data.time
             raw[k, 1:10], raw[k, 10:13], raw[k, 13:] = xmat, xpos, qvel
+            if k and self.stop_lean is not None:
+                z = float(xmat[7])  # ê2_z: free_pose's lean
+                if abs(math.asin(z if z != z else min(1.0, max(-1.0, z)))) > self.stop_lean:
+                    raw = raw[:k + 1]
+                    break
         check_healthy(model, data)
         return _poses(model, disc.radius, raw)
