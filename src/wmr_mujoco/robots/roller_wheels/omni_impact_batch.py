@@ -22,7 +22,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from wmr_mujoco.analytic.planar import wrap_angle
-from wmr_mujoco.robots.roller_wheels.omni_impacts import _UP
 
 if TYPE_CHECKING:
     from wmr_mujoco.robots.roller_wheels.omni_hybrid import OmniHybrid
@@ -100,7 +99,7 @@ def _constraint_rows(model: OmniHybrid, modes: np.ndarray, thetas: np.ndarray) -
     skew = np.stack([np.stack([zero, -p[..., 2], p[..., 1]], -1),
                      np.stack([p[..., 2], zero, -p[..., 0]], -1),
                      np.stack([-p[..., 1], p[..., 0], zero], -1)], -2)  # (B, 3, 3, 3)
-    dirs = np.stack([model.drive_dirs, np.broadcast_to(_UP, (3, 3)), -model.radial], 1)
+    dirs = model.contact_dirs
     lever = (-dirs[None, :, :, None, :] @ skew[:, :, None])[..., 0, :]  # (B, 3, 3, 3)
     nb = len(modes)
     A = np.zeros((nb, 3, 3, 12))  # run, wheel, row, column
