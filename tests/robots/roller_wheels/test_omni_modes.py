@@ -65,3 +65,9 @@ def test_switch_fraction_of_a_run_without_hand_over_is_the_whole_step():
     th = np.zeros((2, 3))
     modes = lowest(model, th)
     assert switch_fraction(model, th, th + 0.01, modes, modes).tolist() == [1.0, 1.0]
+
+
+def test_roller_gap_is_omni3s_spacing():
+    # omni3's 12 rollers (two rings of 6, offset by half a spacing) are 30° apart; the
+    # angles come from the model file, equal to 1e-12 rad.
+    assert hybrid().roller_gap == pytest.approx(math.pi / 6, abs=1e-11)

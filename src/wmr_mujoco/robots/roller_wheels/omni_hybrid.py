@@ -32,6 +32,7 @@ Drive laws: torque (``τ = u``) or rate servo (``τ = clip(k_v (u − θ̇), ±�
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -135,6 +136,12 @@ class OmniHybrid(HybridImpacts):
         dirs = np.stack([self.drive_dirs, np.broadcast_to(_UP, (3, 3)), -self.radial], 1)
         dirs.setflags(write=False)
         return dirs
+
+    @functools.cached_property
+    def roller_gap(self) -> float:
+        """``s``: the least angle between two rollers of a wheel, rad."""
+        ring = np.sort(np.remainder(self.rollers.angles, 2.0 * math.pi))
+        return float(np.diff(ring, append=ring[0] + 2.0 * math.pi).min())
 
     def modes(self, thetas: np.ndarray) -> tuple[int, int, int]:
         """σ_i: roller in contact on each wheel."""

@@ -24,9 +24,9 @@ def lowest(model: OmniHybrid, thetas: np.ndarray) -> np.ndarray:
     :func:`~wmr_mujoco.analytic.planar.wrap_angle`'s floats (``arg(exp(i x))``, a few
     ulp of π), at a quarter of its cost (no complex exponential). The second-lowest
     roller is at least ``s − |φ_σ|`` from the bottom (``s`` the least angular gap
-    between two rollers), so wherever ``|φ_σ| < s/2 − 10⁻⁹`` the argmin is
-    ``wrap_angle``'s; the other wheels (near a hand-over's tie) take ``wrap_angle``
-    itself, and so do angles beyond 10⁴ rad.
+    between two rollers, ``OmniHybrid.roller_gap``), so wherever
+    ``|φ_σ| < s/2 − 10⁻⁹`` the argmin is ``wrap_angle``'s; the other wheels (near a
+    hand-over's tie) take ``wrap_angle`` itself, and so do angles beyond 10⁴ rad.
     """
     angles = model.rollers.angles
     shifted = angles + thetas[..., None] - math.pi
@@ -34,9 +34,8 @@ def lowest(model: OmniHybrid, thetas: np.ndarray) -> np.ndarray:
         return np.argmin(np.abs(wrap_angle(shifted)), axis=-1)
     dist = np.abs(shifted - 2.0 * math.pi * np.rint(shifted / (2.0 * math.pi)))
     sigma = np.argmin(dist, axis=-1)
-    ring = np.sort(np.remainder(angles, 2.0 * math.pi))
-    gap = np.diff(ring, append=ring[0] + 2.0 * math.pi).min()
-    near = np.take_along_axis(dist, sigma[..., None], -1)[..., 0] >= 0.5 * gap - 1e-9
+    near = (np.take_along_axis(dist, sigma[..., None], -1)[..., 0]
+            >= 0.5 * model.roller_gap - 1e-9)
     if near.any():
         sigma[near] = np.argmin(np.abs(wrap_angle(shifted[near])), axis=-1)
     return sigma
