@@ -54,7 +54,7 @@ def test_set_free_state_puts_the_analytic_state_into_mujoco(free):
 def test_run_stops_where_asked(free):
     disc = disc_from_model(free)
     run = FreeRun(free, disc.initial_state(0.0, 0.5, lean_rate=0.5), 2.0,
-                  stop=lambda row: abs(row[4]) > 0.05)
+                  stop_lean=0.05)
     rows = run.rows()
     assert abs(rows[-1, 4]) > 0.05 >= abs(rows[-2, 4])
     assert rows[-1, 0] < 2.0
@@ -97,3 +97,44 @@ def test_free_pose_reads_the_tilted_frame_as_numpy_did(free):
         got = free_pose(free, data, disc.radius)
         want = [p[0], p[1], math.atan2(e1[1], e1[0]), th, w @ e1, w @ e2, w @ e3]
         assert got[:7].tobytes() == np.array(want).tobytes()
+
+
+def test_a_runs_rows_are_free_pose_bit_for_bit(free):
+    # FreeRun reads each step through a readout with the model's constants taken once:
+    # every row (energy included) must be free_pose's floats at that step, time in front.
+    import numpy as np
+
+    disc = disc_from_model(free)
+    run = FreeRun(free, disc.initial_state(0.2, 0.8, lean_rate=0.3), 0.3)
+    n = 0
+    for data, row in run.steps():
+        want = np.concatenate([[data.time], free_pose(free, data, disc.radius)])
+        assert row.tobytes() == want.tobytes()
+        n += 1
+    assert n == round(0.3 / free.opt.timestep) + 1
+
+
+@pytest.mark.parametrize("state", ["leaning", "steady", "stopped"])
+def test_rows_read_at_once_are_the_steps_rows(free, state):
+    # FreeRun.rows reads all steps at once (stacked products): bit for bit the rows its
+    # steps give one by one (a leaning start, a steady circling, a run that stops when
+    # its lean passes 0.05 rad: the same last row).
+    import numpy as np
+
+    disc = disc_from_model(free)
+    start = (disc.initial_state(0.15, 1.0) if state == "leaning"
+             else disc.steady_motion(0.3, 0.6).state)
+    if state == "stopped":
+        start = disc.initial_state(0.0, 0.5, lean_rate=0.5)
+    run = FreeRun(free, start, 0.5, stop_lean=0.05 if state == "stopped" else None)
+    at_once = run.rows()
+    one_by_one = np.array([row for _, row in run.steps()])
+    assert at_once.shape == one_by_one.shape
+    assert at_once.tobytes() == one_by_one.tobytes()
+
+
+@pytest.mark.parametrize("bad", [0.0, -0.1, float("nan"), float("inf"), "0.1"])
+def test_a_bad_stop_lean_is_refused(free, bad):
+    disc = disc_from_model(free)
+    with pytest.raises(ValueError, match="stop_lean"):
+        FreeRun(free, disc.initial_state(0.0, 0.5), 1.0, stop_lean=bad)

@@ -74,3 +74,17 @@ def test_constraint_rows_and_roller_terms_are_the_scalar_ones():
     want = np.array([[g.rolling_radius(p), g.contact_ahead(p), g.contact_radius(p)]
                      for p in phi.tolist()])
     assert terms.tobytes() == want.tobytes()
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_the_integrators_rows_give_the_same_floats(seed):
+    # Bit for bit: H(σ) and k(σ) handed in by the integrator (its _geometry at the same
+    # wheel angles) against those planar_impacts makes itself.
+    model = hybrid()
+    nu, old, new, th, spins, accels = _impacts(model, seed)
+    g_old, g_new = omni_batch._geometry(model, th, old), omni_batch._geometry(model, th, new)
+    got = planar_impacts(model, nu, old, new, th, spins, accels,
+                         (g_old.H, g_new.H, g_old.ks, g_new.ks))
+    ref = planar_impacts(model, nu, old, new, th, spins, accels)
+    for a, b in zip(got, ref, strict=True):
+        np.testing.assert_array_equal(a, b)

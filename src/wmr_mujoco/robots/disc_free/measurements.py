@@ -93,7 +93,7 @@ def stability_runs(model: mujoco.MjModel, ratios: tuple[float, ...] = SWEEP_RATI
     disc = disc_from_model(model)
     return [FreeRun(model, disc.initial_state(
         0.0, check_rate("speed ratio", r, "") * disc.critical_speed, lean_rate=kick),
-        duration, stop=lambda row: abs(row[4]) > stop_lean) for r in ratios]
+        duration, stop_lean=stop_lean) for r in ratios]
 
 
 def stability_sweep(model: mujoco.MjModel, ratios: tuple[float, ...] = SWEEP_RATIOS,

@@ -9,7 +9,7 @@ clips.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import mujoco
@@ -86,6 +86,79 @@ def free_pose(model: mujoco.MjModel, data: mujoco.MjData, radius: float) -> np.n
                      w_world @ e2, w_world @ e3, energy])
 
 
+class _Readout:
+    """:func:`free_pose` of one simulation at every step, with a time column in front.
+
+    The model's constants (the disc's body, ``½ m``, the weight ``m g``) and views into
+    ``data`` are taken once; each call evaluates :func:`free_pose`'s formulas on them in
+    the same order (the same numpy and ``math`` calls), so the same floats.
+    """
+
+    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, radius: float) -> None:
+        b = model.body("disc").id
+        m = model.body_mass[b]
+        self.data, self.radius = data, radius
+        self.rot = data.xmat[b].reshape(3, 3)
+        self.e2 = self.rot[:, 1]
+        self.pos, self.v, self.w = data.xpos[b], data.qvel[:3], data.qvel[3:6]
+        self.half_m, self.inertia, self.weight = 0.5 * m, model.body_inertia[b], m * (
+            -model.opt.gravity)
+
+    def __call__(self) -> np.ndarray:
+        """``(t, x_P, y_P, ψ, θ, ω1, ω2, ω3, E)`` now."""
+        e2, v, w = self.e2, self.v, self.w
+        z = float(e2[2])
+        th = math.asin(z if z != z else min(1.0, max(-1.0, z)))
+        e1 = _cross(e2.tolist(), (0.0, 0.0, 1.0))
+        e1 /= math.sqrt(e1.dot(e1))  # np.linalg.norm's floats: sqrt(x·x)
+        e3 = _cross(e1.tolist(), e2.tolist())
+        p = self.pos - self.radius * e3
+        w_world = self.rot @ w
+        energy = (self.half_m * v @ v + 0.5 * w @ (self.inertia * w) + self.weight @ self.pos)
+        return np.array([self.data.time, p[0], p[1], math.atan2(e1[1], e1[0]), th,
+                         w_world @ e1, w_world @ e2, w_world @ e3, energy])
+
+
+def _poses(model: mujoco.MjModel, radius: float, raw: np.ndarray) -> np.ndarray:
+    """:class:`_Readout`'s rows of many steps at once from their ``raw`` (N, 19) states.
+
+    ``raw`` rows: time, the disc's ``xmat`` (9), ``xpos`` (3), ``qvel`` (6). Each step's
+    floats are :func:`free_pose`'s: the elementwise steps the same operations in the same
+    order, ``asin`` and ``atan2`` the ``math`` ones, and every product a stacked
+    ``matmul`` whose slices have the layout of the step's own operands (numpy calls BLAS
+    on each slice: ``gemv`` for ``R ω``, ``dot`` for two vectors, ``e2`` a column of ``R``
+    with its stride).
+    """
+    b = model.body("disc").id
+    m = model.body_mass[b]
+    n = len(raw)
+    rot = np.ascontiguousarray(raw[:, 1:10]).reshape(n, 3, 3)
+    e2 = rot[:, :, 1]
+    pos, v, w = (np.ascontiguousarray(raw[:, k:k + 3]) for k in (10, 13, 16))
+
+    def dot(a: np.ndarray, c: np.ndarray) -> np.ndarray:
+        return (a[:, None, :] @ c[:, :, None])[:, 0, 0]
+
+    z = e2[:, 2].tolist()
+    th = [math.asin(x if x != x else min(1.0, max(-1.0, x))) for x in z]
+    e1 = np.empty((n, 3))  # e2 × (0, 0, 1), as _cross evaluates it
+    e1[:, 0] = e2[:, 1] * 1.0 - e2[:, 2] * 0.0
+    e1[:, 1] = e2[:, 2] * 0.0 - e2[:, 0] * 1.0
+    e1[:, 2] = e2[:, 0] * 0.0 - e2[:, 1] * 0.0
+    e1 /= np.sqrt(dot(e1, e1))[:, None]
+    e3 = np.empty((n, 3))  # e1 × e2
+    e3[:, 0] = e1[:, 1] * e2[:, 2] - e1[:, 2] * e2[:, 1]
+    e3[:, 1] = e1[:, 2] * e2[:, 0] - e1[:, 0] * e2[:, 2]
+    e3[:, 2] = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]
+    p = pos - radius * e3
+    w_world = (rot @ w[:, :, None])[:, :, 0]
+    energy = (dot(0.5 * m * v, v) + dot(0.5 * w, model.body_inertia[b] * w)
+              + dot(np.broadcast_to(m * -model.opt.gravity, (n, 3)), pos))
+    heading = [math.atan2(y, x) for x, y in e1[:, :2].tolist()]
+    return np.column_stack([raw[:, 0], p[:, 0], p[:, 1], heading, th, dot(w_world, e1),
+                            dot(w_world, e2), dot(w_world, e3), energy])
+
+
 def _cross(a: list[float], b: tuple[float, ...] | list[float]) -> np.ndarray:
     """``np.cross(a, b)`` of two 3-vectors, its floats at a tenth of its cost.
 
@@ -104,13 +177,22 @@ class FreeRun:
         model: the compiled free disc (a measurement may change its gravity: an incline).
         state: analytic initial state (:data:`~wmr_mujoco.analytic.rolling_disc.STATE_NAMES`).
         duration: seconds to run.
-        stop: ends the run early when it returns True for a row ``(t, pose...)``.
+        stop_lean: ends the run at the first step where ``|θ|`` passes it, rad (None:
+            the whole duration).
+
+    Raises:
+        ValueError: a ``stop_lean`` that is not a finite number > 0.
     """
 
     model: mujoco.MjModel
     state: np.ndarray
     duration: float
-    stop: Callable[[np.ndarray], bool] | None = None
+    stop_lean: float | None = None
+
+    def __post_init__(self) -> None:
+        s = self.stop_lean
+        if s is not None and not (isinstance(s, (int, float)) and math.isfinite(s) and s > 0):
+            raise ValueError(f"stop_lean = {s!r} rad; valid: None or a finite number > 0")
 
     @property
     def disc(self) -> RollingDisc:
@@ -127,17 +209,43 @@ class FreeRun:
         disc = self.disc
         data = mujoco.MjData(model)
         set_free_state(model, data, disc, self.state)
+        readout = _Readout(model, data, disc.radius)
         n = round(self.duration / model.opt.timestep)
         for k in range(n + 1):
             if k:
                 mujoco.mj_step(model, data)
-            row = np.empty(1 + len(POSE_NAMES))
-            row[0], row[1:] = data.time, free_pose(model, data, disc.radius)
+            row = readout()
             yield data, row
-            if k and self.stop is not None and self.stop(row):
+            if k and self.stop_lean is not None and abs(row[4]) > self.stop_lean:
                 break
         check_healthy(model, data)
 
     def rows(self) -> np.ndarray:
-        """Rows ``(t, x_P, y_P, ψ, θ, ω1, ω2, ω3, E)`` of the whole run."""
-        return np.array([row for _, row in self.steps()])
+        """Rows ``(t, x_P, y_P, ψ, θ, ω1, ω2, ω3, E)`` of the whole run.
+
+        Each step's state is recorded (its lean read for ``stop_lean``) and all are read
+        at once (:func:`_poses`: the rows of :meth:`steps`, bit for bit).
+
+        Raises:
+            SimulationDivergedError: the run diverged.
+        """
+        model = self.model
+        disc = self.disc
+        data = mujoco.MjData(model)
+        set_free_state(model, data, disc, self.state)
+        b = model.body("disc").id
+        xmat, xpos, qvel = data.xmat[b], data.xpos[b], data.qvel[:6]
+        n = round(self.duration / model.opt.timestep)
+        raw = np.empty((n + 1, 19))
+        for k in range(n + 1):
+            if k:
+                mujoco.mj_step(model, data)
+            raw[k, 0] = data.time
+            raw[k, 1:10], raw[k, 10:13], raw[k, 13:] = xmat, xpos, qvel
+            if k and self.stop_lean is not None:
+                z = float(xmat[7])  # ê2_z: free_pose's lean
+                if abs(math.asin(z if z != z else min(1.0, max(-1.0, z)))) > self.stop_lean:
+                    raw = raw[:k + 1]
+                    break
+        check_healthy(model, data)
+        return _poses(model, disc.radius, raw)

@@ -14,10 +14,11 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 
 from wmr_mujoco.analytic.checks import as_array, positive
-from wmr_mujoco.analytic.planar import wrap_angle
 from wmr_mujoco.robots.roller_wheels.omni_heave import balance_loads as _normal_loads
 from wmr_mujoco.robots.roller_wheels.omni_heave import contact_inertia, heave_loads
 from wmr_mujoco.robots.roller_wheels.omni_impact_batch import planar_impacts
+from wmr_mujoco.robots.roller_wheels.omni_modes import lowest as _lowest
+from wmr_mujoco.robots.roller_wheels.omni_modes import switch_fraction as _switch_fraction
 
 if TYPE_CHECKING:
     from wmr_mujoco.robots.roller_wheels.omni_hybrid import OmniHybrid
@@ -63,7 +64,8 @@ class _Geometry(NamedTuple):
     """Mode-dependent contact geometry of a batch (B runs, 3 wheels).
 
     ``modes`` (B, 3); ``H``, ``ks``, ``dks`` (B, 3, 3) rows per wheel; ``xc`` = R' and
-    ``dxc`` = R'' (B, 3). A named tuple: built at every RK4 stage.
+    ``dxc`` = R'' (B, 3); ``zeta`` (B, 3) the contact rollers' angles ``ζ_σ``. A named
+    tuple: built at every RK4 stage.
     """
 
     modes: np.ndarray
@@ -72,17 +74,11 @@ class _Geometry(NamedTuple):
     dks: np.ndarray
     xc: np.ndarray
     dxc: np.ndarray
-
-
-def _lowest(model: OmniHybrid, thetas: np.ndarray) -> np.ndarray:
-    """``σ = argmin_k |φ_k|`` for (B, 3) wheel angles."""
-    g = model.rollers
-    phases = wrap_angle(g.angles + thetas[..., None] - math.pi)
-    return np.argmin(np.abs(phases), axis=-1)
+    zeta: np.ndarray
 
 
 def _geometry(model: OmniHybrid, thetas: np.ndarray, modes: np.ndarray | None = None,
-              H: np.ndarray | None = None) -> _Geometry:
+              H: np.ndarray | None = None, zeta: np.ndarray | None = None) -> _Geometry:
     """``σ`` (lowest roller unless ``modes`` given), ``H(σ)``, ``k_i``, ``∂k_i/∂φ``, ``x_c``.
 
     Vectorised over (B, 3) wheel angles, with ``φ = wrap(ζ_σ + θ − π)``::
@@ -93,12 +89,15 @@ def _geometry(model: OmniHybrid, thetas: np.ndarray, modes: np.ndarray | None = 
         x_c = −d sin φ + h',   x_c' = −d cos φ + h'',
         ρ = b² cos φ / h,      ρ' = −b² (sin φ h + cos φ h') / h²
 
-    (the closed forms of the module docstring, differentiated).
+    (the closed forms of the module docstring, differentiated). ``H`` and ``zeta`` of
+    the same ``modes`` may be passed in (a step's stages share them).
     """
     g = model.rollers
     if modes is None:
         modes = _lowest(model, thetas)
-    phi = np.remainder(g.angles[modes] + thetas, 2.0 * math.pi) - math.pi
+    if zeta is None:
+        zeta = g.angles[modes]
+    phi = np.remainder(zeta + thetas, 2.0 * math.pi) - math.pi
     c, s = np.cos(phi), np.sin(phi)
     a2b2 = g.half_length ** 2 - g.half_width ** 2
     h = np.sqrt(g.half_width ** 2 * c * c + g.half_length ** 2 * s * s)
@@ -118,13 +117,17 @@ def _geometry(model: OmniHybrid, thetas: np.ndarray, modes: np.ndarray | None = 
     ks /= rho[..., None]
     dks = -ks * drho_rho[..., None]
     dks[..., 2] += dxc / rho
-    return _Geometry(modes, H, ks, dks, xc, dxc)
+    return _Geometry(modes, H, ks, dks, xc, dxc, zeta)
 
 
 def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: np.ndarray,
                    slipping: np.ndarray, slip_forces: np.ndarray,
-                   loads: np.ndarray | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """:meth:`OmniHybrid.accelerations` for a batch: ``ν`` (B, 3), wheel arrays (B, 3)."""
+                   loads: np.ndarray | None, wheel_mass: np.ndarray | None = None
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:meth:`OmniHybrid.accelerations` for a batch: ``ν`` (B, 3), wheel arrays (B, 3).
+
+    ``wheel_mass``: :func:`_wheel_mass` of ``geo`` and ``slipping`` if already made.
+    """
     H, ks = geo.H, geo.ks
     Ht = H.transpose(0, 2, 1)
     rates = (H @ nu[..., None])[..., 0]
@@ -133,7 +136,7 @@ def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: n
         torques = torques - loads * geo.xc
     coef = (geo.dks @ nu[..., None])[..., 0] * rates
     lhs = model.roller_axial * (ks.transpose(0, 2, 1) @ ks)
-    lhs += model.wheel_inertia * (Ht @ (roll[..., None] * H))
+    lhs += _wheel_mass(model, geo, slipping) if wheel_mass is None else wheel_mass
     lhs[:, 0, 0] += model.mass
     lhs[:, 1, 1] += model.mass
     lhs[:, 2, 2] += model.inertia[2, 2]
@@ -147,6 +150,14 @@ def _accelerations(model: OmniHybrid, geo: _Geometry, nu: np.ndarray, torques: n
     thdd = np.where(slipping, (torques - model.radius * slip_forces) / model.wheel_inertia, hnd)
     forces = np.where(slipping, slip_forces, (torques - model.wheel_inertia * hnd) / model.radius)
     return nudot, thdd, forces
+
+
+def _wheel_mass(model: OmniHybrid, geo: _Geometry, slipping: np.ndarray) -> np.ndarray:
+    """The rolling wheels' share of the mass matrix, ``I_w Hᵀ diag(rolling) H`` (B, 3, 3).
+
+    Fixed over a step (the modes and the slipping wheels are): made once for its stages.
+    """
+    return model.wheel_inertia * (geo.H.transpose(0, 2, 1) @ ((~slipping)[..., None] * geo.H))
 
 
 @dataclass
@@ -166,21 +177,29 @@ class _Stepper:
     slip_dir: np.ndarray
     loads: np.ndarray
 
-    def deriv(self, x: np.ndarray, u_in: np.ndarray, geo: _Geometry
+    def deriv(self, x: np.ndarray, u_in: np.ndarray, geo: _Geometry,
+              wheel_mass: np.ndarray | None = None
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """``ẋ`` of ``x = (X, Y, ψ, ν, θ, θ̇)`` (B, 12), with the torques, forces, ``θ̈``."""
+        """``ẋ`` of ``x = (X, Y, ψ, ν, θ, θ̇)`` (B, 12), with the torques, forces, ``θ̈``.
+
+        ``wheel_mass``: :meth:`wheel_mass` of ``geo`` if already made.
+        """
         model, v, w = self.model, x[:, 3:6], x[:, 9:]
         # np.clip's floats without its per-call cost
         tau = np.minimum(np.maximum(np.where(self.rate_mode, self.gain * (u_in - w), u_in),
                                     -self.limit_tau), self.limit_tau)
         fs = model.friction * self.loads * self.slip_dir
         nudot, thdd, forces = _accelerations(model, geo, v, tau, self.slipping, fs,
-                                             self.loads if self.arc else None)
+                                             self.loads if self.arc else None, wheel_mass)
         c, s = np.cos(x[:, 2]), np.sin(x[:, 2])
         xdot = np.empty((len(x), 12))
         xdot[:, 0], xdot[:, 1] = c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]
         xdot[:, 2], xdot[:, 3:6], xdot[:, 6:9], xdot[:, 9:] = v[:, 2], nudot, w, thdd
         return xdot, tau, forces, thdd
+
+    def wheel_mass(self, geo: _Geometry) -> np.ndarray:
+        """:func:`_wheel_mass` of ``geo`` in the current wheel modes."""
+        return _wheel_mass(self.model, geo, self.slipping)
 
     def rows(self, rows: np.ndarray) -> _Stepper:
         """The stepper of the runs ``rows`` alone (their drive law, modes and loads now)."""
@@ -189,36 +208,20 @@ class _Stepper:
                         self.slip_dir[rows], self.loads[rows])
 
     def rk4(self, x: np.ndarray, k1: np.ndarray, u_in: np.ndarray, geo: _Geometry,
-            hv: np.ndarray) -> np.ndarray:
-        """One RK4 step of per-run length ``hv`` (B, 1) in the modes of ``geo``."""
-        model = self.model
+            hv: np.ndarray, wheel_mass: np.ndarray | None = None) -> np.ndarray:
+        """One RK4 step of per-run length ``hv`` (B, 1) in the modes of ``geo``.
+
+        ``wheel_mass``: :meth:`wheel_mass` of ``geo`` if already made (``k1``'s).
+        """
+        model, modes, H, zeta = self.model, geo.modes, geo.H, geo.zeta
+        wm = self.wheel_mass(geo) if wheel_mass is None else wheel_mass
         x2 = x + 0.5 * hv * k1
-        k2 = self.deriv(x2, u_in, _geometry(model, x2[:, 6:9], geo.modes, geo.H))[0]
+        k2 = self.deriv(x2, u_in, _geometry(model, x2[:, 6:9], modes, H, zeta), wm)[0]
         x3 = x + 0.5 * hv * k2
-        k3 = self.deriv(x3, u_in, _geometry(model, x3[:, 6:9], geo.modes, geo.H))[0]
+        k3 = self.deriv(x3, u_in, _geometry(model, x3[:, 6:9], modes, H, zeta), wm)[0]
         x4 = x + hv * k3
-        k4 = self.deriv(x4, u_in, _geometry(model, x4[:, 6:9], geo.modes, geo.H))[0]
+        k4 = self.deriv(x4, u_in, _geometry(model, x4[:, 6:9], modes, H, zeta), wm)[0]
         return x + hv / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
-
-
-def _switch_fraction(model: OmniHybrid, th0: np.ndarray, th1: np.ndarray, old: np.ndarray,
-                     new: np.ndarray) -> np.ndarray:
-    """Fraction of a step at which the first wheel hands over, per run (B,).
-
-    The hand-over is where the two rollers are equally low, ``|φ_old| = |φ_new|``;
-    ``g = |φ_old| − |φ_new|`` is linear in θ between the two, so the fraction is
-    ``g₀ / (g₀ − g₁)`` of the step (θ linear over it).
-    """
-    ang = model.rollers.angles
-
-    def g(th: np.ndarray) -> np.ndarray:
-        def phi(m: np.ndarray) -> np.ndarray:
-            return np.remainder(ang[m] + th, 2.0 * math.pi) - math.pi
-        return np.abs(phi(old)) - np.abs(phi(new))
-
-    g0, g1 = g(th0), g(th1)
-    frac = np.where(old != new, np.clip(g0 / np.where(g0 != g1, g0 - g1, -1.0), 0, 1), 1.0)
-    return frac.min(axis=1)
 
 
 def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, dt: float,
@@ -316,19 +319,20 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             # Within a step the modes are fixed; k_i follows φ (the geometry at each RK4
             # stage's wheel angles). A step across a hand-over is cut at it: RK4 to the
             # hand-over, the impact map, RK4 over the rest in the new modes.
-            k1, tau, forces, thdd = st.deriv(x0, u_in, geo)
-            x = st.rk4(x0, k1, u_in, geo, full)
+            wm = st.wheel_mass(geo)
+            k1, tau, forces, thdd = st.deriv(x0, u_in, geo, wm)
+            x = st.rk4(x0, k1, u_in, geo, full, wm)
             new_modes = _lowest(model, x[:, 6:9])
             changed = np.flatnonzero((new_modes != geo.modes).any(axis=1))
-            rest = np.zeros((nb, 1))
             if changed.size:  # RK4 again to the hand-over, for the runs that have one
-                frac = _switch_fraction(model, x0[:, 6:9], x[:, 6:9], geo.modes, new_modes)
+                frac = _switch_fraction(model, x0[changed, 6:9], x[changed, 6:9],
+                                        geo.modes[changed], new_modes[changed])
                 x[changed] = st.rows(changed).rk4(
                     x0[changed], k1[changed], u_in[changed],
-                    _Geometry(*(a[changed] for a in geo)), h * frac[changed, None])
-                rest[:, 0] = h * (1.0 - frac)
+                    _Geometry(*(a[changed] for a in geo)), h * frac[:, None], wm[changed])
+                rest = h * (1.0 - frac)  # of the runs ``changed``
             pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
-            geo = _geometry(model, th, geo.modes, geo.H)
+            geo = _geometry(model, th, geo.modes, geo.H, geo.zeta)
             hnu = (geo.H @ nu[..., None])[..., 0]
             thd = np.where(st.slipping, thd, hnu)  # rolling wheels stay on the constraint
             if slip:
@@ -348,38 +352,40 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                 st.slip_dir = np.where(st.slipping, st.slip_dir, 0.0)
             if changed.size:
                 new = _geometry(model, th, new_modes)
-            entering = np.empty((changed.size, 3))
-            for j, b in enumerate(changed):
-                current = geo.ks[b] @ nu[b]
-                for i in range(3):  # leaving rollers keep their spin
-                    spins[b, i, geo.modes[b, i]] = current[i]
-                entering[j] = spins[b, np.arange(3), new.modes[b]]
-            lost = np.zeros(changed.size)
-            if impacts and changed.size:  # the runs' impacts at once (each its own floats)
-                before = nu[changed]
-                nu[changed], lost = planar_impacts(model, before, geo.modes[changed],
-                                                   new.modes[changed], th[changed], entering,
-                                                   thdd[changed] if turning else None)
-                pending[changed] += before - nu[changed]
-            for j, b in enumerate(changed):
-                old_m, new_m = geo.modes[b].tolist(), new.modes[b].tolist()
-                for first, i in enumerate(i for i in range(3) if new_m[i] != old_m[i]):
-                    # One impact, its loss counted once (on the first switching wheel).
-                    switches[b].append(((k + 1) * dt, i, float(lost[j]) if first == 0 else 0.0))
-                thd[b] = np.where(st.slipping[b], thd[b], new.H[b] @ nu[b])
-            if changed.size:
+                old_c, new_c, nu_c = geo.modes[changed], new.modes[changed], nu[changed]
+                wheel = np.arange(3)
+                # leaving rollers keep their spin; every run's own products (BLAS gemv)
+                spins[changed[:, None], wheel, old_c] = (geo.ks[changed]
+                                                         @ nu_c[..., None])[..., 0]
+                entering = spins[changed[:, None], wheel, new_c]
+                lost = np.zeros(changed.size)
+                if impacts:  # the runs' impacts at once (each its own floats)
+                    nu[changed], lost = planar_impacts(
+                        model, nu_c, old_c, new_c, th[changed], entering,
+                        thdd[changed] if turning else None,
+                        (geo.H[changed], new.H[changed], geo.ks[changed], new.ks[changed]))
+                    pending[changed] += nu_c - nu[changed]
+                for b, old_m, new_m, loss in zip(changed.tolist(), old_c.tolist(),
+                                                 new_c.tolist(), lost.tolist(), strict=True):
+                    for first, i in enumerate(i for i in range(3) if new_m[i] != old_m[i]):
+                        # One impact, its loss counted once (on the first switching wheel).
+                        switches[b].append(((k + 1) * dt, i, loss if first == 0 else 0.0))
+                hnu = (new.H[changed] @ nu[changed, :, None])[..., 0]
+                thd[changed] = np.where(st.slipping[changed], thd[changed], hnu)
                 geo = new
                 x = np.concatenate([pose, nu, th, thd], axis=1)
                 # The rest of the step, for the runs that hand over only: the others keep
                 # every bit of their step, as alone (RK4 over 0 s would give their x, but
                 # x + 0 turns a −0.0 into +0.0; a single-row H ν may round otherwise)
-                run = changed[rest[changed, 0] != 0.0]
+                moving = rest != 0.0
+                run = changed[moving]
                 if run.size:
-                    sub = _Geometry(*(a[run] for a in geo))
-                    k1 = st.rows(run).deriv(x[run], u_in[run], sub)[0]
-                    x[run] = st.rows(run).rk4(x[run], k1, u_in[run], sub, rest[run])
+                    sub, st_run = _Geometry(*(a[run] for a in geo)), st.rows(run)
+                    wm = st_run.wheel_mass(sub)
+                    k1 = st_run.deriv(x[run], u_in[run], sub, wm)[0]
+                    x[run] = st_run.rk4(x[run], k1, u_in[run], sub, rest[moving, None], wm)
                 pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
-                geo = _geometry(model, th, geo.modes, geo.H)
+                geo = _geometry(model, th, geo.modes, geo.H, geo.zeta)
                 hnu = (geo.H[changed] @ nu[changed, :, None])[..., 0]
                 thd[changed] = np.where(st.slipping[changed], thd[changed], hnu)
         if not np.all(np.isfinite(nu)):

@@ -32,6 +32,7 @@ Drive laws: torque (``τ = u``) or rate servo (``τ = clip(k_v (u − θ̇), ±�
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -45,7 +46,7 @@ from wmr_mujoco.robots.roller_wheels.omni_batch import (
     simulate,
     simulate_batch,
 )
-from wmr_mujoco.robots.roller_wheels.omni_impacts import HybridImpacts
+from wmr_mujoco.robots.roller_wheels.omni_impacts import _UP, HybridImpacts
 from wmr_mujoco.robots.roller_wheels.omni_rates import kinetic_energies, rolling_rates
 from wmr_mujoco.robots.roller_wheels.roller_geometry import Drive, RollerGeometry, _finite
 
@@ -128,6 +129,19 @@ class OmniHybrid(HybridImpacts):
         """t_i = ẑ × ê_i."""
         a = self.wheel_angles
         return np.stack([-np.sin(a), np.cos(a), 0.0 * a], axis=1)
+
+    @functools.cached_property
+    def contact_dirs(self) -> np.ndarray:
+        """Each wheel's contact-row directions ``(t_i, ẑ, −ê_i)`` (3 wheels, 3 rows, 3)."""
+        dirs = np.stack([self.drive_dirs, np.broadcast_to(_UP, (3, 3)), -self.radial], 1)
+        dirs.setflags(write=False)
+        return dirs
+
+    @functools.cached_property
+    def roller_gap(self) -> float:
+        """``s``: the least angle between two rollers of a wheel, rad."""
+        ring = np.sort(np.remainder(self.rollers.angles, 2.0 * math.pi))
+        return float(np.diff(ring, append=ring[0] + 2.0 * math.pi).min())
 
     def modes(self, thetas: np.ndarray) -> tuple[int, int, int]:
         """σ_i: roller in contact on each wheel."""

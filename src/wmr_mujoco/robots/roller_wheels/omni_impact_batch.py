@@ -22,7 +22,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from wmr_mujoco.analytic.planar import wrap_angle
-from wmr_mujoco.robots.roller_wheels.omni_impacts import _UP
 
 if TYPE_CHECKING:
     from wmr_mujoco.robots.roller_wheels.omni_hybrid import OmniHybrid
@@ -100,7 +99,7 @@ def _constraint_rows(model: OmniHybrid, modes: np.ndarray, thetas: np.ndarray) -
     skew = np.stack([np.stack([zero, -p[..., 2], p[..., 1]], -1),
                      np.stack([p[..., 2], zero, -p[..., 0]], -1),
                      np.stack([-p[..., 1], p[..., 0], zero], -1)], -2)  # (B, 3, 3, 3)
-    dirs = np.stack([model.drive_dirs, np.broadcast_to(_UP, (3, 3)), -model.radial], 1)
+    dirs = model.contact_dirs
     lever = (-dirs[None, :, :, None, :] @ skew[:, :, None])[..., 0, :]  # (B, 3, 3, 3)
     nb = len(modes)
     A = np.zeros((nb, 3, 3, 12))  # run, wheel, row, column
@@ -174,7 +173,8 @@ def _remove_energy(nu: np.ndarray, h: np.ndarray, m_red: np.ndarray, energy: flo
 
 
 def planar_impacts(model: OmniHybrid, nu: np.ndarray, old: np.ndarray, new: np.ndarray,
-                   thetas: np.ndarray, spins: np.ndarray, wheel_accels: np.ndarray | None = None
+                   thetas: np.ndarray, spins: np.ndarray, wheel_accels: np.ndarray | None = None,
+                   rows: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
                    ) -> tuple[np.ndarray, np.ndarray]:
     """:meth:`HybridImpacts.planar_impact` of B runs: ``(ν⁺ (B, 3), ΔT (B,))``.
 
@@ -186,15 +186,20 @@ def planar_impacts(model: OmniHybrid, nu: np.ndarray, old: np.ndarray, new: np.n
         thetas: (B, 3) wheel angles.
         spins: (B, 3) the entering rollers' spins.
         wheel_accels: (B, 3) the wheels' θ̈ of the continuous phase (None: zero).
+        rows: ``(H(σ_old), H(σ_new), k(σ_old), k(σ_new))`` (B, 3, 3) at ``thetas`` if the
+            caller has them (the integrator's geometry: the same floats), else made here.
     """
     from wmr_mujoco.robots.roller_wheels.omni_batch import _geometry
 
     nu, thetas, spins = (np.asarray(a, float) for a in (nu, thetas, spins))
     old, new = np.asarray(old, int), np.asarray(new, int)
     accels = np.zeros_like(nu) if wheel_accels is None else np.asarray(wheel_accels, float)
-    H_old = np.stack([model.jacobian(tuple(o)) for o in old.tolist()])
-    H_new = np.stack([model.jacobian(tuple(n)) for n in new.tolist()])
-    ks = _geometry(model, thetas, new).ks
+    if rows is None:
+        H_old = np.stack([model.jacobian(tuple(o)) for o in old.tolist()])
+        H_new = np.stack([model.jacobian(tuple(n)) for n in new.tolist()])
+        ks_old, ks = _geometry(model, thetas, old).ks, _geometry(model, thetas, new).ks
+    else:
+        H_old, H_new, ks_old, ks = rows
     nu_plus = _inplane(model, nu, H_old, H_new, ks, spins)
     J = _vertical_impulses(model, nu, old, new, thetas, spins)
     m_red = _planar_mass(model, H_new, ks)
@@ -215,7 +220,7 @@ def planar_impacts(model: OmniHybrid, nu: np.ndarray, old: np.ndarray, new: np.n
             big = np.abs(dnu[:, 2]) >= np.abs(sub[:, 2])  # friction stops, never reverses
             dnu[big] *= (np.abs(sub[big, 2]) / np.maximum(np.abs(dnu[big, 2]), 1e-300))[:, None]
             nu_plus[runs] = sub - np.copysign(1.0, sub[:, 2])[:, None] * dnu
-    m_old = _planar_mass(model, H_old, _geometry(model, thetas, old).ks)
+    m_old = _planar_mass(model, H_old, ks_old)
     kinetic = _dot((0.5 * nu[:, None, :] @ m_old)[:, 0], nu)  # kinetic_energy(ν, σ_old)
     kn = _matvec(ks, nu)
     lost = (kinetic + 0.5 * model.roller_axial * (_dot(spins, spins) - _dot(kn, kn))
