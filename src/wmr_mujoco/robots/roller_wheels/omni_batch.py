@@ -63,9 +63,8 @@ def simulate(model: OmniHybrid, drive: Drive, inputs: np.ndarray, dt: float,
 class _Geometry(NamedTuple):
     """Mode-dependent contact geometry of a batch (B runs, 3 wheels).
 
-    ``modes`` (B, 3); ``H``, ``ks``, ``dks`` (B, 3, 3) rows per wheel; ``xc`` = R' and
-    ``dxc`` = R'' (B, 3); ``zeta`` (B, 3) the contact rollers' angles ``ζ_σ``. A named
-    tuple: built at every RK4 stage.
+    ``modes`` (B, 3); ``H``, ``ks``, ``dks`` (B, 3, 3) rows per wheel; ``xc`` = R', ``dxc``
+    = R'' (B, 3); ``zeta`` (B, 3) the contact rollers' ``ζ_σ``. Built at every RK4 stage.
     """
 
     modes: np.ndarray
@@ -182,7 +181,7 @@ class _Stepper:
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """``ẋ`` of ``x = (X, Y, ψ, ν, θ, θ̇)`` (B, 12), with the torques, forces, ``θ̈``.
 
-        ``wheel_mass``: :meth:`wheel_mass` of ``geo`` if already made.
+        ``wheel_mass``: :func:`_wheel_mass` of ``geo`` if already made.
         """
         model, v, w = self.model, x[:, 3:6], x[:, 9:]
         # np.clip's floats without its per-call cost
@@ -197,10 +196,6 @@ class _Stepper:
         xdot[:, 2], xdot[:, 3:6], xdot[:, 6:9], xdot[:, 9:] = v[:, 2], nudot, w, thdd
         return xdot, tau, forces, thdd
 
-    def wheel_mass(self, geo: _Geometry) -> np.ndarray:
-        """:func:`_wheel_mass` of ``geo`` in the current wheel modes."""
-        return _wheel_mass(self.model, geo, self.slipping)
-
     def rows(self, rows: np.ndarray) -> _Stepper:
         """The stepper of the runs ``rows`` alone (their drive law, modes and loads now)."""
         return _Stepper(self.model, self.rate_mode[rows], self.gain[rows],
@@ -211,10 +206,10 @@ class _Stepper:
             hv: np.ndarray, wheel_mass: np.ndarray | None = None) -> np.ndarray:
         """One RK4 step of per-run length ``hv`` (B, 1) in the modes of ``geo``.
 
-        ``wheel_mass``: :meth:`wheel_mass` of ``geo`` if already made (``k1``'s).
+        ``wheel_mass``: :func:`_wheel_mass` of ``geo`` if already made (``k1``'s).
         """
         model, modes, H, zeta = self.model, geo.modes, geo.H, geo.zeta
-        wm = self.wheel_mass(geo) if wheel_mass is None else wheel_mass
+        wm = _wheel_mass(model, geo, self.slipping) if wheel_mass is None else wheel_mass
         x2 = x + 0.5 * hv * k1
         k2 = self.deriv(x2, u_in, _geometry(model, x2[:, 6:9], modes, H, zeta), wm)[0]
         x3 = x + 0.5 * hv * k2
@@ -319,7 +314,7 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
             # Within a step the modes are fixed; k_i follows φ (the geometry at each RK4
             # stage's wheel angles). A step across a hand-over is cut at it: RK4 to the
             # hand-over, the impact map, RK4 over the rest in the new modes.
-            wm = st.wheel_mass(geo)
+            wm = _wheel_mass(st.model, geo, st.slipping)
             k1, tau, forces, thdd = st.deriv(x0, u_in, geo, wm)
             x = st.rk4(x0, k1, u_in, geo, full, wm)
             new_modes = _lowest(model, x[:, 6:9])
@@ -381,7 +376,7 @@ def simulate_batch(model: OmniHybrid, drives: list[Drive], inputs: np.ndarray, d
                 run = changed[moving]
                 if run.size:
                     sub, st_run = _Geometry(*(a[run] for a in geo)), st.rows(run)
-                    wm = st_run.wheel_mass(sub)
+                    wm = _wheel_mass(st_run.model, sub, st_run.slipping)
                     k1 = st_run.deriv(x[run], u_in[run], sub, wm)[0]
                     x[run] = st_run.rk4(x[run], k1, u_in[run], sub, rest[moving, None], wm)
                 pose, nu, th, thd = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:]
