@@ -8,9 +8,8 @@
   :data:`REPEATS`, the rungs timed round robin), and robot-steps per second of
   ``simulate_batch``'s ``"rollout"`` backend at :data:`WORLDS` worlds on every core
   (and ``"warp"`` at :data:`WARP_WORLDS` worlds where MuJoCo Warp is installed);
-* **kinematic errors**: the worst position error (% of path) and heading error (°) over
-  omni3's kinematic scenarios, each rung judged by the validation runner against the
-  ideal kinematics exactly as ``wmr validate`` judges omni3;
+* **kinematic errors**: worst position (% of path) and heading (°) errors over omni3's
+  kinematic scenarios, judged against the ideal kinematics as ``wmr validate`` does;
 * **dynamic errors**: omni3's dynamic runs (step commands on the rate servo, constant
   wheel torques from rest, the coast after a drive; :data:`DYNAMIC_SPECS`), the same
   inputs on each rung against omni3's own physics, the reference: the worst distance

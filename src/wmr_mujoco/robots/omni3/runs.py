@@ -42,7 +42,7 @@ CENTRE_BODY = "platform"
 CONTACT_WINDOW = 0.1
 #: Seconds at rest before a run (as the runner's scenarios).
 SETTLE = 0.5
-#: Longest RK4 step of the hybrid model, s: at the default 1 ms simulation step the model
+#: Longest RK4 step of the hybrid model, s: at the default simulation step (1.25 ms) the model
 #: takes one RK4 step per simulation step (it reports on the physics' grid). The rate
 #: servo is stiff (k_v / I_w ≈ 480 /s), well inside RK4's stability bound (≈ 2.8 / 480 s)
 #: at 2 ms; measured at the earlier 4 ms simulation step, the worst step-command figure
