@@ -199,18 +199,21 @@ class FreeRun:
         """The analytic disc of the model."""
         return disc_from_model(self.model)
 
+    def _start(self) -> tuple[mujoco.MjModel, RollingDisc, mujoco.MjData, int]:
+        """The model, its disc, data at the start state, and the run's step count."""
+        disc = self.disc
+        data = mujoco.MjData(self.model)
+        set_free_state(self.model, data, disc, self.state)
+        return self.model, disc, data, round(self.duration / self.model.opt.timestep)
+
     def steps(self) -> Iterator[tuple[mujoco.MjData, np.ndarray]]:
         """The simulation and its row ``(t, free_pose...)`` at the start and after each step.
 
         Raises:
             SimulationDivergedError: the run diverged.
         """
-        model = self.model
-        disc = self.disc
-        data = mujoco.MjData(model)
-        set_free_state(model, data, disc, self.state)
+        model, disc, data, n = self._start()
         readout = _Readout(model, data, disc.radius)
-        n = round(self.duration / model.opt.timestep)
         for k in range(n + 1):
             if k:
                 mujoco.mj_step(model, data)
@@ -229,13 +232,9 @@ class FreeRun:
         Raises:
             SimulationDivergedError: the run diverged.
         """
-        model = self.model
-        disc = self.disc
-        data = mujoco.MjData(model)
-        set_free_state(model, data, disc, self.state)
+        model, disc, data, n = self._start()
         b = model.body("disc").id
         xmat, xpos, qvel = data.xmat[b], data.xpos[b], data.qvel[:6]
-        n = round(self.duration / model.opt.timestep)
         raw = np.empty((n + 1, 19))
         for k in range(n + 1):
             if k:
