@@ -125,3 +125,22 @@ def test_an_arena_option_at_odds_with_the_robot_scene_is_refused():
     arena.option.impratio = 10.0
     with pytest.raises(ValueError, match=r"option impratio = 10000.*the arena 10\.0"):
         attach(arena, "diffdrive")
+
+
+@pytest.mark.parametrize("robots", [("diffdrive", "diffdrive"), ("tricycle", "bicycle"),
+                                    ("omni3", "diffdrive"), ("diffdrive", "omni3")])
+def test_two_robots_with_the_same_scene_options_share_an_arena(robots):
+    """Robots whose scenes set the same impratio attach side by side, in either order."""
+    arena = _arena()
+    for i, robot in enumerate(robots):
+        attach(arena, robot, pos=(2.0 * i, 0.0, 0.0))
+    model = mujoco.MjModel.from_xml_string(arena.to_xml_string(), arena.get_assets())
+    assert model.opt.impratio == wmr.load(robots[0]).opt.impratio
+
+
+def test_an_arena_that_sets_the_scene_value_itself_is_accepted():
+    arena = _arena()
+    arena.option.impratio = wmr.load("diffdrive").opt.impratio
+    attach(arena, "diffdrive")
+    model = mujoco.MjModel.from_xml_string(arena.to_xml_string(), arena.get_assets())
+    assert model.opt.impratio == wmr.load("diffdrive").opt.impratio

@@ -99,15 +99,14 @@ def attach_robot(arena: mjcf.RootElement, robot: mjcf.RootElement,
         extras(scratch, params)
         pairs = [p.get_attributes() for p in scratch.contact.get_children("pair")]
         options = scratch.option.get_attributes()
-    for name, value in options.items():
+    for name, value in options.items():  # over the robot file's, as its scene does
+        setattr(robot.option, name, value)
         have = getattr(arena.option, name)
         if have is not None and not np.array_equal(have, value):
             raise ValueError(f"robot {robot.model!r}: its scene sets option {name} = "
                              f"{value!r}, the arena {have!r}; a model has one: leave the "
                              f"arena's {name} unset or set it to {value!r}")
     frame = arena.attach(robot)
-    for name, value in options.items():  # over the robot file's, as its scene does
-        setattr(arena.option, name, value)
     frame.pos = tuple(pos)
     if quat is not None:
         frame.quat = tuple(quat)
