@@ -59,7 +59,7 @@ class Adapter(Protocol):
         """The analytic state's quantities, read from the simulation.
 
         It may read the state, frames, centres of mass and body velocities (the runner
-        computes those stages: :func:`~wmr_mujoco.validation.runner.sync_kinematics`),
+        computes those stages: :func:`~wmr_mujoco.validation.resample.sync_kinematics`),
         not contacts, forces or sensors.
         """
         ...

@@ -13,8 +13,14 @@ of ``mj_forward`` those fields come from (``mj_kinematics``, ``mj_comPos``, ``mj
 ``mj_collision``) and no constraint solve: the solve already happened in the rollout,
 and its result is ``q̇_{k+1}``. The fields are the floats ``mj_step`` leaves, bit for bit
 (MuJoCo is the oracle in ``tests/validation/test_resample.py``), at a fraction of a
-step's cost; the solver's own outputs (``efc_*``, ``qacc``, contact forces) are not
-rebuilt, and nothing here reads them.
+step's cost; the solver's own outputs (``efc_*``, ``qacc``, contact forces), sensors and
+actuator forces are not rebuilt, and nothing here reads them.
+
+That holds for the one-stage integrators (Euler, implicit, implicitfast) of a model
+without flexes. RK4 leaves the frames of its last stage, and a flex collides on vertex
+positions the kinematics above do not update: for those (:func:`rebuildable` false) the
+step is taken again from its stored start (its frames equal the run's to the solver's
+tolerance) and then given the stored end state.
 """
 
 from __future__ import annotations
@@ -40,6 +46,11 @@ def sync_kinematics(model: mujoco.MjModel, data: mujoco.MjData,
         mujoco.mj_comVel(model, data)
 
 
+def rebuildable(model: mujoco.MjModel) -> bool:
+    """Whether :func:`restore_step` rebuilds ``mj_step``'s fields exactly for ``model``."""
+    return model.opt.integrator != mujoco.mjtIntegrator.mjINT_RK4 and model.nflex == 0
+
+
 def restore_step(model: mujoco.MjModel, data: mujoco.MjData, start: np.ndarray,
                  end: np.ndarray) -> None:
     """``data`` as ``mj_step`` leaves it, from the step's stored start and end states.
@@ -51,6 +62,11 @@ def restore_step(model: mujoco.MjModel, data: mujoco.MjData, start: np.ndarray,
         start: the state at the step's start, ``mjSTATE_FULLPHYSICS`` (``STATE_SPEC``).
         end: the state the step produced (same layout).
     """
+    if not rebuildable(model):  # step again: the frames of its last stage, the flexes
+        mujoco.mj_setState(model, data, start, STATE_SPEC)
+        mujoco.mj_step(model, data)
+        mujoco.mj_setState(model, data, end, STATE_SPEC)
+        return
     mujoco.mj_setState(model, data, start, STATE_SPEC)
     sync_kinematics(model, data)
     mujoco.mj_collision(model, data)

@@ -211,9 +211,9 @@ class RollerRateProbe:
     after: float = STEADY_AFTER
     twists: SampleTwist | None = None
 
-    _index: RollerIndex | None = field(default=None, repr=False)
-    _slides: dict[bytes, np.ndarray] = field(default_factory=dict, repr=False)
-    _pending: list[Snapshot] = field(default_factory=list, repr=False)
+    _index: RollerIndex | None = field(default=None, repr=False, compare=False)
+    _slides: dict[bytes, np.ndarray] = field(default_factory=dict, repr=False, compare=False)
+    _pending: list[Snapshot] = field(default_factory=list, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if self.twists is None:
